@@ -1,0 +1,182 @@
+"""The bird: wing geometry, aerodynamic coefficients and flapping frequency.
+
+One frozen dataclass, read from and written to TOML.  Units are the dissertation's
+non-dimensional ones (rho = 1, omega = 1, semispan = 1, chord = 1) unless a bird file
+says otherwise; any consistent unit system works.
+
+Geometry per model (DESIGN.md): the single-panel models (base, m1, m2, m3) use one
+panel of span ``semispan`` and chord ``chord``.  m4 splits the semispan into an arm
+of span ``semispan * (1 - hand_span_fraction)`` (chord ``chord``) and a hand of span
+``semispan * hand_span_fraction`` (chord ``hand_chord``).
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+from dataclasses import asdict, dataclass, field, fields, replace
+from pathlib import Path
+from typing import Any
+
+from .aero import Polar, SeedPolar, polar_from_dict
+from .errors import BirdConfigError
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # pragma: no cover
+    import tomli as tomllib
+
+
+@dataclass(frozen=True)
+class PanelGeometry:
+    """One wing panel: span along its own y axis, chord, and where its root sits
+    along the previous panel's span (0 for the arm, the arm span for the hand)."""
+
+    name: str
+    span: float
+    chord: float
+    root_offset: float
+
+    @property
+    def area(self) -> float:
+        return self.span * self.chord
+
+
+@dataclass(frozen=True)
+class Bird:
+    """Geometry, coefficients and flapping frequency of one (right) wing and its body."""
+
+    name: str = "seed"
+    semispan: float = 1.0
+    chord: float = 1.0
+    hand_span_fraction: float = 1.0 / 3.0
+    hand_chord: float = 1.0
+    cp_span_fraction: float = 0.5
+    strips: int = 1
+    wrist_twist_ratio: float = 0.25
+    rho: float = 1.0
+    omega: float = 1.0
+    body_drag_area: float = 1.0
+    induced_velocity: bool = False
+    disc_area: float = math.pi
+    mass: float = 1.0
+    polar: Polar = field(default_factory=SeedPolar)
+
+    def __post_init__(self) -> None:
+        positive = ("semispan", "chord", "hand_chord", "rho", "omega", "disc_area", "mass")
+        for name in positive:
+            v = getattr(self, name)
+            if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+                raise BirdConfigError(f"bird.{name}={v!r} is invalid; allowed: a finite number > 0")
+        fractions = ("hand_span_fraction", "cp_span_fraction")
+        for name in fractions:
+            v = getattr(self, name)
+            if not (isinstance(v, (int, float)) and 0.0 <= v <= 1.0):
+                raise BirdConfigError(f"bird.{name}={v!r} is invalid; allowed: a number in [0, 1]")
+        for name in ("wrist_twist_ratio", "body_drag_area"):
+            v = getattr(self, name)
+            if not (isinstance(v, (int, float)) and math.isfinite(v) and v >= 0):
+                raise BirdConfigError(f"bird.{name}={v!r} is invalid; allowed: a finite number >= 0")
+        if not (isinstance(self.strips, int) and not isinstance(self.strips, bool) and 1 <= self.strips <= 10_000):
+            raise BirdConfigError(f"bird.strips={self.strips!r} is invalid; allowed: an integer in [1, 10000]")
+        if not isinstance(self.polar, Polar):
+            raise BirdConfigError(f"bird.polar={self.polar!r} is invalid; allowed: a Polar object")
+
+    def panels(self, model: str) -> tuple[PanelGeometry, ...]:
+        """The wing panels of ``model``: one for base..m3, arm and hand for m4."""
+        if model == "m4":
+            hand = self.semispan * self.hand_span_fraction
+            arm = self.semispan - hand
+            return (
+                PanelGeometry("arm", arm, self.chord, 0.0),
+                PanelGeometry("hand", hand, self.hand_chord, arm),
+            )
+        return (PanelGeometry("wing", self.semispan, self.chord, 0.0),)
+
+    @property
+    def period(self) -> float:
+        """One wingbeat, ``2 pi / omega``."""
+        return 2.0 * math.pi / self.omega
+
+    # ---- TOML in and out -------------------------------------------------------------
+
+    def to_dict(self) -> dict[str, Any]:
+        d = {f.name: getattr(self, f.name) for f in fields(self) if f.name != "polar"}
+        d["polar"] = self.polar.to_dict()
+        return d
+
+    @classmethod
+    def from_dict(cls, d: dict[str, Any]) -> "Bird":
+        d = dict(d)
+        known = {f.name for f in fields(cls)}
+        unknown = sorted(set(d) - known)
+        if unknown:
+            raise BirdConfigError(f"bird key {unknown[0]!r} is unknown; allowed: {', '.join(sorted(known))}")
+        if "polar" in d and isinstance(d["polar"], dict):
+            d["polar"] = polar_from_dict(d["polar"])
+        return cls(**d)
+
+    @classmethod
+    def from_toml(cls, path: str | Path) -> "Bird":
+        p = Path(path)
+        try:
+            data = tomllib.loads(p.read_text())
+        except FileNotFoundError:
+            raise BirdConfigError(f"--bird {str(p)!r} does not exist; allowed: a readable TOML file") from None
+        except (OSError, tomllib.TOMLDecodeError) as exc:
+            raise BirdConfigError(f"--bird {str(p)!r} is not valid TOML: {exc}") from None
+        return cls.from_dict(data)
+
+    def to_toml(self, path: str | Path) -> None:
+        import tomli_w
+
+        from .io import write_atomic
+
+        write_atomic(Path(path), tomli_w.dumps(self.to_dict()).encode())
+
+    def with_overrides(self, overrides: dict[str, str]) -> "Bird":
+        """A copy with ``NAME=VALUE`` strings applied (``--set`` on the command line).
+
+        ``polar.NAME`` sets a coefficient of the polar.
+        """
+        top: dict[str, Any] = {}
+        polar = self.polar.to_dict()
+        types = {f.name: type(getattr(self, f.name)) for f in fields(self)}
+        for key, raw in overrides.items():
+            if key.startswith("polar."):
+                sub = key.split(".", 1)[1]
+                polar[sub] = raw if sub == "kind" else _parse_number(key, raw)
+                continue
+            if key not in types or key == "polar":
+                raise BirdConfigError(f"--set {key}={raw} names no bird field; allowed: {', '.join(sorted(types))}")
+            top[key] = _parse_value(key, raw, types[key])
+        if polar != self.polar.to_dict():
+            top["polar"] = polar_from_dict(polar)
+        return replace(self, **top)
+
+
+def _parse_number(key: str, raw: str) -> float:
+    try:
+        return float(raw)
+    except ValueError:
+        raise BirdConfigError(f"--set {key}={raw!r} is not a number") from None
+
+
+def _parse_value(key: str, raw: str, kind: type) -> Any:
+    if kind is bool:
+        if raw.lower() in ("1", "true", "yes", "on"):
+            return True
+        if raw.lower() in ("0", "false", "no", "off"):
+            return False
+        raise BirdConfigError(f"--set {key}={raw!r} is not a boolean; allowed: true or false")
+    if kind is int:
+        try:
+            return int(raw)
+        except ValueError:
+            raise BirdConfigError(f"--set {key}={raw!r} is not an integer") from None
+    if kind is str:
+        return raw
+    return _parse_number(key, raw)
+
+
+__all__ = ["Bird", "PanelGeometry", "asdict"]

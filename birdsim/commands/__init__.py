@@ -1,0 +1,1 @@
+"""One module per ``birdsim`` subcommand; each exposes ``register(subparsers)``."""

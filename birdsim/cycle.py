@@ -1,0 +1,279 @@
+"""One wingbeat: force and power histories of the right wing and their means.
+
+``evaluate_cycle`` is vectorised over time *and* over any batch of parameter sets:
+pass arrays (all broadcastable to one batch shape ``B``) instead of floats and every
+result gains the leading axes ``B``.  It is pure numpy; MuJoCo's passive callback
+calls :func:`element_forces` so that both paths share one implementation.
+
+Forces follow DESIGN.md's "which force": the histories are those of ONE wing (the
+right) in seed earth axes; ``mean`` adds the body drag to Fx (the dissertation's
+flapcost force); ``whole_bird_mean`` is two mirrored wings plus the body.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from functools import cached_property
+
+import numpy as np
+
+from .aero import body_drag_x, induced_velocity
+from .bird import Bird
+from .errors import BirdsimError, check_finite
+from .frames import Vec3, body_to_earth, earth_to_body
+from .kinematics import (
+    KinematicModel,
+    body_to_panel,
+    get_model,
+    joint_states,
+    panel_to_body,
+    points_in_body,
+    strip_positions,
+    validate_params,
+)
+
+
+@dataclass(frozen=True)
+class MeanForces:
+    """Cycle means (arrays of the batch shape).  Fx includes the body drag."""
+
+    Fx: np.ndarray
+    Fy: np.ndarray
+    Fz: np.ndarray
+    P: np.ndarray
+
+    def as_dict(self) -> dict[str, float]:
+        return {k: float(getattr(self, k)) for k in ("Fx", "Fy", "Fz", "P")}
+
+
+@dataclass(frozen=True)
+class Cycle:
+    """Histories over one wingbeat (N samples) of the right wing, per panel and in total.
+
+    Shapes: ``B`` is the batch shape of the parameters, N the samples, K the panels.
+    """
+
+    model: str
+    speed: np.ndarray  # B
+    params: dict[str, np.ndarray]  # each B
+    time: np.ndarray  # N
+    endpoint: bool
+    panel_names: tuple[str, ...]
+    panel_force_earth: np.ndarray  # B x K x N x 3, seed earth axes
+    panel_power: np.ndarray  # B x K x N, -F . v_flap (positive: the wing works on the air)
+    joint_power: dict[str, np.ndarray] = field(repr=False)  # group -> B x N
+    body_drag_x: np.ndarray = field(repr=False)  # B
+    cp_position_body: np.ndarray = field(repr=False)  # B x K x N x 3 (first strip element)
+    cp_velocity_body: np.ndarray = field(repr=False)  # B x K x N x 3 flapping velocity
+
+    @property
+    def force_earth(self) -> np.ndarray:
+        """Right-wing force history, B x N x 3 (no body drag)."""
+        return self.panel_force_earth.sum(axis=-3)
+
+    @property
+    def power(self) -> np.ndarray:
+        """Mechanical power history of the right wing, B x N."""
+        return self.panel_power.sum(axis=-2)
+
+    @property
+    def Fx(self) -> np.ndarray:
+        return self.force_earth[..., 0]
+
+    @property
+    def Fy(self) -> np.ndarray:
+        return self.force_earth[..., 1]
+
+    @property
+    def Fz(self) -> np.ndarray:
+        return self.force_earth[..., 2]
+
+    @property
+    def P(self) -> np.ndarray:
+        return self.power
+
+    @cached_property
+    def mean(self) -> MeanForces:
+        """The dissertation's force: right wing + body drag; mean power of the right wing."""
+        f = cycle_mean(self.force_earth, self.endpoint, axis=-2)
+        p = cycle_mean(self.power, self.endpoint, axis=-1)
+        return MeanForces(f[..., 0] + self.body_drag_x, f[..., 1], f[..., 2], p)
+
+    @cached_property
+    def panel_mean(self) -> dict[str, MeanForces]:
+        """Per-panel means (no body drag)."""
+        f = cycle_mean(self.panel_force_earth, self.endpoint, axis=-2)
+        p = cycle_mean(self.panel_power, self.endpoint, axis=-1)
+        return {
+            name: MeanForces(f[..., k, 0], f[..., k, 1], f[..., k, 2], p[..., k])
+            for k, name in enumerate(self.panel_names)
+        }
+
+    @cached_property
+    def whole_bird_mean(self) -> MeanForces:
+        """Two mirrored wings plus body drag: ``(2 Fx_wing + drag, 0, 2 Fz_wing)``, power 2 P."""
+        m = self.mean
+        wing_x = m.Fx - self.body_drag_x
+        return MeanForces(2.0 * wing_x + self.body_drag_x, np.zeros_like(m.Fy), 2.0 * m.Fz, 2.0 * m.P)
+
+
+def cycle_mean(x: np.ndarray, endpoint: bool, axis: int = -1) -> np.ndarray:
+    """Mean over the time axis.  Periodic grid: plain mean of N samples on [0, T).
+    Appendix grid (``endpoint``): the samples include t = 0 and t = T, both counted,
+    exactly as the dissertation's ``mean`` over ``0:dt:T``."""
+    return np.mean(x, axis=axis)
+
+
+def sample_phases(n: int, endpoint: bool) -> np.ndarray:
+    """Phases omega*t of the samples: N uniform on [0, 2 pi) (exact periodic mean), or
+    with the end point included (the appendix grid, n = 11)."""
+    if not isinstance(n, (int, np.integer)) or isinstance(n, bool) or n < 2:
+        raise BirdsimError(f"n={n!r} is invalid; allowed: an integer >= 2 samples per wingbeat")
+    return np.linspace(0.0, 2.0 * np.pi, int(n), endpoint=endpoint)
+
+
+@dataclass(frozen=True)
+class ElementForces:
+    """Forces on the elements of one panel (body axes) and their flapping velocities."""
+
+    force_body: Vec3
+    position_body: Vec3
+    velocity_body: dict[str, Vec3]
+
+
+def element_forces(
+    chain,
+    states,
+    span_positions: np.ndarray,
+    widths: np.ndarray,
+    chord: float,
+    air_velocity_body: Vec3,
+    bird: Bird,
+) -> ElementForces:
+    """Blade-element force on each element of a panel, in body axes.
+
+    ``air_velocity_body`` is the velocity of the body relative to the air (the
+    freestream seen from the body, e.g. ``(V cos theta, 0, V sin theta)``).  The element
+    moves relative to the air at that plus its flapping velocity; its velocity is
+    rotated into panel axes, the polar gives the panel-axes force, and it is rotated
+    back.  This is the one implementation of the aerodynamics (MuJoCo uses it too).
+    """
+    pos, vel_groups = points_in_body(chain, states, span_positions)
+    v_flap = _sum_groups(vel_groups, pos)
+    v_rel = tuple(a + b for a, b in zip(air_velocity_body, v_flap))
+    vx, _, vz = body_to_panel(chain, states, v_rel)
+    fx, fz = bird.polar.force_panel(vx, vz, widths * chord, bird.rho)
+    force = panel_to_body(chain, states, (fx, np.zeros_like(fx), fz))
+    return ElementForces(force, pos, vel_groups)
+
+
+def _sum_groups(groups: dict[str, Vec3], like: Vec3) -> Vec3:
+    total: Vec3 = (0.0 * like[0], 0.0 * like[1], 0.0 * like[2])
+    for v in groups.values():
+        total = (total[0] + v[0], total[1] + v[1], total[2] + v[2])
+    return total
+
+
+def _dot(a: Vec3, b: Vec3) -> np.ndarray:
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def evaluate_cycle(
+    model: str | KinematicModel,
+    params: Mapping[str, object],
+    speed: object,
+    *,
+    bird: Bird | None = None,
+    n: int = 64,
+    endpoint: bool = False,
+    check_bounds: bool = True,
+) -> Cycle:
+    """Force and power histories of one wingbeat and their means.
+
+    ``params`` maps every parameter name of the model (``birdsim.MODELS[m].param_names``)
+    to a float or an array; arrays broadcast to one batch shape and every result gains
+    it.  ``speed`` (>= 0, float or array) is the flight speed V along +X.  ``n`` samples
+    per wingbeat; ``endpoint=True, n=11`` is the dissertation's appendix grid.
+    """
+    m = model if isinstance(model, KinematicModel) else get_model(model)
+    bird = bird or Bird()
+    p = validate_params(m, params, check_bounds=check_bounds)
+    v = np.asarray(speed, dtype=float)
+    if v.ndim == 0:
+        check_finite("speed", float(v), "a finite number >= 0")
+    if not np.all(np.isfinite(v)) or np.any(v < 0):
+        bad = float(v[~(np.isfinite(v) & (v >= 0))].flat[0]) if v.ndim else float(v)
+        raise BirdsimError(f"speed={bad} is invalid; allowed: a finite number >= 0")
+    batch = np.broadcast_shapes(v.shape, *(a.shape for a in p.values()))
+    p = {k: np.broadcast_to(a, batch) for k, a in p.items()}
+    v = np.broadcast_to(v, batch)
+    phases = sample_phases(n, endpoint)
+    time = phases / bird.omega
+
+    air_earth = np.zeros(batch + (3,))
+    result = _evaluate(m, p, v, bird, phases, air_earth, endpoint)
+    if bird.induced_velocity:
+        # Actuator disc (appendix 1A): the disc pushes the air against the mean force of
+        # both wings; iterate the coupling to a fixed point.
+        for _ in range(8):
+            wings = result.whole_bird_mean
+            f = np.stack([wings.Fx - result.body_drag_x, np.zeros(batch), wings.Fz], axis=-1)
+            vi = induced_velocity(f, v, bird.rho, bird.disc_area)
+            norm = np.linalg.norm(f, axis=-1, keepdims=True)
+            f_hat = np.divide(f, norm, out=np.zeros_like(f), where=norm > 0)
+            air_earth = 0.5 * air_earth + 0.5 * (-vi[..., None] * f_hat)
+            result = _evaluate(m, p, v, bird, phases, air_earth, endpoint)
+    return result
+
+
+def _evaluate(
+    m: KinematicModel,
+    p: dict[str, np.ndarray],
+    speed: np.ndarray,
+    bird: Bird,
+    phases: np.ndarray,
+    air_earth: np.ndarray,
+    endpoint: bool,
+) -> Cycle:
+    pitch = p["pitch"]
+    states = joint_states(m, p, bird, phases, trailing=1)
+    # body relative to the air, in body axes: (V - w_air) rotated by the pitch
+    rel_earth = tuple(
+        np.reshape(c, c.shape + (1, 1))
+        for c in (speed - air_earth[..., 0], -air_earth[..., 1], -air_earth[..., 2])
+    )
+    pitch_b = np.reshape(pitch, pitch.shape + (1, 1))
+    air_body = earth_to_body(pitch_b, rel_earth)
+
+    forces, powers, cps, cvs = [], [], [], []
+    joint_power: dict[str, np.ndarray] = {}
+    names = []
+    for (chain, span, chord), geom in zip(m.chain_with_geometry(bird), bird.panels(m.name)):
+        r, w = strip_positions(span, bird.cp_span_fraction, bird.strips)
+        el = element_forces(chain, states, r, w, chord, air_body, bird)
+        v_flap = _sum_groups(el.velocity_body, el.position_body)
+        f_earth = body_to_earth(pitch_b, el.force_body)
+        forces.append(np.stack([c.sum(axis=-1) for c in np.broadcast_arrays(*f_earth)], axis=-1))
+        powers.append(-_dot(el.force_body, v_flap).sum(axis=-1))
+        for g, vg in el.velocity_body.items():
+            joint_power[g] = joint_power.get(g, 0.0) - _dot(el.force_body, vg).sum(axis=-1)
+        cps.append(np.stack([c[..., 0] for c in np.broadcast_arrays(*el.position_body, pitch_b)[:3]], axis=-1))
+        cvs.append(np.stack([c[..., 0] for c in np.broadcast_arrays(*v_flap, pitch_b)[:3]], axis=-1))
+        names.append(geom.name)
+
+    shape = speed.shape + (len(phases),)
+    return Cycle(
+        model=m.name,
+        speed=speed,
+        params=p,
+        time=phases / bird.omega,
+        endpoint=endpoint,
+        panel_names=tuple(names),
+        panel_force_earth=np.stack([np.broadcast_to(f, shape + (3,)) for f in forces], axis=-3),
+        panel_power=np.stack([np.broadcast_to(x, shape) for x in powers], axis=-2),
+        joint_power={g: np.broadcast_to(x, shape) for g, x in joint_power.items()},
+        body_drag_x=body_drag_x(speed, pitch, bird.rho, bird.body_drag_area),
+        cp_position_body=np.stack([np.broadcast_to(c, shape + (3,)) for c in cps], axis=-3),
+        cp_velocity_body=np.stack([np.broadcast_to(c, shape + (3,)) for c in cvs], axis=-3),
+    )

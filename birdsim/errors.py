@@ -1,0 +1,34 @@
+"""Typed exceptions for user errors.
+
+Every message is one line that names the argument, the value and what is allowed.
+The command line prints it without a traceback and exits with status 2.
+"""
+
+from __future__ import annotations
+
+
+class BirdsimError(ValueError):
+    """A user's mistake: bad argument, bad file, bad value."""
+
+
+class UnknownModelError(BirdsimError):
+    """A kinematic model name that does not exist."""
+
+
+class ParameterError(BirdsimError):
+    """A wingbeat parameter that is unknown, missing, NaN or out of bounds."""
+
+
+class BirdConfigError(BirdsimError):
+    """A bird geometry or coefficient that is invalid."""
+
+
+def check_finite(name: str, value: float, allowed: str = "a finite number") -> float:
+    """Return ``float(value)`` or raise naming ``name`` when it is NaN or infinite."""
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise BirdsimError(f"{name}={value!r} is not a number; allowed: {allowed}") from None
+    if v != v or v in (float("inf"), float("-inf")):
+        raise BirdsimError(f"{name}={value!r} is not finite; allowed: {allowed}")
+    return v

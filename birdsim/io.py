@@ -1,0 +1,45 @@
+"""Output files: written atomically, never silently overwritten."""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+
+from .errors import BirdsimError
+
+
+def check_output(path: Path, force: bool, arg: str = "--out") -> Path:
+    """Refuse an existing output without ``force`` and an output whose folder cannot be made."""
+    path = Path(path)
+    if path.exists() and not force:
+        raise BirdsimError(f"{arg} {str(path)!r} exists; allowed: a new path, or --force to overwrite")
+    if path.exists() and path.is_dir():
+        raise BirdsimError(f"{arg} {str(path)!r} is a directory; allowed: a file path")
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise BirdsimError(f"{arg} {str(path)!r} cannot be created: {exc.strerror}") from None
+    if not os.access(path.parent, os.W_OK):
+        raise BirdsimError(f"{arg} {str(path)!r} is not writable; allowed: a path in a writable folder")
+    return path
+
+
+def temporary_sibling(path: Path) -> Path:
+    """A fresh temporary file name in the same folder as ``path`` (same file system)."""
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".partial" + path.suffix, dir=path.parent)
+    os.close(fd)
+    return Path(tmp)
+
+
+def write_atomic(path: Path, data: bytes) -> None:
+    """Write ``data`` to ``path`` through a temporary sibling and ``os.replace``."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = temporary_sibling(path)
+    try:
+        tmp.write_bytes(data)
+        os.replace(tmp, path)
+    finally:
+        if tmp.exists():
+            tmp.unlink()
