@@ -1,0 +1,52 @@
+"""``make bench``: every ``benchmarks/bench_*.py`` in one run, with the machine noted.
+
+Each bench module exposes ``main() -> None`` and prints its own lines: ratios measured
+side by side in this run, and absolute figures.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import os
+import platform
+import sys
+import time
+from pathlib import Path
+
+
+def machine() -> str:
+    cpu = platform.processor() or "unknown cpu"
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                cpu = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    import numpy
+
+    return (
+        f"{platform.node()} | {cpu} | {os.cpu_count()} cores | Python {platform.python_version()} | "
+        f"numpy {numpy.__version__} | {time.strftime('%Y-%m-%d %H:%M')}"
+    )
+
+
+def main(argv: list[str]) -> int:
+    here = Path(__file__).parent
+    wanted = set(argv)
+    print(f"machine: {machine()}")
+    for path in sorted(here.glob("bench_*.py")):
+        name = path.stem.removeprefix("bench_")
+        if wanted and name not in wanted:
+            continue
+        print(f"\n== {name} ==", flush=True)
+        spec = importlib.util.spec_from_file_location(path.stem, path)
+        module = importlib.util.module_from_spec(spec)
+        assert spec.loader is not None
+        spec.loader.exec_module(module)
+        module.main()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
