@@ -8,7 +8,7 @@ frame turned actively by ``+a`` about that axis:
 * ``pitch_matrix(a)`` (body pitch, wing twist, stroke plane, wrist twist): about y,
   nose / leading edge up for ``a > 0``;
 * ``flap_matrix(a)``: about x, right wing tip down for ``a > 0``;
-* ``sweep_matrix(a)``: about z, right wing swept forward for ``a > 0``.
+* ``sweep_matrix(a)``: about z, right wing tip swept back for ``a > 0``.
 
 The hot path does not build matrices: :func:`rotate` applies the same passive
 rotation to vectors stored as three component arrays, which is what lets the
@@ -62,29 +62,40 @@ def passive_matrix(axis: Axis, angle: float) -> np.ndarray:
 Vec3 = tuple[np.ndarray, np.ndarray, np.ndarray]
 
 
+def _is_zero(a: object) -> bool:
+    return isinstance(a, float) and a == 0.0
+
+
+def _lin(a: np.ndarray, x: np.ndarray, b: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """``a*x + b*y``, skipping the work for components that are the scalar 0.0."""
+    if _is_zero(x):
+        return 0.0 if _is_zero(y) else b * y
+    return a * x if _is_zero(y) else a * x + b * y
+
+
 def rotate(axis: Axis, cos: np.ndarray, sin: np.ndarray, v: Vec3) -> Vec3:
     """Apply the passive Table 2 rotation (given by cos, sin of its angle) to ``v``.
 
-    ``v`` is a tuple of three broadcastable arrays.  Pass ``-sin`` for the transpose
-    (the way back).
+    ``v`` is a tuple of three broadcastable arrays; a component may be the scalar 0.0,
+    which is kept symbolic (the hot path starts from points like (0, r, 0)).  Pass
+    ``-sin`` for the transpose (the way back).
     """
     x, y, z = v
     if axis == "y":
-        return (cos * x - sin * z, y, sin * x + cos * z)
+        return (_lin(cos, x, -sin, z), y, _lin(sin, x, cos, z))
     if axis == "x":
-        return (x, cos * y + sin * z, -sin * y + cos * z)
-    return (cos * x + sin * y, -sin * x + cos * y, z)
+        return (x, _lin(cos, y, sin, z), _lin(-sin, y, cos, z))
+    return (_lin(cos, x, sin, y), _lin(-sin, x, cos, y), z)
 
 
 def cross_axis(axis: Axis, v: Vec3) -> Vec3:
-    """``e_axis x v`` for a unit basis vector, without multiplications."""
+    """``e_axis x v`` for a unit basis vector, without multiplications (zero parts are scalars)."""
     x, y, z = v
-    zero = np.zeros_like(x) if np.ndim(x) else 0.0
     if axis == "x":
-        return (zero, -z, y)
+        return (0.0, -z, y)
     if axis == "y":
-        return (z, zero, -x)
-    return (-y, x, zero)
+        return (z, 0.0, -x)
+    return (-y, x, 0.0)
 
 
 def earth_to_body(pitch: np.ndarray | float, v_earth: Vec3) -> Vec3:

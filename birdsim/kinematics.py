@@ -34,7 +34,7 @@ import numpy as np
 
 from .bird import Bird
 from .errors import ParameterError, UnknownModelError
-from .frames import Axis, Vec3, cross_axis, rotate
+from .frames import Axis, Vec3, _is_zero, cross_axis, rotate
 
 PI = math.pi
 
@@ -82,6 +82,9 @@ class Sinusoid:
 
     def at(self, omega_t: np.ndarray, omega: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Angle, rate and acceleration at phase ``omega_t``."""
+        if isinstance(self.amp, float) and self.amp == 0.0:  # a constant joint: no time axis
+            bias = np.asarray(self.bias, dtype=float)
+            return bias, np.zeros_like(bias), np.zeros_like(bias)
         arg = omega_t + self.phase
         s, c = np.sin(arg), np.cos(arg)
         return self.amp * s + self.bias, self.amp * omega * c, -self.amp * omega * omega * s
@@ -106,7 +109,7 @@ _PARAMS: dict[str, ParamSpec] = {
         ParamSpec("pitch", "theta", 0.0, PI / 2, 1.4, 0.1, "body pitch, nose up"),
         ParamSpec("flap_amp", "Phi_f", 0.0, PI / 2, PI / 2, 0.7, "shoulder flap amplitude"),
         ParamSpec("twist_amp", "Theta_f", 0.0, PI / 4, PI / 4, 0.2, "twist amplitude, leading edge down on the downstroke"),
-        ParamSpec("sweep", "gamma_f", -PI / 4, PI / 4, 0.0, 0.0, "constant sweep about body z, forward positive"),
+        ParamSpec("sweep", "gamma_f", -PI / 4, PI / 4, 0.0, 0.0, "constant sweep about body z; positive sweeps the right wing tip back"),
         ParamSpec("stroke_plane", "theta_sp", 0.0, 0.35, 0.35, 0.2, "stroke-plane inclination about body y"),
         ParamSpec("wrist_amp", "Phi_w", 0.0, PI / 4, 0.05, 0.3, "wrist flap amplitude"),
         ParamSpec("wrist_bias", "Psi", 0.0, PI / 4, 0.05, 0.3, "wrist flap bias (hand tip down)"),
@@ -316,8 +319,7 @@ def points_in_body(
     joint's rate contributes ``rate * (axis x p)`` in its own frame, so the total is
     the exact time derivative of the position and the split gives joint powers.
     """
-    zero = np.zeros_like(span_positions, dtype=float)
-    p: Vec3 = (zero, np.asarray(span_positions, dtype=float), zero)
+    p: Vec3 = (0.0, np.asarray(span_positions, dtype=float), 0.0)
     vel: dict[str, Vec3] = {}
     for el in reversed(chain):
         if isinstance(el, Offset):
@@ -326,16 +328,19 @@ def points_in_body(
         st = states[el.name]
         if el.kind == "slide":
             i = "xyz".index(el.axis)
-            p = tuple(c + st.angle if k == i else c for k, c in enumerate(p))  # type: ignore[assignment]
+            p = tuple(_add(c, st.angle) if k == i else c for k, c in enumerate(p))  # type: ignore[assignment]
             dv = tuple(st.rate if k == i else 0.0 for k in range(3))
         else:
             p = rotate(el.axis, st.cos, -st.sin, p)
             vel = {g: rotate(el.axis, st.cos, -st.sin, v) for g, v in vel.items()}
-            c = cross_axis(el.axis, p)
-            dv = (st.rate * c[0], st.rate * c[1], st.rate * c[2])
+            dv = tuple(0.0 if _is_zero(c) else st.rate * c for c in cross_axis(el.axis, p))
         old = vel.get(el.group, (0.0, 0.0, 0.0))
-        vel[el.group] = (old[0] + dv[0], old[1] + dv[1], old[2] + dv[2])  # type: ignore[assignment]
+        vel[el.group] = tuple(_add(a, b) for a, b in zip(old, dv))  # type: ignore[assignment]
     return p, vel
+
+
+def _add(a: np.ndarray | float, b: np.ndarray | float) -> np.ndarray | float:
+    return b if _is_zero(a) else a if _is_zero(b) else a + b
 
 
 def body_to_panel(chain: tuple[ChainElement, ...], states: Mapping[str, JointState], v: Vec3) -> Vec3:
