@@ -4,7 +4,8 @@ A manoeuvre is a list of keyframes.  Time is counted in **wingbeats** from the s
 (one wingbeat = ``2 pi / omega`` of the bird's non-dimensional time), so a schedule
 means the same for every bird.  Demands are the dissertation's force (right wing +
 body drag, seed axes: Fz < 0 is up) and the flight speed V; between keyframes they
-follow a monotone C1 cubic (scipy's PCHIP: no overshoot, no kinks), before the first
+follow a monotone C1 cubic (PCHIP slopes, zero slope at the first and last keyframe: no
+overshoot, no kinks), before the first
 and after the last keyframe they hold.
 
 The height ``z`` (up, semispans above the floor) is prescribed by the keyframes too
@@ -27,7 +28,7 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-from scipy.interpolate import PchipInterpolator
+from scipy.interpolate import CubicHermiteSpline, PchipInterpolator
 
 from .errors import BirdsimError
 
@@ -91,7 +92,7 @@ class Manoeuvre:
         out = {}
         for key in (*DEMANDS, "z"):
             vals = np.array([getattr(k, key) for k in self.keyframes])
-            out[key] = np.full(t.shape, vals[0]) if len(kt) == 1 else PchipInterpolator(kt, vals)(tc)
+            out[key] = np.full(t.shape, vals[0]) if len(kt) == 1 else _hermite(kt, vals)(tc)
         return out
 
     def regime(self, t_beats: float) -> str:
@@ -104,6 +105,14 @@ class Manoeuvre:
 
     def with_duration(self, beats: float) -> "Manoeuvre":
         return Manoeuvre(self.name, self.keyframes, beats, self.description, self.perch)
+
+
+def _hermite(t: np.ndarray, y: np.ndarray) -> CubicHermiteSpline:
+    """PCHIP slopes inside, zero slope at the first and last keyframe: monotone data stay
+    monotone (Fritsch-Carlson allows zero slopes) and holding beyond the ends is C1."""
+    slopes = PchipInterpolator(t, y).derivative()(t)
+    slopes[0] = slopes[-1] = 0.0
+    return CubicHermiteSpline(t, y, slopes)
 
 
 def _kf(t: float, Fx: float, Fz: float, V: float, z: float, regime: str = "") -> Keyframe:
@@ -234,7 +243,10 @@ def load_manoeuvre(path: str | Path) -> Manoeuvre:
     if not isinstance(name, str) or not name:
         raise ManoeuvreError(f"{arg}: name={name!r}; allowed: a non-empty string")
     perch = data.get("perch", "")
-    return Manoeuvre(name, tuple(keyframes), duration, str(data.get("description", "")), perch if isinstance(perch, str) else repr(perch))
+    try:
+        return Manoeuvre(name, tuple(keyframes), duration, str(data.get("description", "")), perch if isinstance(perch, str) else repr(perch))
+    except ManoeuvreError as exc:
+        raise ManoeuvreError(f"{arg}: {str(exc).split(': ', 1)[-1]}") from None
 
 
 def _columns_to_rows(arg: str, table: Any) -> list[dict[str, Any]]:

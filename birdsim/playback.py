@@ -93,6 +93,7 @@ class Playback:
     position_seed: np.ndarray  # (F, 3) body position, seed earth axes (X fwd, Y right, Z down)
     velocity_seed: np.ndarray  # (F, 3)
     regime: tuple[str, ...]
+    status: tuple[str, ...]  # the table's cell status at the used demands
     clip_note: str = ""  # one line naming what was clipped, "" when nothing was
     axes: dict[str, np.ndarray] = field(default_factory=dict)
 
@@ -118,6 +119,22 @@ def table_axes(table: TableLike) -> dict[str, np.ndarray]:
     if isinstance(axes, Mapping):
         return {k: np.asarray(axes[k], dtype=float) for k in DEMANDS}
     return {k: np.asarray(a, dtype=float) for k, a in zip(DEMANDS, axes)}
+
+
+def lookup_params(table: TableLike, demands: Mapping[str, np.ndarray]) -> Mapping[str, np.ndarray]:
+    """Vectorised lookup (``lookup_many`` when the table has it, else ``lookup``)."""
+    fn = getattr(table, "lookup_many", None) or table.lookup
+    return fn(Fx=demands["Fx"], Fz=demands["Fz"], V=demands["V"], clip=True)
+
+
+def table_status(table: TableLike, demands: Mapping[str, np.ndarray]) -> tuple[str, ...]:
+    """Per instant the table's cell status (``ok``, ``unreachable``, ``failed``), or all
+    ``ok`` when the table does not record one."""
+    fn = getattr(table, "status_at", None)
+    n = len(demands["Fx"])
+    if fn is None:
+        return ("ok",) * n
+    return tuple(str(fn(float(demands["Fx"][i]), float(demands["Fz"][i]), float(demands["V"][i]), clip=True)) for i in range(n))
 
 
 def check_table_model(table: TableLike, model: str | None, arg: str = "--table") -> KinematicModel:
@@ -162,7 +179,7 @@ def play(
     grid = np.linspace(t_start, t_end, n)
     dem = manoeuvre.demands(grid)
     used = {k: np.clip(dem[k], axes[k].min(), axes[k].max()) for k in DEMANDS}
-    raw = table.lookup(Fx=used["Fx"], Fz=used["Fz"], V=used["V"], clip=True)
+    raw = lookup_params(table, used)
     names = kin.param_names
     missing = [p for p in names if p not in raw]
     if missing:
@@ -244,6 +261,7 @@ def play(
         position_seed=pos,
         velocity_seed=vel,
         regime=tuple(manoeuvre.regime(float(t)) for t in t_out),
+        status=table_status(table, used_out),
         clip_note=clip_note,
         axes=axes,
     )
