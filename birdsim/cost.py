@@ -1,0 +1,159 @@
+"""The cost of a wingbeat (DESIGN.md sec. 2, dissertation secs 3.3 and 4.1).
+
+``cost = w_x |Fx - Fx_d| + w_z |Fz - Fz_d| + w_p |P|``  (the appendix's ``flapcost``)
+``     + w_o * pitch``                  only for stroke-plane models (m3, m4) at V = 0:
+                                        the token orientation cost of sec. 4.1.3 that
+                                        ranks stroke-plane inclination above body pitch
+``     + nu * |x - x_prev|``            the optional distance cost of eq. 93 (Euclidean
+                                        norm of the parameter change, radians)
+
+Fx, Fz and P are the dissertation's force (right wing + body drag, seed earth axes,
+Fz < 0 is up) and the cycle-mean mechanical power of that wing.  Every function here
+is vectorised: parameter sets are rows of ``X`` (shape ``B x d``, columns in
+``model.param_names`` order) and demands broadcast against the batch.
+
+The four *cost fractions* (force x, force z, power, other = orientation + distance)
+are each term divided by the total (sec. 4.1.1, Fig. 36).
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass
+
+import numpy as np
+
+from .bird import Bird
+from .cycle import evaluate_cycle
+from .errors import BirdsimError
+from .kinematics import KinematicModel
+
+#: Names of the cost fractions, in the order of the last axis of ``fractions``.
+FRACTION_NAMES = ("force_x", "force_z", "power", "other")
+
+
+@dataclass(frozen=True)
+class CostWeights:
+    """Weights of the cost terms.  Defaults: DESIGN.md's ``1, 1, 0.5``; a token
+    orientation weight of 0.01 per radian of body pitch (small against the force
+    weights, so it only breaks the pitch / stroke-plane degeneracy at V = 0); no
+    distance cost (``distance`` is the nu of eq. 93; the dissertation tried 0.2)."""
+
+    force_x: float = 1.0
+    force_z: float = 1.0
+    power: float = 0.5
+    orientation: float = 0.01
+    distance: float = 0.0
+
+    def __post_init__(self) -> None:
+        for name, value in asdict(self).items():
+            if not (isinstance(value, (int, float)) and np.isfinite(value) and value >= 0):
+                raise BirdsimError(f"cost weight {name}={value!r} is invalid; allowed: a finite number >= 0")
+
+    def to_dict(self) -> dict[str, float]:
+        return {k: float(v) for k, v in asdict(self).items()}
+
+
+@dataclass(frozen=True)
+class CostBreakdown:
+    """Every term of the cost and the achieved forces, arrays of the batch shape."""
+
+    force_x: np.ndarray
+    force_z: np.ndarray
+    power: np.ndarray
+    other: np.ndarray
+    Fx: np.ndarray  # achieved, dissertation force (right wing + body drag)
+    Fz: np.ndarray
+    P: np.ndarray  # cycle-mean power of the right wing
+
+    @property
+    def total(self) -> np.ndarray:
+        return self.force_x + self.force_z + self.power + self.other
+
+    @property
+    def fractions(self) -> np.ndarray:
+        """Cost fractions, batch x 4 in :data:`FRACTION_NAMES` order (zeros if the total is 0)."""
+        terms = np.stack([self.force_x, self.force_z, self.power, self.other], axis=-1)
+        total = terms.sum(axis=-1, keepdims=True)
+        return np.divide(terms, total, out=np.zeros_like(terms), where=total > 0)
+
+
+def uses_orientation_cost(model: KinematicModel) -> bool:
+    """True for the stroke-plane models (m3, m4)."""
+    return "stroke_plane" in model.param_names
+
+
+def other_cost(
+    model: KinematicModel,
+    X: np.ndarray,
+    speed: np.ndarray | float,
+    weights: CostWeights,
+    previous: np.ndarray | None = None,
+) -> np.ndarray:
+    """Orientation cost (stroke-plane models at V == 0) plus the distance cost to
+    ``previous`` (eq. 93).  ``X`` is ``B x d``; returns shape ``B``."""
+    X = np.asarray(X, dtype=float)
+    out = np.zeros(X.shape[:-1])
+    if weights.orientation > 0 and uses_orientation_cost(model):
+        pitch = X[..., model.param_names.index("pitch")]
+        out = out + weights.orientation * pitch * (np.asarray(speed) == 0.0)
+    if weights.distance > 0 and previous is not None:
+        out = out + weights.distance * np.linalg.norm(X - np.asarray(previous, dtype=float), axis=-1)
+    return out
+
+
+def forces(
+    model: KinematicModel, X: np.ndarray, speed: np.ndarray | float, bird: Bird, n: int = 64
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Achieved mean (Fx, Fz, P) of the parameter rows ``X`` (B x d), one batched cycle evaluation.
+
+    Bounds are not checked: optimisers probe a hair outside them for finite differences.
+    """
+    X = np.asarray(X, dtype=float)
+    params = {name: X[..., i] for i, name in enumerate(model.param_names)}
+    mean = evaluate_cycle(model, params, speed, bird=bird, n=n, check_bounds=False).mean
+    return (np.asarray(mean.Fx, dtype=float), np.asarray(mean.Fz, dtype=float), np.asarray(mean.P, dtype=float))
+
+
+def breakdown_from_forces(
+    Fx: np.ndarray,
+    Fz: np.ndarray,
+    P: np.ndarray,
+    Fx_demand: np.ndarray | float,
+    Fz_demand: np.ndarray | float,
+    weights: CostWeights,
+    other: np.ndarray | float = 0.0,
+) -> CostBreakdown:
+    """The cost terms from already computed forces (demands broadcast against them)."""
+    fx = weights.force_x * np.abs(Fx - Fx_demand)
+    fz = weights.force_z * np.abs(Fz - Fz_demand)
+    p = weights.power * np.abs(P)
+    shape = np.broadcast_shapes(np.shape(fx), np.shape(fz), np.shape(other))
+    return CostBreakdown(
+        np.broadcast_to(fx, shape),
+        np.broadcast_to(fz, shape),
+        np.broadcast_to(p, shape),
+        np.broadcast_to(np.asarray(other, dtype=float), shape),
+        np.broadcast_to(Fx, shape),
+        np.broadcast_to(Fz, shape),
+        np.broadcast_to(P, shape),
+    )
+
+
+def evaluate_cost(
+    model: KinematicModel,
+    X: np.ndarray,
+    Fx_demand: np.ndarray | float,
+    Fz_demand: np.ndarray | float,
+    speed: np.ndarray | float,
+    *,
+    weights: CostWeights | None = None,
+    bird: Bird | None = None,
+    previous: np.ndarray | None = None,
+    n: int = 64,
+) -> CostBreakdown:
+    """Every cost term of the parameter rows ``X`` (B x d) for demands (Fx_d, Fz_d) at speed V."""
+    weights = weights or CostWeights()
+    bird = bird or Bird()
+    Fx, Fz, P = forces(model, X, speed, bird, n)
+    other = other_cost(model, X, speed, weights, previous)
+    return breakdown_from_forces(Fx, Fz, P, Fx_demand, Fz_demand, weights, other)

@@ -1,0 +1,279 @@
+"""Optimisers behind one interface (dissertation sec. 3.6): bounded SLSQP with
+multi-start, the complete search of sec. 3.6.1 and an evolutionary global search.
+
+A *problem* is a vectorised objective over parameter rows ``X`` (M x d) inside box
+bounds, written as ``cost(x) = sum_k w_k |r_k(x)| + h(x)``: ``parts(X)`` returns the
+residuals ``R`` (M x K) and the smooth rest ``h`` (M,).  The wingbeat cost has
+``r = (Fx - Fx_d, Fz - Fz_d, P)`` and ``w = (1, 1, 0.5)``; a plain test function has
+K = 0.  Every solver returns a :class:`Solution`.
+
+SLSQP (scipy) gets the standard slack-variable reformulation of the absolute values,
+``min w.s + h(x)  s.t.  -s <= r(x) <= s``, which is smooth, so the kinks of ``|r|``
+(exactly where a reachable demand is met) do not stall the line search.  Gradients
+are central finite differences computed in ONE batched call of the objective (the
+point and 2d perturbed points), which is what makes the vectorised cycle evaluation
+pay off.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy import optimize as so
+from scipy.stats import qmc
+
+from .bird import Bird
+from .cost import CostWeights, forces, other_cost
+from .errors import BirdsimError
+from .kinematics import KinematicModel, get_model
+
+#: Central-difference step (rad) of the batched gradients: truncation error ~h^2 f''',
+#: round-off ~1e-16/h; 1e-6 keeps both below 1e-9 for these O(1) smooth functions.
+FD_STEP = 1e-6
+
+
+@dataclass(frozen=True)
+class Solution:
+    """One optimiser's answer: parameters, cost, achieved force and power, status."""
+
+    x: np.ndarray
+    cost: float
+    method: str
+    converged: bool
+    message: str
+    evaluations: int  # parameter sets evaluated (each a full wingbeat for the bird)
+    iterations: int
+    Fx: float = float("nan")
+    Fz: float = float("nan")
+    P: float = float("nan")
+
+    def params(self, names: Sequence[str]) -> dict[str, float]:
+        return {n: float(v) for n, v in zip(names, self.x)}
+
+
+class Problem:
+    """A vectorised objective ``sum_k w_k |r_k(x)| + h(x)`` on a box; counts evaluations."""
+
+    weights: np.ndarray = np.zeros(0)
+
+    def __init__(self, lower: Sequence[float], upper: Sequence[float]) -> None:
+        self.lower = np.asarray(lower, dtype=float)
+        self.upper = np.asarray(upper, dtype=float)
+        if self.lower.shape != self.upper.shape or np.any(self.lower > self.upper):
+            raise BirdsimError(f"bounds lower={self.lower} upper={self.upper} are invalid; allowed: lower <= upper")
+        self.evaluations = 0
+
+    @property
+    def dim(self) -> int:
+        return self.lower.size
+
+    def _parts(self, X: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        raise NotImplementedError
+
+    def parts(self, X: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Residuals R (M x K) and smooth rest h (M,) of the rows of X (M x d)."""
+        X = np.atleast_2d(np.asarray(X, dtype=float))
+        self.evaluations += X.shape[0]
+        return self._parts(X)
+
+    def cost(self, X: np.ndarray) -> np.ndarray:
+        R, h = self.parts(X)
+        return np.abs(R) @ self.weights + h
+
+    def achieved(self, x: np.ndarray) -> tuple[float, float, float]:
+        """Achieved (Fx, Fz, P) for a wingbeat problem; NaN for a plain function."""
+        return (float("nan"),) * 3
+
+
+class FunctionProblem(Problem):
+    """A plain vectorised function ``fun(X: M x d) -> M`` (no absolute-value structure)."""
+
+    def __init__(self, fun: Callable[[np.ndarray], np.ndarray], lower: Sequence[float], upper: Sequence[float]) -> None:
+        super().__init__(lower, upper)
+        self.fun = fun
+
+    def _parts(self, X: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        return np.zeros((X.shape[0], 0)), np.asarray(self.fun(X), dtype=float)
+
+
+class ForceProblem(Problem):
+    """Find the wingbeat of ``model`` that delivers (Fx_d, Fz_d) at speed V for the least
+    cost (:mod:`birdsim.cost`).  ``n`` samples per wingbeat in the search."""
+
+    def __init__(
+        self,
+        model: KinematicModel | str,
+        Fx_demand: float,
+        Fz_demand: float,
+        speed: float,
+        *,
+        weights: CostWeights | None = None,
+        bird: Bird | None = None,
+        previous: np.ndarray | None = None,
+        n: int = 32,
+    ) -> None:
+        self.model = model if isinstance(model, KinematicModel) else get_model(model)
+        super().__init__(*self.model.bounds)
+        self.Fx_demand, self.Fz_demand, self.speed = float(Fx_demand), float(Fz_demand), float(speed)
+        self.cost_weights = weights or CostWeights()
+        self.weights = np.array([self.cost_weights.force_x, self.cost_weights.force_z, self.cost_weights.power])
+        self.bird = bird or Bird()
+        self.previous = None if previous is None else np.asarray(previous, dtype=float)
+        self.n = n
+
+    def _parts(self, X: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        Fx, Fz, P = forces(self.model, X, self.speed, self.bird, self.n)
+        R = np.stack([Fx - self.Fx_demand, Fz - self.Fz_demand, P], axis=-1)
+        return R, other_cost(self.model, X, self.speed, self.cost_weights, self.previous)
+
+    def achieved(self, x: np.ndarray) -> tuple[float, float, float]:
+        Fx, Fz, P = forces(self.model, np.atleast_2d(x), self.speed, self.bird, self.n)
+        return float(Fx[0]), float(Fz[0]), float(P[0])
+
+
+def _finish(problem: Problem, x: np.ndarray, method: str, converged: bool, message: str, evals0: int, nit: int) -> Solution:
+    x = np.clip(np.asarray(x, dtype=float), problem.lower, problem.upper)
+    cost = float(problem.cost(x[None])[0])
+    Fx, Fz, P = problem.achieved(x)
+    return Solution(x, cost, method, bool(converged), str(message), problem.evaluations - evals0, int(nit), Fx, Fz, P)
+
+
+def slsqp(problem: Problem, x0: Sequence[float], *, maxiter: int = 100, ftol: float = 1e-10) -> Solution:
+    """Bounded SLSQP from ``x0`` with slack variables for the absolute values and
+    batched central-difference gradients."""
+    d, w = problem.dim, problem.weights
+    K = w.size
+    lo, hi = problem.lower, problem.upper
+    x0 = np.clip(np.asarray(x0, dtype=float), lo, hi)
+    evals0 = problem.evaluations
+    steps = FD_STEP * np.eye(d)
+    cache: dict[bytes, tuple[np.ndarray, np.ndarray, float, np.ndarray]] = {}
+
+    def parts_grad(z: np.ndarray) -> tuple[np.ndarray, np.ndarray, float, np.ndarray]:
+        key = z[:d].tobytes()
+        if key not in cache:
+            x = np.clip(z[:d], lo, hi)
+            R, h = problem.parts(np.vstack([x[None], x + steps, x - steps]))
+            jr = (R[1 : d + 1] - R[d + 1 :]).T / (2 * FD_STEP)  # K x d
+            gh = (h[1 : d + 1] - h[d + 1 :]) / (2 * FD_STEP)
+            cache.clear()
+            cache[key] = (R[0], jr, float(h[0]), gh)
+        return cache[key]
+
+    def fun(z: np.ndarray) -> float:
+        return float(w @ z[d:] + parts_grad(z)[2])
+
+    def jac(z: np.ndarray) -> np.ndarray:
+        return np.concatenate([parts_grad(z)[3], w])
+
+    def cons(z: np.ndarray) -> np.ndarray:
+        r = parts_grad(z)[0]
+        return np.concatenate([z[d:] - r, z[d:] + r])
+
+    def cons_jac(z: np.ndarray) -> np.ndarray:
+        jr = parts_grad(z)[1]
+        eye = np.eye(K)
+        return np.block([[-jr, eye], [jr, eye]])
+
+    r0 = parts_grad(np.concatenate([x0, np.zeros(K)]))[0]
+    z0 = np.concatenate([x0, np.abs(r0)])
+    bounds = list(zip(lo, hi)) + [(0.0, None)] * K
+    constraints = [{"type": "ineq", "fun": cons, "jac": cons_jac}] if K else []
+    res = so.minimize(
+        fun, z0, jac=jac, method="SLSQP", bounds=bounds, constraints=constraints, options={"maxiter": maxiter, "ftol": ftol}
+    )
+    return _finish(problem, res.x[:d], "slsqp", res.success, res.message, evals0, res.nit)
+
+
+def multistart(problem: Problem, starts: np.ndarray, **kwargs: object) -> Solution:
+    """SLSQP from each row of ``starts``; the best answer, with every start's evaluations counted."""
+    evals0 = problem.evaluations
+    best: Solution | None = None
+    for x0 in np.atleast_2d(starts):
+        sol = slsqp(problem, x0, **kwargs)  # type: ignore[arg-type]
+        if best is None or sol.cost < best.cost:
+            best = sol
+    assert best is not None
+    return _replace_evals(best, problem.evaluations - evals0, "slsqp-multistart")
+
+
+def _replace_evals(sol: Solution, evaluations: int, method: str) -> Solution:
+    return Solution(sol.x, sol.cost, method, sol.converged, sol.message, evaluations, sol.iterations, sol.Fx, sol.Fz, sol.P)
+
+
+def random_starts(problem: Problem, count: int, seed: int | None = 0) -> np.ndarray:
+    """``count`` scrambled-Sobol points in the box (a space-filling multi-start set)."""
+    u = qmc.Sobol(problem.dim, scramble=True, seed=seed).random(count)
+    return problem.lower + u * (problem.upper - problem.lower)
+
+
+def complete_search(problem: Problem, nodes: int = 12, *, chunk: int = 50_000) -> Solution:
+    """The complete search of sec. 3.6.1: the cost at ``nodes`` equally spaced nodes per
+    dimension (bounds included), the best node wins.  Evaluated in batches of ``chunk``."""
+    if not isinstance(nodes, (int, np.integer)) or nodes < 2:
+        raise BirdsimError(f"nodes={nodes!r} is invalid; allowed: an integer >= 2")
+    evals0 = problem.evaluations
+    axes = [np.linspace(a, b, int(nodes)) for a, b in zip(problem.lower, problem.upper)]
+    total = int(nodes) ** problem.dim
+    best_cost, best_x = np.inf, None
+    for start in range(0, total, chunk):
+        idx = np.unravel_index(np.arange(start, min(start + chunk, total)), (int(nodes),) * problem.dim)
+        X = np.stack([ax[i] for ax, i in zip(axes, idx)], axis=-1)
+        c = problem.cost(X)
+        k = int(np.argmin(c))
+        if c[k] < best_cost:
+            best_cost, best_x = float(c[k]), X[k]
+    return _finish(problem, best_x, "complete", True, f"{total} nodes", evals0, total)
+
+
+def evolutionary(
+    problem: Problem, *, seed: int | None = 0, popsize: int = 15, maxiter: int = 200, polish: bool = True, tol: float = 1e-8
+) -> Solution:
+    """scipy's differential evolution (the role of the dissertation's hand-made genetic
+    algorithm), the population evaluated in one batched call per generation; optionally
+    polished with :func:`slsqp`."""
+    evals0 = problem.evaluations
+
+    def f(xT: np.ndarray) -> np.ndarray:
+        return problem.cost(np.asarray(xT).T)
+
+    res = so.differential_evolution(
+        f,
+        list(zip(problem.lower, problem.upper)),
+        seed=seed,
+        popsize=popsize,
+        maxiter=maxiter,
+        tol=tol,
+        polish=False,
+        vectorized=True,
+        updating="deferred",
+    )
+    sol = _finish(problem, res.x, "evolutionary", res.success, res.message, evals0, res.nit)
+    if polish:
+        pol = slsqp(problem, sol.x)
+        if pol.cost < sol.cost:
+            sol = pol
+    return _replace_evals(sol, problem.evaluations - evals0, "evolutionary")
+
+
+SOLVERS = ("slsqp", "multistart", "complete", "evolutionary")
+
+
+def solve(problem: Problem, method: str = "multistart", *, x0: Sequence[float] | None = None, starts: int = 8, seed: int | None = 0, **kwargs: object) -> Solution:
+    """One entry point: ``slsqp`` (from ``x0``), ``multistart`` (``x0`` plus ``starts``
+    Sobol points), ``complete`` (``nodes=``) or ``evolutionary``."""
+    if method == "slsqp":
+        start = x0 if x0 is not None else 0.5 * (problem.lower + problem.upper)
+        return slsqp(problem, start, **kwargs)  # type: ignore[arg-type]
+    if method == "multistart":
+        S = random_starts(problem, starts, seed)
+        if x0 is not None:
+            S = np.vstack([np.asarray(x0, dtype=float)[None], S])
+        return multistart(problem, S, **kwargs)
+    if method == "complete":
+        return complete_search(problem, **kwargs)  # type: ignore[arg-type]
+    if method == "evolutionary":
+        return evolutionary(problem, seed=seed, **kwargs)  # type: ignore[arg-type]
+    raise BirdsimError(f"method={method!r} is unknown; allowed: {', '.join(SOLVERS)}")

@@ -1,0 +1,275 @@
+"""Lookup tables of optimal wingbeats over the demand grid (Fx, Fz, V).
+
+A table holds, per cell of the grid, the optimal parameters of one kinematic model,
+the cost and its fractions, the achieved force and power, a status and the number of
+cycle evaluations spent, plus provenance metadata.  It is stored as two files with the
+same stem: ``<name>.npz`` (arrays) and ``<name>.json`` (metadata, human readable,
+including the SHA-256 of the ``.npz`` so that a mismatched pair is detected).
+
+Forces are the dissertation's (right wing + body drag, seed earth axes, Fz < 0 up).
+Interpolation is multilinear over (Fx, Fz, V) (scipy's RegularGridInterpolator):
+it reproduces the grid values exactly at the nodes, is monotone between them and
+never overshoots the parameter bounds.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import io
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from scipy.interpolate import RegularGridInterpolator
+
+from .bird import Bird
+from .cost import FRACTION_NAMES
+from .errors import BirdsimError
+from .io import check_output, write_atomic
+
+#: Bump when the file layout changes; tables of another version are refused on load.
+TABLE_FORMAT_VERSION = 1
+AXES = ("Fx", "Fz", "V")
+STATUS_NAMES = ("ok", "unreachable", "failed")
+ACHIEVED_NAMES = ("Fx", "Fz", "P")
+
+
+class TableError(BirdsimError):
+    """A table file that cannot be read, or a lookup it cannot answer."""
+
+
+@dataclass(frozen=True, eq=False)
+class LookupTable:
+    """Optimal wingbeats of ``model`` over the grid ``axes`` (Fx, Fz, V), arrays indexed
+    ``[i_Fx, i_Fz, i_V, ...]``."""
+
+    model: str
+    bird: Bird
+    param_names: tuple[str, ...]
+    axes: dict[str, np.ndarray]
+    params: np.ndarray  # nFx x nFz x nV x d (radians)
+    cost: np.ndarray  # nFx x nFz x nV
+    cost_fractions: np.ndarray  # nFx x nFz x nV x 4 (FRACTION_NAMES)
+    achieved: np.ndarray  # nFx x nFz x nV x 3: Fx, Fz (dissertation force), P
+    status_code: np.ndarray  # nFx x nFz x nV, uint8 index into STATUS_NAMES
+    evaluations: np.ndarray  # nFx x nFz x nV, cycle evaluations spent on the cell
+    meta: dict[str, Any] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        shape = tuple(len(self.axes[a]) for a in AXES)
+        d = len(self.param_names)
+        expected = {
+            "params": shape + (d,),
+            "cost": shape,
+            "cost_fractions": shape + (len(FRACTION_NAMES),),
+            "achieved": shape + (3,),
+            "status_code": shape,
+            "evaluations": shape,
+        }
+        for name, want in expected.items():
+            got = np.shape(getattr(self, name))
+            if got != want:
+                raise TableError(f"table array {name} has shape {got}; expected {want} for grid {shape} and {d} parameters")
+        for a in AXES:
+            ax = np.asarray(self.axes[a], dtype=float)
+            if ax.ndim != 1 or ax.size < 2 or np.any(np.diff(ax) <= 0) or not np.all(np.isfinite(ax)):
+                raise TableError(f"table axis {a}={ax.tolist()} is invalid; allowed: >= 2 finite increasing values")
+
+    # ---- views -----------------------------------------------------------------------
+
+    @property
+    def shape(self) -> tuple[int, int, int]:
+        return tuple(len(self.axes[a]) for a in AXES)  # type: ignore[return-value]
+
+    @property
+    def status(self) -> np.ndarray:
+        """Per-cell status strings: ``ok``, ``unreachable`` or ``failed``."""
+        return np.asarray(STATUS_NAMES, dtype=object)[self.status_code].astype(str)
+
+    @property
+    def demands(self) -> np.ndarray:
+        """The demanded (Fx, Fz, V) of every cell, nFx x nFz x nV x 3."""
+        return np.stack(np.meshgrid(*(self.axes[a] for a in AXES), indexing="ij"), axis=-1)
+
+    @property
+    def force_error(self) -> np.ndarray:
+        """max(|Fx - Fx_d|, |Fz - Fz_d|) per cell."""
+        d = self.demands
+        return np.maximum(np.abs(self.achieved[..., 0] - d[..., 0]), np.abs(self.achieved[..., 1] - d[..., 1]))
+
+    def param(self, name: str) -> np.ndarray:
+        """One parameter over the grid (nFx x nFz x nV)."""
+        if name not in self.param_names:
+            raise TableError(f"parameter {name!r} is not in this {self.model} table; allowed: {', '.join(self.param_names)}")
+        return self.params[..., self.param_names.index(name)]
+
+    def require_model(self, model: str) -> None:
+        """Refuse to drive ``model`` with a table made for another model."""
+        if model != self.model:
+            raise TableError(f"table is for model {self.model!r}, asked to drive model {model!r}; allowed: a table built for {model!r}")
+
+    # ---- interpolation ---------------------------------------------------------------
+
+    def _points(self, Fx: Any, Fz: Any, V: Any, clip: bool) -> tuple[np.ndarray, tuple[int, ...]]:
+        values = {"Fx": Fx, "Fz": Fz, "V": V}
+        arrays = {}
+        for a in AXES:
+            try:
+                arr = np.asarray(values[a], dtype=float)
+            except (TypeError, ValueError):
+                raise TableError(f"{a}={values[a]!r} is not a number") from None
+            if not np.all(np.isfinite(arr)):
+                bad = arr[~np.isfinite(arr)].flat[0] if arr.ndim else float(arr)
+                raise TableError(f"{a}={bad} is not finite; allowed: a number in [{self.axes[a][0]:g}, {self.axes[a][-1]:g}]")
+            lo, hi = float(self.axes[a][0]), float(self.axes[a][-1])
+            if clip:
+                arr = np.clip(arr, lo, hi)
+            else:
+                # 1e-12: a demand printed from the axis itself must count as inside
+                out = (arr < lo - 1e-12) | (arr > hi + 1e-12)
+                if np.any(out):
+                    bad = float(arr[out].flat[0]) if arr.ndim else float(arr)
+                    raise TableError(f"{a}={bad:g} is outside the table grid; allowed: [{lo:g}, {hi:g}] (or clip=True / --clip)")
+                arr = np.clip(arr, lo, hi)
+            arrays[a] = arr
+        b = np.broadcast_arrays(*(arrays[a] for a in AXES))
+        return np.stack([x.ravel() for x in b], axis=-1), b[0].shape
+
+    def _interpolator(self) -> RegularGridInterpolator:
+        cached = self.__dict__.get("_rgi")
+        if cached is None:
+            grid = tuple(np.asarray(self.axes[a], dtype=float) for a in AXES)
+            values = np.concatenate([self.params, self.achieved, self.cost[..., None]], axis=-1)
+            cached = RegularGridInterpolator(grid, values, method="linear")
+            object.__setattr__(self, "_rgi", cached)
+        return cached
+
+    def lookup_many(self, Fx: Any, Fz: Any, V: Any, clip: bool = False) -> dict[str, np.ndarray]:
+        """Vectorised lookup: arrays (broadcast together) in, a dict of arrays of their
+        shape out: every parameter plus ``achieved_Fx``, ``achieved_Fz``, ``achieved_P``
+        and ``cost`` (interpolated).  Out-of-grid demands raise unless ``clip``."""
+        pts, shape = self._points(Fx, Fz, V, clip)
+        vals = self._interpolator()(pts)
+        d = len(self.param_names)
+        names = list(self.param_names) + [f"achieved_{n}" for n in ACHIEVED_NAMES] + ["cost"]
+        return {n: vals[:, k].reshape(shape) for k, n in enumerate(names[: d + 4])}
+
+    def lookup(self, Fx: float, Fz: float, V: float, clip: bool = False) -> dict[str, float]:
+        """The interpolated optimal parameters (radians) for one demand."""
+        out = self.lookup_many(Fx, Fz, V, clip)
+        return {n: float(out[n]) for n in self.param_names}
+
+    def status_at(self, Fx: float, Fz: float, V: float, clip: bool = False) -> str:
+        """The worst status of the grid cells around a demand (ok < unreachable < failed)."""
+        pts, _ = self._points(Fx, Fz, V, clip)
+        idx = []
+        for k, a in enumerate(AXES):
+            ax = self.axes[a]
+            i = int(np.clip(np.searchsorted(ax, pts[0, k]) - 1, 0, len(ax) - 2))
+            near = [i, i + 1]
+            for j in (i, i + 1):  # on a node: that node only
+                if abs(ax[j] - pts[0, k]) < 1e-12:
+                    near = [j]
+            idx.append(near)
+        codes = self.status_code[np.ix_(*idx)]
+        return STATUS_NAMES[int(codes.max())]
+
+    # ---- files -----------------------------------------------------------------------
+
+    def save(self, path: str | Path, force: bool = False) -> tuple[Path, Path]:
+        """Write ``<stem>.npz`` and ``<stem>.json`` atomically; refuse to overwrite without ``force``."""
+        npz_path, json_path = table_paths(path)
+        check_output(npz_path, force)
+        check_output(json_path, force, arg="--out (json)")
+        buf = io.BytesIO()
+        np.savez_compressed(
+            buf,
+            format_version=np.array(TABLE_FORMAT_VERSION),
+            **{f"axis_{a}": np.asarray(self.axes[a], dtype=float) for a in AXES},
+            params=self.params,
+            cost=self.cost,
+            cost_fractions=self.cost_fractions,
+            achieved=self.achieved,
+            status_code=self.status_code.astype(np.uint8),
+            evaluations=self.evaluations.astype(np.int64),
+        )
+        data = buf.getvalue()
+        meta = dict(self.meta)
+        meta.update(
+            format_version=TABLE_FORMAT_VERSION,
+            model=self.model,
+            param_names=list(self.param_names),
+            axes={a: [float(x) for x in self.axes[a]] for a in AXES},
+            status_names=list(STATUS_NAMES),
+            fraction_names=list(FRACTION_NAMES),
+            achieved_names=list(ACHIEVED_NAMES),
+            bird=self.bird.to_dict(),
+            npz_sha256=hashlib.sha256(data).hexdigest(),
+            npz_file=npz_path.name,
+        )
+        write_atomic(npz_path, data)
+        write_atomic(json_path, (json.dumps(meta, indent=2, sort_keys=False) + "\n").encode())
+        return npz_path, json_path
+
+
+def table_paths(path: str | Path) -> tuple[Path, Path]:
+    """(``<stem>.npz``, ``<stem>.json``) for a path given with either suffix or none."""
+    p = Path(path)
+    if p.suffix in (".npz", ".json"):
+        p = p.with_suffix("")
+    return p.with_name(p.name + ".npz"), p.with_name(p.name + ".json")
+
+
+def load_table(path: str | Path) -> LookupTable:
+    """Read a table (``.npz`` or ``.json`` path, or the stem); one clear error for a
+    missing, unreadable, mismatched or other-version file."""
+    npz_path, json_path = table_paths(path)
+    for p in (npz_path, json_path):
+        if not p.is_file():
+            raise TableError(f"table file {str(p)!r} does not exist; allowed: a table written by `birdsim tables build`")
+    try:
+        meta = json.loads(json_path.read_text())
+        if not isinstance(meta, dict):
+            raise ValueError("not a JSON object")
+    except (OSError, ValueError) as exc:
+        raise TableError(f"table file {str(json_path)!r} is unreadable: {exc}") from None
+    version = meta.get("format_version")
+    if version != TABLE_FORMAT_VERSION:
+        raise TableError(
+            f"table file {str(json_path)!r} has format version {version!r}; this birdsim reads version "
+            f"{TABLE_FORMAT_VERSION}: rebuild it with `birdsim tables build`"
+        )
+    try:
+        data = npz_path.read_bytes()
+    except OSError as exc:
+        raise TableError(f"table file {str(npz_path)!r} is unreadable: {exc.strerror}") from None
+    if hashlib.sha256(data).hexdigest() != meta.get("npz_sha256"):
+        raise TableError(
+            f"table files {str(npz_path)!r} and {str(json_path)!r} do not belong together (checksum mismatch); "
+            "allowed: the pair written by one `birdsim tables build`"
+        )
+    try:
+        with np.load(io.BytesIO(data), allow_pickle=False) as z:
+            arrays = {k: z[k] for k in z.files}
+        table = LookupTable(
+            model=str(meta["model"]),
+            bird=Bird.from_dict(meta["bird"]),
+            param_names=tuple(meta["param_names"]),
+            axes={a: arrays[f"axis_{a}"] for a in AXES},
+            params=arrays["params"],
+            cost=arrays["cost"],
+            cost_fractions=arrays["cost_fractions"],
+            achieved=arrays["achieved"],
+            status_code=arrays["status_code"],
+            evaluations=arrays["evaluations"],
+            meta=meta,
+        )
+    except TableError:
+        raise
+    except (KeyError, ValueError, TypeError, OSError) as exc:
+        raise TableError(f"table file {str(npz_path)!r} is unreadable or incomplete: {exc}") from None
+    if int(arrays["format_version"]) != TABLE_FORMAT_VERSION:
+        raise TableError(f"table file {str(npz_path)!r} has format version {int(arrays['format_version'])}; allowed: {TABLE_FORMAT_VERSION}")
+    return table
