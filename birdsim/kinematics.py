@@ -83,8 +83,7 @@ class Sinusoid:
     def at(self, omega_t: np.ndarray, omega: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Angle, rate and acceleration at phase ``omega_t``."""
         if isinstance(self.amp, float) and self.amp == 0.0:  # a constant joint: no time axis
-            bias = np.asarray(self.bias, dtype=float)
-            return bias, np.zeros_like(bias), np.zeros_like(bias)
+            return np.asarray(self.bias, dtype=float), 0.0, 0.0
         arg = omega_t + self.phase
         s, c = np.sin(arg), np.cos(arg)
         return self.amp * s + self.bias, self.amp * omega * c, -self.amp * omega * omega * s
@@ -292,7 +291,7 @@ class JointState:
     cos: np.ndarray
     sin: np.ndarray
     angle: np.ndarray
-    rate: np.ndarray
+    rate: np.ndarray | float  # the scalar 0.0 for a constant joint
 
 
 def joint_states(
@@ -333,6 +332,8 @@ def points_in_body(
         else:
             p = rotate(el.axis, st.cos, -st.sin, p)
             vel = {g: rotate(el.axis, st.cos, -st.sin, v) for g, v in vel.items()}
+            if _is_zero(st.rate):  # a constant joint adds no velocity
+                continue
             dv = tuple(0.0 if _is_zero(c) else st.rate * c for c in cross_axis(el.axis, p))
         old = vel.get(el.group, (0.0, 0.0, 0.0))
         vel[el.group] = tuple(_add(a, b) for a, b in zip(old, dv))  # type: ignore[assignment]
