@@ -1,0 +1,285 @@
+"""Kinematic driver: the core's joint angles, rates and accelerations -> MuJoCo qpos,
+qvel and qacc of the bird built by :mod:`birdsim.mujoco.model`.
+
+Joint names are the core's (``kinematics.JOINTS``): ``heave`` (slide), ``sweep``,
+``stroke``, ``flap``, ``twist`` (composed into the shoulder ball joint in that order),
+``wrist_flap``, ``wrist_twist`` (hinges).  Both wings get the same values; the left
+wing's joint axes are the mirror images (see :mod:`birdsim.mujoco.model`), so the left
+wing is the mirror image of the right one.  Joints a model does not use stay at 0.
+
+Ball joints: ``qpos`` is the quaternion of the composed rotation
+``A_1 A_2 ... A_n`` (intrinsic: each an active rotation by +q_k about its MuJoCo axis
+a_k), ``qvel`` the angular velocity in the CHILD frame,
+``w = sum_k v_k qd_k`` with ``v_k = (A_{k+1}..A_n)^T a_k``, and ``qacc`` its time
+derivative ``sum_k (v_k qdd_k - qd_k W_k x v_k)`` with ``W_k = sum_{j>k} v_j qd_j``.
+
+The root (free joint): position and velocity given in seed earth axes and converted
+with C = diag(1,-1,-1); orientation = body pitch theta (nose up) about MuJoCo -y;
+its angular velocity (body frame) is the pitch rate about -y.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+
+import mujoco
+import numpy as np
+
+from ..bird import Bird
+from ..errors import BirdsimError
+from ..kinematics import JOINTS, get_model, validate_params
+from .model import SIDES, hinge_axis, pitch_quat, slide_axis
+
+#: The core joints composed into the shoulder ball joint, outermost first.
+SHOULDER = ("sweep", "stroke", "flap", "twist")
+HINGES = ("wrist_flap", "wrist_twist")
+CORE_JOINTS = ("heave",) + SHOULDER + HINGES
+
+
+@dataclass(frozen=True)
+class Trajectory:
+    """Full-model generalised coordinates over time: qpos (T, nq), qvel and qacc (T, nv)."""
+
+    time: np.ndarray
+    qpos: np.ndarray
+    qvel: np.ndarray
+    qacc: np.ndarray
+
+
+def _rotation_matrices(axis: np.ndarray, angle: np.ndarray) -> np.ndarray:
+    """Active rotations by ``angle`` (T,) about unit ``axis`` (3,): (T, 3, 3) (Rodrigues)."""
+    k = np.array([[0.0, -axis[2], axis[1]], [axis[2], 0.0, -axis[0]], [-axis[1], axis[0], 0.0]])
+    s, c = np.sin(angle)[:, None, None], np.cos(angle)[:, None, None]
+    return np.eye(3) + s * k + (1.0 - c) * (k @ k)
+
+
+def _quat_mul(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    w1, x1, y1, z1 = np.moveaxis(a, -1, 0)
+    w2, x2, y2, z2 = np.moveaxis(b, -1, 0)
+    return np.stack(
+        [
+            w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2,
+            w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
+            w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2,
+            w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2,
+        ],
+        axis=-1,
+    )
+
+
+def ball_state(
+    axes: Sequence[np.ndarray], q: Sequence[np.ndarray], qd: Sequence[np.ndarray], qdd: Sequence[np.ndarray]
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Quaternion (T, 4), child-frame angular velocity and acceleration (T, 3) of the
+    intrinsic composition of rotations by ``q[k]`` about ``axes[k]`` (outermost first)."""
+    n = len(axes)
+    t = np.shape(q[0])[0]
+    quat = np.tile([1.0, 0.0, 0.0, 0.0], (t, 1))
+    for a, ang in zip(axes, q):
+        half = 0.5 * np.asarray(ang)
+        quat = _quat_mul(quat, np.concatenate([np.cos(half)[:, None], np.sin(half)[:, None] * a], axis=-1))
+    rots = [_rotation_matrices(a, np.asarray(ang)) for a, ang in zip(axes, q)]
+    v = [None] * n
+    b = np.tile(np.eye(3), (t, 1, 1))  # A_{k+1} .. A_n, built from the inside out
+    for k in range(n - 1, -1, -1):
+        v[k] = np.einsum("tji,j->ti", b, axes[k])  # B^T a_k
+        b = rots[k] @ b
+    omega = np.zeros((t, 3))
+    alpha = np.zeros((t, 3))
+    outer = np.zeros((t, 3))  # W_k = sum_{j>k} v_j qd_j
+    for k in range(n - 1, -1, -1):
+        rate = np.asarray(qd[k])[:, None]
+        alpha += v[k] * np.asarray(qdd[k])[:, None] - rate * np.cross(outer, v[k])
+        outer = outer + v[k] * rate
+    omega = outer
+    return quat, omega, alpha
+
+
+def _as_series(value: object, t: int, name: str) -> np.ndarray:
+    try:
+        a = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise BirdsimError(f"joint {name}={value!r} is not a number") from None
+    if a.ndim > 1 or (a.ndim == 1 and a.shape[0] != t):
+        raise BirdsimError(f"joint {name} has shape {a.shape}; allowed: a number or ({t},) samples")
+    if not np.all(np.isfinite(a)):
+        raise BirdsimError(f"joint {name} is not finite; allowed: finite angles (rad) or heave (length)")
+    return np.broadcast_to(a, (t,)).astype(float)
+
+
+def _check_names(joint_values: Mapping[str, object], arg: str) -> None:
+    for k in joint_values:
+        if k not in CORE_JOINTS:
+            raise BirdsimError(f"{arg} names joint {k!r}; allowed: {', '.join(CORE_JOINTS)}")
+
+
+def wing_arrays(
+    m: mujoco.MjModel,
+    angles: Mapping[str, object],
+    rates: Mapping[str, object] | None = None,
+    accelerations: Mapping[str, object] | None = None,
+    *,
+    samples: int = 1,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """qpos (T, nq), qvel and qacc (T, nv) with the wing joints set (root entries: rest
+    pose / zero).  Missing joints, rates or accelerations are 0."""
+    for arg, vals in (("joint_angles", angles), ("joint_rates", rates or {}), ("joint_accelerations", accelerations or {})):
+        _check_names(vals, arg)
+    t = samples
+    get = lambda d, k: _as_series((d or {}).get(k, 0.0), t, k)  # noqa: E731
+    qpos = np.tile(m.qpos0, (t, 1))
+    qvel = np.zeros((t, m.nv))
+    qacc = np.zeros((t, m.nv))
+    for side in SIDES:
+        jid = m.joint(f"{side}_heave").id
+        qpos[:, m.jnt_qposadr[jid]] = get(angles, "heave")
+        qvel[:, m.jnt_dofadr[jid]] = get(rates, "heave")
+        qacc[:, m.jnt_dofadr[jid]] = get(accelerations, "heave")
+        axes = [hinge_axis(side, JOINTS[j].axis) for j in SHOULDER]
+        quat, omega, alpha = ball_state(
+            axes, [get(angles, j) for j in SHOULDER], [get(rates, j) for j in SHOULDER], [get(accelerations, j) for j in SHOULDER]
+        )
+        jid = m.joint(f"{side}_shoulder").id
+        qa, da = m.jnt_qposadr[jid], m.jnt_dofadr[jid]
+        qpos[:, qa : qa + 4] = quat
+        qvel[:, da : da + 3] = omega
+        qacc[:, da : da + 3] = alpha
+        for j in HINGES:
+            jid = m.joint(f"{side}_{j}").id
+            qpos[:, m.jnt_qposadr[jid]] = get(angles, j)
+            qvel[:, m.jnt_dofadr[jid]] = get(rates, j)
+            qacc[:, m.jnt_dofadr[jid]] = get(accelerations, j)
+    return qpos, qvel, qacc
+
+
+def _vec3(value: object, name: str) -> np.ndarray:
+    try:
+        a = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise BirdsimError(f"{name}={value!r} is not a vector; allowed: three finite numbers") from None
+    if a.shape != (3,) or not np.all(np.isfinite(a)):
+        raise BirdsimError(f"{name}={value!r} is invalid; allowed: three finite numbers (seed axes X, Y, Z)")
+    return a
+
+
+def set_root(
+    m: mujoco.MjModel,
+    qpos: np.ndarray,
+    qvel: np.ndarray,
+    *,
+    pitch: float | np.ndarray,
+    position_seed: object | None = None,
+    velocity_seed: object | None = None,
+    pitch_rate: float | np.ndarray = 0.0,
+) -> None:
+    """Write the root (free joint) into ``qpos``/``qvel`` (arrays (..., nq) / (..., nv)).
+
+    ``position_seed``/``velocity_seed``: torso position and velocity in seed earth axes
+    (X forward, Y right, Z down; altitude h is Z = -h); None keeps the position already
+    in ``qpos`` and sets the velocity to zero.
+    """
+    pitch = np.asarray(pitch, dtype=float)
+    if not np.all(np.isfinite(pitch)):
+        raise BirdsimError(f"pitch={pitch!r} is not finite; allowed: an angle in radians")
+    if position_seed is not None:
+        qpos[..., 0:3] = np.asarray(position_seed, dtype=float) * np.array([1.0, -1.0, -1.0])
+    half = 0.5 * pitch
+    qpos[..., 3] = np.cos(half)
+    qpos[..., 4] = 0.0
+    qpos[..., 5] = -np.sin(half)
+    qpos[..., 6] = 0.0
+    qvel[..., 0:3] = 0.0 if velocity_seed is None else np.asarray(velocity_seed, dtype=float) * np.array([1.0, -1.0, -1.0])
+    qvel[..., 3] = 0.0
+    qvel[..., 4] = -np.asarray(pitch_rate, dtype=float)
+    qvel[..., 5] = 0.0
+
+
+def set_pose(
+    m: mujoco.MjModel,
+    d: mujoco.MjData,
+    joint_angles: Mapping[str, float],
+    joint_rates: Mapping[str, float] | None = None,
+    *,
+    pitch: float,
+    position_seed: Sequence[float] | None = None,
+    velocity_seed: Sequence[float] | None = (0.0, 0.0, 0.0),
+    pitch_rate: float = 0.0,
+    forward: bool = True,
+) -> None:
+    """Write one instant of the bird into ``d.qpos``/``d.qvel`` (both wings mirrored).
+
+    ``joint_angles``/``joint_rates``: core joint names (heave, sweep, stroke, flap,
+    twist, wrist_flap, wrist_twist) -> angle (rad; heave: length, positive down) and
+    rate (per unit time); missing joints are 0.  ``pitch``: body pitch (rad, nose up).
+    ``position_seed``: torso position in seed earth axes (X forward, Y right, Z down;
+    altitude h is Z = -h); None keeps the current position.  ``velocity_seed``: torso
+    velocity in seed earth axes.  Calls ``mj_forward`` unless ``forward=False``.
+    """
+    if position_seed is not None:
+        position_seed = _vec3(position_seed, "position_seed")
+    if velocity_seed is not None:
+        velocity_seed = _vec3(velocity_seed, "velocity_seed")
+    qpos, qvel, _ = wing_arrays(m, joint_angles, joint_rates, samples=1)
+    qpos[0, :3] = d.qpos[:3]
+    set_root(m, qpos[0], qvel[0], pitch=pitch, position_seed=position_seed, velocity_seed=velocity_seed, pitch_rate=pitch_rate)
+    d.qpos[:] = qpos[0]
+    d.qvel[:] = qvel[0]
+    if forward:
+        mujoco.mj_forward(m, d)
+
+
+def joint_series(
+    model_name: str,
+    params: Mapping[str, object],
+    times: np.ndarray,
+    bird: Bird | None = None,
+    *,
+    check_bounds: bool = True,
+) -> tuple[dict[str, np.ndarray], dict[str, np.ndarray], dict[str, np.ndarray]]:
+    """Angles, rates and accelerations (each (T,)) of every joint the model moves, at
+    ``times``: exactly the core's ``KinematicModel.joint_motion`` sinusoids.
+
+    ``params`` values may be floats or (T,) arrays (a parameter schedule); a schedule
+    is treated as quasi-steady (the derivatives of the parameters themselves are not
+    added), which is exact for constant parameters.
+    """
+    bird = bird or Bird()
+    km = get_model(model_name)
+    p = validate_params(km, params, check_bounds=check_bounds)
+    times = np.asarray(times, dtype=float)
+    if times.ndim != 1:
+        raise BirdsimError(f"times has shape {times.shape}; allowed: a 1-D array of times")
+    p = {k: np.broadcast_to(v, times.shape) for k, v in p.items()}
+    angles, rates, accs = {}, {}, {}
+    for name, motion in km.joint_motion(p, bird).items():
+        q, qd, qdd = motion.at(bird.omega * times, bird.omega)
+        angles[name], rates[name], accs[name] = (np.broadcast_to(x, times.shape) for x in (q, qd, qdd))
+    return angles, rates, accs
+
+
+def trajectory(
+    m: mujoco.MjModel,
+    model_name: str,
+    params: Mapping[str, object],
+    times: np.ndarray,
+    bird: Bird | None = None,
+    *,
+    position_seed: Sequence[float] = (0.0, 0.0, -2.0),
+    velocity_seed: Sequence[float] = (0.0, 0.0, 0.0),
+    check_bounds: bool = True,
+) -> Trajectory:
+    """qpos/qvel/qacc over ``times`` for a parameter set (or schedule) of ``model_name``.
+
+    The torso is at ``position_seed`` moving at the constant ``velocity_seed`` (seed
+    earth axes) with the pitch of the parameters; the root acceleration is zero.
+    """
+    times = np.asarray(times, dtype=float)
+    angles, rates, accs = joint_series(model_name, params, times, bird, check_bounds=check_bounds)
+    qpos, qvel, qacc = wing_arrays(m, angles, rates, accs, samples=times.shape[0])
+    pos = _vec3(position_seed, "position_seed")
+    vel = _vec3(velocity_seed, "velocity_seed")
+    pitch = np.broadcast_to(np.asarray(params["pitch"], dtype=float), times.shape)
+    set_root(m, qpos, qvel, pitch=pitch, position_seed=pos, velocity_seed=vel)
+    qpos[:, 0:3] += times[:, None] * vel * np.array([1.0, -1.0, -1.0])
+    return Trajectory(times, qpos, qvel, qacc)
