@@ -1,0 +1,262 @@
+"""The numbers behind the report's figures (pure numpy, no matplotlib).
+
+Every function here evaluates the physics core (``evaluate_cycle``) on a whole grid of
+parameter sets in one batched call (chunked to bound memory), or reads the polar
+directly.  ``birdsim/plots.py`` draws these arrays; ``birdsim/report.py`` compares
+them with what the dissertation printed.  Forces are the dissertation's force (right
+wing + body drag, seed earth axes, Fz < 0 is up) unless a name says otherwise.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from .aero import Polar
+from .bird import Bird
+from .cycle import evaluate_cycle
+from .frames import body_to_earth
+from .kinematics import get_model, joint_states, panel_to_body, points_in_body
+
+#: Flatten batches larger than this into chunks (parameter sets per evaluate_cycle call).
+CHUNK = 8192
+
+
+@dataclass(frozen=True)
+class GridMeans:
+    """Mean forces and power over a grid of parameter sets (arrays of the grid shape).
+
+    ``Fx`` includes the body drag (dissertation force); ``P`` is the mean mechanical
+    power of the right wing."""
+
+    Fx: np.ndarray
+    Fz: np.ndarray
+    P: np.ndarray
+
+
+def grid_means(
+    model: str,
+    params: Mapping[str, np.ndarray | float],
+    speed: np.ndarray | float,
+    *,
+    bird: Bird | None = None,
+    n: int = 32,
+    check_bounds: bool = False,
+) -> GridMeans:
+    """Batched cycle means of every parameter set of a broadcastable grid.
+
+    The grid is flattened and evaluated in chunks of :data:`CHUNK` sets, each one
+    vectorised ``evaluate_cycle`` call.
+    """
+    arrays = {k: np.asarray(v, dtype=float) for k, v in params.items()}
+    v = np.asarray(speed, dtype=float)
+    shape = np.broadcast_shapes(v.shape, *(a.shape for a in arrays.values()))
+    flat = {k: np.broadcast_to(a, shape).reshape(-1) for k, a in arrays.items()}
+    vf = np.broadcast_to(v, shape).reshape(-1)
+    size = vf.size
+    fx, fz, p = np.empty(size), np.empty(size), np.empty(size)
+    for lo in range(0, size, CHUNK):
+        hi = min(lo + CHUNK, size)
+        cyc = evaluate_cycle(
+            model, {k: a[lo:hi] for k, a in flat.items()}, vf[lo:hi], bird=bird, n=n, check_bounds=check_bounds
+        )
+        m = cyc.mean
+        fx[lo:hi], fz[lo:hi], p[lo:hi] = m.Fx, m.Fz, m.P
+    return GridMeans(fx.reshape(shape), fz.reshape(shape), p.reshape(shape))
+
+
+def mesh(axes: Sequence[np.ndarray]) -> list[np.ndarray]:
+    """Open-mesh views (``np.ix_``) of 1-D axes: arrays that broadcast to the full grid."""
+    return list(np.ix_(*[np.asarray(a, dtype=float) for a in axes]))
+
+
+# ---- Fig 9: thrust coefficient over advance angle and twist --------------------------
+
+
+def thrust_coefficient(polar: Polar, advance_angle: np.ndarray, twist: np.ndarray) -> np.ndarray:
+    """Eq. 20/23: ``C_Fx = C_L(a) sin(zeta) - C_D(a) cos(zeta)`` with ``a = zeta - theta_f``.
+
+    A translating section meets the air at the advance angle ``zeta = atan(w_f / V)``;
+    twist ``theta_f`` (leading edge down) reduces its incidence to ``zeta - theta_f``.
+    Lift is normal and drag parallel to the relative wind, so their components along
+    the flight direction give the thrust coefficient.  (The printed eq. 23 drops the
+    ``sin(zeta)`` of the lift term -- an OCR/typesetting slip: with it, eq. 23 reduces to
+    eq. 15 at zero twist as the text says.)  Arrays broadcast.
+    """
+    zeta = np.asarray(advance_angle, dtype=float)
+    cl, cd = polar.coefficients(zeta - np.asarray(twist, dtype=float))
+    return cl * np.sin(zeta) - cd * np.cos(zeta)
+
+
+# ---- Figs 26-27: wrist lag and bias --------------------------------------------------
+
+#: sec. 3.5.7: cruise-like case, pitch, stroke plane and twist omitted.
+WRIST_STUDY = dict(speed=0.5, pitch=0.0, twist_amp=0.0, stroke_plane=0.0)
+
+
+def wrist_upward_force(
+    flap_amp: np.ndarray | float,
+    wrist_amp: np.ndarray | float,
+    wrist_lag: np.ndarray | float,
+    wrist_bias: np.ndarray | float,
+    *,
+    bird: Bird | None = None,
+    n: int = 32,
+) -> np.ndarray:
+    """Upward mean force ``-Fz`` of m4 (dissertation force) in the sec. 3.5.7 study
+    (V = 0.5, pitch = twist = stroke plane = 0), over any broadcastable grid.
+
+    The dissertation's "F_z(max)" is the largest upward force; its amplitudes and bias
+    exceed the default bounds (up to pi/2), so bounds are not checked here.
+    """
+    s = WRIST_STUDY
+    params = dict(
+        pitch=s["pitch"], flap_amp=flap_amp, twist_amp=s["twist_amp"], stroke_plane=s["stroke_plane"],
+        wrist_amp=wrist_amp, wrist_bias=wrist_bias, wrist_lag=wrist_lag,
+    )
+    return -grid_means("m4", params, s["speed"], bird=bird, n=n).Fz
+
+
+@dataclass(frozen=True)
+class WristOptimum:
+    """Per (flap_amp, wrist_amp): the lag and bias giving the largest upward force."""
+
+    flap_amp: np.ndarray  # I
+    wrist_amp: np.ndarray  # J
+    lag_star: np.ndarray  # I x J
+    bias_star: np.ndarray  # I x J
+    upward_max: np.ndarray  # I x J
+
+
+def wrist_optimum(
+    flap_amp: np.ndarray, wrist_amp: np.ndarray, lag: np.ndarray, bias: np.ndarray, *, bird: Bird | None = None, n: int = 32
+) -> WristOptimum:
+    """Fig 27: argmax over the (lag, bias) grid of the upward force, for every amplitude pair."""
+    up = wrist_upward_force(*mesh([flap_amp, wrist_amp, lag, bias]), bird=bird, n=n)
+    i, j = up.shape[:2]
+    flat = up.reshape(i, j, -1)
+    best = np.argmax(flat, axis=-1)
+    li, bi = np.unravel_index(best, (len(lag), len(bias)))
+    return WristOptimum(
+        np.asarray(flap_amp), np.asarray(wrist_amp), np.asarray(lag)[li], np.asarray(bias)[bi],
+        np.take_along_axis(flat, best[..., None], axis=-1)[..., 0],
+    )
+
+
+# ---- Fig 49: wrist activity coefficient K --------------------------------------------
+
+
+def wrist_activity(k: np.ndarray | float) -> dict[str, np.ndarray]:
+    """Eq. 95: wrist amplitude, lag and bias as ``K`` times their upper bounds (m4)."""
+    m = get_model("m4")
+    k = np.asarray(k, dtype=float)
+    return {name: k * m.spec(name).upper for name in ("wrist_amp", "wrist_lag", "wrist_bias")}
+
+
+# ---- cost landscapes (Figs 33, 34, 50, 51) -------------------------------------------
+
+CostFunction = Callable[[GridMeans, Mapping[str, np.ndarray], np.ndarray], np.ndarray]
+
+
+@dataclass(frozen=True)
+class Landscape:
+    """Cost over two plotted axes, minimised over the remaining free axes (a profile).
+
+    ``cost`` is (len(x), len(y)); ``argmin`` holds, per plotted cell, the values of the
+    profiled parameters at the minimum; ``best`` the parameters of the overall minimum."""
+
+    x_name: str
+    x: np.ndarray
+    y_name: str
+    y: np.ndarray
+    cost: np.ndarray
+    argmin: dict[str, np.ndarray]
+    best: dict[str, float]
+
+
+def landscape(
+    model: str,
+    speed: float,
+    cost: CostFunction,
+    x: tuple[str, np.ndarray],
+    y: tuple[str, np.ndarray],
+    *,
+    fixed: Mapping[str, float] | None = None,
+    profile: Mapping[str, np.ndarray] | None = None,
+    derived: Callable[[dict[str, np.ndarray]], dict[str, np.ndarray]] | None = None,
+    bird: Bird | None = None,
+    n: int = 32,
+) -> Landscape:
+    """Cost of ``model`` at ``speed`` on the grid x * y * profile axes, minimised over the
+    profile axes.  ``derived`` maps the grid arrays to further parameters (e.g. the
+    wrist activity coefficient K to the wrist amplitude, lag and bias)."""
+    fixed = dict(fixed or {})
+    profile = dict(profile or {})
+    names = [x[0], y[0], *profile]
+    grids = mesh([x[1], y[1], *profile.values()])
+    params: dict[str, np.ndarray] = {**{k: np.asarray(v) for k, v in fixed.items()}, **dict(zip(names, grids))}
+    if derived is not None:
+        params.update(derived(params))
+    model_params = {k: v for k, v in params.items() if k in get_model(model).param_names}
+    means = grid_means(model, model_params, speed, bird=bird, n=n)
+    c = cost(means, model_params, np.asarray(speed, dtype=float))
+    full = np.broadcast_to(c, np.broadcast_shapes(*(g.shape for g in grids), c.shape))
+    flat = full.reshape(len(x[1]), len(y[1]), -1)
+    k = np.argmin(flat, axis=-1)
+    prof_shape = tuple(len(v) for v in profile.values())
+    idx = np.unravel_index(k, prof_shape) if profile else ()
+    argmin = {name: np.asarray(vals)[i] for (name, vals), i in zip(profile.items(), idx)}
+    surface = np.take_along_axis(flat, k[..., None], axis=-1)[..., 0]
+    bi, bj = np.unravel_index(np.argmin(surface), surface.shape)
+    best = {x[0]: float(x[1][bi]), y[0]: float(y[1][bj])}
+    best.update({name: float(a[bi, bj]) for name, a in argmin.items()})
+    return Landscape(x[0], np.asarray(x[1]), y[0], np.asarray(y[1]), surface, argmin, best)
+
+
+# ---- Figs 41-43, 46-48, 53-55: control-point paths and chord lines -------------------
+
+
+@dataclass(frozen=True)
+class ControlPointPaths:
+    """Per panel: CP path and chord segments in earth-oriented axes relative to the
+    shoulder (seed axes: X forward, Y right, Z down), over one wingbeat.
+
+    ``path`` is K x N x 3; ``leading``/``trailing`` are K x N x 3, the ends of the chord
+    line through each CP (leading edge = +x of the panel)."""
+
+    model: str
+    panel_names: tuple[str, ...]
+    phase: np.ndarray  # N, t/T in [0, 1)
+    path: np.ndarray
+    leading: np.ndarray
+    trailing: np.ndarray
+
+
+def control_point_paths(model: str, params: Mapping[str, float], *, bird: Bird | None = None, n: int = 64) -> ControlPointPaths:
+    """Where each panel's control point goes over one wingbeat, with its chord line.
+
+    Uses the kinematic chain directly (``joint_states``, ``points_in_body``,
+    ``panel_to_body``) and the body pitch to turn body axes into earth axes; the body
+    stays at the origin (paths relative to the shoulder, as the dissertation draws them).
+    """
+    bird = bird or Bird()
+    m = get_model(model)
+    p = {k: np.asarray(float(v)) for k, v in params.items()}
+    phases = np.linspace(0.0, 2.0 * math.pi, n, endpoint=False)
+    states = joint_states(m, p, bird, phases, trailing=1)
+    pitch = float(p["pitch"])
+    paths, leads, trails, names = [], [], [], []
+    for (chain, span, chord), geom in zip(m.chain_with_geometry(bird), bird.panels(m.name)):
+        r = np.array([bird.cp_span_fraction * span])
+        pos, _ = points_in_body(chain, states, r)
+        x_axis = panel_to_body(chain, states, (np.ones((n, 1)), np.zeros((n, 1)), np.zeros((n, 1))))
+        pos = np.stack([np.broadcast_to(c, (n, 1))[:, 0] for c in body_to_earth(pitch, pos)], axis=-1)
+        ax = np.stack([np.broadcast_to(c, (n, 1))[:, 0] for c in body_to_earth(pitch, x_axis)], axis=-1)
+        paths.append(pos)
+        leads.append(pos + 0.5 * chord * ax)
+        trails.append(pos - 0.5 * chord * ax)
+        names.append(geom.name)
+    return ControlPointPaths(m.name, tuple(names), phases / (2 * math.pi), np.stack(paths), np.stack(leads), np.stack(trails))
