@@ -175,8 +175,11 @@ def play(
     # 1-2. demands on a fine grid, clipped to the table and looked up
     t_end = max(float(manoeuvre.duration), float(t_out.max(initial=0.0)), manoeuvre.keyframes[-1].t)
     t_start = min(0.0, float(t_out.min(initial=0.0)))
-    n = max(8, int(math.ceil((t_end - t_start) * config.samples_per_beat)) + 1)
-    grid = np.linspace(t_start, t_end, n)
+    # a fixed spacing from t = 0, so that any set of requested instants sees the same
+    # filtered schedule (a frame and the sub-frame instants of its pathline agree)
+    h = 1.0 / config.samples_per_beat
+    grid = np.arange(math.floor(t_start / h) - 1, math.ceil(t_end / h) + 2) * h
+    n = len(grid)
     dem = manoeuvre.demands(grid)
     used = {k: np.clip(dem[k], axes[k].min(), axes[k].max()) for k in DEMANDS}
     raw = lookup_params(table, used)
