@@ -204,9 +204,8 @@ class Scene:
         end = i * sub + 1
         pts = self.trails[max(0, end - n_keep) : end]
         scn = self.renderer.scene
-        colours = ((0.95, 0.15, 0.1), (0.1, 0.35, 0.95), (0.95, 0.6, 0.05))
         for s in range(pts.shape[1]):
-            base = colours[min(s // 2, len(colours) - 1)] if len(self.sites) > 2 else colours[0]
+            base = (0.1, 0.35, 0.95) if "hand" in self.sites[s] else (0.95, 0.15, 0.1)  # hand CP blue, arm/wing CP red
             for k in range(len(pts) - 1):
                 if scn.ngeom >= scn.maxgeom:
                     return

@@ -1,0 +1,111 @@
+"""``birdsim render``: a manoeuvre (preset or TOML file) driven by a lookup table,
+rendered headlessly to an MP4 (H.264, yuv420p)."""
+
+from __future__ import annotations
+
+import argparse
+import re
+from pathlib import Path
+
+from ..errors import BirdsimError
+from ..gl import GL_CHOICES
+from ..manoeuvre import PRESETS
+from .common import add_bird_arguments, bird_from_args
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser(
+        "render",
+        help="render a manoeuvre to MP4 (hover, cruise, take-off, landing or a TOML file)",
+        description=__doc__,
+    )
+    p.add_argument("manoeuvre", metavar="MANOEUVRE", help=f"a preset ({', '.join(PRESETS)}) or a manoeuvre .toml file")
+    p.add_argument("--model", default="m4", help="kinematic model: base, m1, m2, m3 or m4 (default m4)")
+    p.add_argument("--table", metavar="FILE", help="lookup table (default tables/<model>.npz)")
+    p.add_argument("--out", metavar="FILE.mp4", help="output video (default renders/<manoeuvre>-<model>.mp4)")
+    p.add_argument("--size", default="640x480", metavar="WxH", help="frame size, multiples of 16 (default 640x480)")
+    p.add_argument("--fps", default="30", metavar="N", help="frames per second (default 30)")
+    p.add_argument("--seconds", metavar="S", help="video length (default: the whole manoeuvre); longer holds the last demands")
+    p.add_argument("--beat-rate", default="2", metavar="HZ", help="wingbeats shown per second of video (default 2)")
+    p.add_argument("--camera", default="track", help="track (follows the bird), side, top or overview (default track)")
+    p.add_argument("--no-trails", action="store_true", help="no control-point pathlines")
+    p.add_argument("--no-overlay", action="store_true", help="no text overlay")
+    p.add_argument("--gl", default="auto", help="auto (OSMesa if installed, else EGL), osmesa or egl")
+    p.add_argument("--force", action="store_true", help="overwrite an existing output file")
+    p.add_argument("--quiet", action="store_true", help="no progress bar")
+    add_bird_arguments(p)
+    p.set_defaults(func=run)
+
+
+def _number(arg: str, raw: str | None, kind: type = float) -> float | int | None:
+    if raw is None:
+        return None
+    try:
+        return kind(raw)
+    except ValueError:
+        what = "an integer" if kind is int else "a number"
+        raise BirdsimError(f"{arg} {raw!r} is not {what}") from None
+
+
+def _slug(text: str) -> str:
+    return re.sub(r"[^A-Za-z0-9_.-]+", "_", text).strip("_") or "manoeuvre"
+
+
+def run(args: argparse.Namespace) -> int:
+    # every cheap check first, so that a mistake costs nothing and writes nothing
+    from ..gl import resolve_gl
+    from ..kinematics import get_model
+    from ..manoeuvre import get_manoeuvre
+    from ..render import RenderOptions, parse_size
+
+    manoeuvre = get_manoeuvre(args.manoeuvre)
+    model = get_model(args.model).name
+    if args.gl not in GL_CHOICES:
+        raise BirdsimError(f"--gl {args.gl!r} is unknown; allowed: {', '.join(GL_CHOICES)}")
+    width, height = parse_size(args.size)
+    options = RenderOptions(
+        width=width,
+        height=height,
+        fps=_number("--fps", args.fps, int),  # type: ignore[arg-type]
+        seconds=_number("--seconds", args.seconds),
+        beats_per_second=_number("--beat-rate", args.beat_rate),  # type: ignore[arg-type]
+        camera=args.camera,
+        trails=not args.no_trails,
+        overlay=not args.no_overlay,
+        gl=args.gl,
+        progress=not args.quiet,
+    )
+    out = Path(args.out) if args.out else Path("renders") / f"{_slug(manoeuvre.name)}-{model}.mp4"
+    from ..io import check_output
+
+    check_output(out, args.force)
+    if out.suffix.lower() != ".mp4":
+        raise BirdsimError(f"--out {str(out)!r} does not end in .mp4; allowed: a .mp4 path")
+    table_path = Path(args.table) if args.table else Path("tables") / f"{model}.npz"
+    table = _load_table(table_path, model, explicit=bool(args.table))
+    bird = bird_from_args(args) if (args.bird or args.set) else None
+    resolve_gl(args.gl)  # missing GL library -> one line, before any work
+
+    from ..render import render_manoeuvre
+
+    result = render_manoeuvre(manoeuvre, table, out, options, bird=bird, model=model, force=args.force)
+    print(
+        f"wrote {result.path} ({result.frames} frames, {result.width}x{result.height} @ {result.fps} fps, "
+        f"{result.video_seconds:.1f} s of video in {result.wall_seconds:.1f} s wall, GL {result.backend})"
+    )
+    return 0
+
+
+def _load_table(path: Path, model: str, *, explicit: bool):
+    from ..playback import check_table_model
+
+    if not path.exists():
+        hint = f"build it with `birdsim tables build --model {model}`" if not explicit else "a table file (.npz)"
+        raise BirdsimError(f"--table {str(path)!r} does not exist; allowed: {hint}")
+    try:
+        from ..tables import load_table
+    except ImportError:  # pragma: no cover - tables land with issue 3
+        raise BirdsimError("--table: this birdsim has no table support (birdsim.tables is missing)") from None
+    table = load_table(path)
+    check_table_model(table, model)
+    return table
