@@ -213,6 +213,7 @@ class Scene:
                 age = (k + 1) / (len(pts) - 1)
                 mj.mjv_initGeom(g, mj.mjtGeom.mjGEOM_LINE, np.zeros(3), np.zeros(3), np.eye(3).ravel(), np.array([*base, 0.25 + 0.75 * age], dtype=np.float32))
                 mj.mjv_connector(g, mj.mjtGeom.mjGEOM_LINE, 3.0, pts[k, s], pts[k + 1, s])
+                g.segid = -1  # decoration: not an object of the model (segmentation skips it)
                 scn.ngeom += 1
 
     def rgb(self, i: int) -> np.ndarray:
@@ -321,7 +322,10 @@ def mp4_writer(path: Path, width: int, height: int, fps: int, *, crf: int = 23, 
     when the block ends without an exception (temporary sibling + os.replace)."""
     import imageio_ffmpeg
 
-    tmp = temporary_sibling(path)
+    try:
+        tmp = temporary_sibling(path)
+    except OSError as exc:
+        raise RenderError(f"--out {str(path)!r} is not writable: {exc.strerror}; allowed: a path in a writable folder") from None
     writer = imageio_ffmpeg.write_frames(
         str(tmp),
         (width, height),

@@ -76,15 +76,13 @@ def run(args: argparse.Namespace) -> int:
         progress=not args.quiet,
     )
     out = Path(args.out) if args.out else Path("renders") / f"{_slug(manoeuvre.name)}-{model}.mp4"
-    from ..io import check_output
-
-    check_output(out, args.force)
     if out.suffix.lower() != ".mp4":
         raise BirdsimError(f"--out {str(out)!r} does not end in .mp4; allowed: a .mp4 path")
+    check_writable(out, args.force)
+    resolve_gl(args.gl)  # a missing GL library -> one line, before any work
     table_path = Path(args.table) if args.table else Path("tables") / f"{model}.npz"
     table = _load_table(table_path, model, explicit=bool(args.table))
     bird = bird_from_args(args) if (args.bird or args.set) else None
-    resolve_gl(args.gl)  # missing GL library -> one line, before any work
 
     from ..render import render_manoeuvre
 
@@ -94,6 +92,20 @@ def run(args: argparse.Namespace) -> int:
         f"{result.video_seconds:.1f} s of video in {result.wall_seconds:.1f} s wall, GL {result.backend})"
     )
     return 0
+
+
+def check_writable(out: Path, force: bool) -> None:
+    """Refuse an existing file without --force and a folder we cannot write into
+    (probed by creating and removing the temporary sibling the writer will use)."""
+    import os
+
+    from ..io import check_output, temporary_sibling
+
+    check_output(out, force)
+    try:
+        os.unlink(temporary_sibling(out))
+    except OSError as exc:
+        raise BirdsimError(f"--out {str(out)!r} is not writable: {exc.strerror}; allowed: a path in a writable folder") from None
 
 
 def _load_table(path: Path, model: str, *, explicit: bool):

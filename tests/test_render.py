@@ -1,0 +1,206 @@
+"""Headless rendering: short clips of every preset, the MP4 they make, bad input, GL choice.
+
+Clips are small (160x128, 12 fps, about 1.5 s) so the whole module runs in seconds on
+the CPU.  A small in-test LookupTable (the real class) drives the bird, so these tests
+do not depend on the committed tables.
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from birdsim import gl
+from birdsim.errors import BirdsimError
+
+try:  # the default back-end here; every test that renders needs one of the two
+    BACKEND = gl.select_gl("auto")
+except gl.GLError:  # pragma: no cover - a machine without OSMesa and EGL
+    BACKEND = None
+
+from birdsim import Bird, get_model  # noqa: E402
+from birdsim.cli import main  # noqa: E402
+from birdsim.cost import FRACTION_NAMES  # noqa: E402
+from birdsim.manoeuvre import PRESETS  # noqa: E402
+from birdsim.render import RenderOptions, Scene, parse_size, play_for_video, render_manoeuvre, video_info  # noqa: E402
+from birdsim.tables import LookupTable  # noqa: E402
+
+needs_gl = pytest.mark.skipif(BACKEND is None, reason="no headless OpenGL (libOSMesa or libEGL)")
+W, H, FPS, SECONDS = 160, 128, 12, 1.5
+
+
+def small_table(model: str = "m4") -> LookupTable:
+    """A 5x3x5 table whose parameters vary smoothly with the demands inside the bounds
+    (hover-like large amplitudes at low V and strong lift, cruise-like small ones at V=1)."""
+    km = get_model(model)
+    axes = {"Fx": np.linspace(-0.5, 0.5, 5), "Fz": np.linspace(-0.5, 0.0, 3), "V": np.linspace(0.0, 1.0, 5)}
+    FX, FZ, V = np.meshgrid(*axes.values(), indexing="ij")
+    lo, hi = km.bounds
+    frac = np.clip(0.45 + 0.1 * FX[..., None] - 0.8 * FZ[..., None] - 0.35 * V[..., None], 0.05, 0.95)
+    params = lo + frac * (hi - lo)
+    shape = FX.shape
+    return LookupTable(
+        model=model,
+        bird=Bird(),
+        param_names=km.param_names,
+        axes=axes,
+        params=params,
+        cost=np.zeros(shape),
+        cost_fractions=np.zeros(shape + (len(FRACTION_NAMES),)),
+        achieved=np.zeros(shape + (3,)),
+        status_code=np.zeros(shape, dtype=np.uint8),
+        evaluations=np.zeros(shape, dtype=np.int64),
+    )
+
+
+def options(**kw) -> RenderOptions:
+    base = dict(width=W, height=H, fps=FPS, seconds=SECONDS, beats_per_second=2.0, progress=False)
+    base.update(kw)
+    return RenderOptions(**base)
+
+
+def _frames(path: Path) -> list[np.ndarray]:
+    import imageio_ffmpeg
+
+    gen = imageio_ffmpeg.read_frames(str(path))
+    meta = next(gen)
+    w, h = meta["size"]
+    return [np.frombuffer(f, np.uint8).reshape(h, w, 3) for f in gen]
+
+
+@needs_gl
+@pytest.mark.render
+@pytest.mark.parametrize("name", list(PRESETS))
+def test_preset_clip(tmp_path, name):
+    table = small_table()
+    out = tmp_path / f"{name}.mp4"
+    res = render_manoeuvre(PRESETS[name], table, out, options())
+    frames_expected = round(SECONDS * FPS)
+    # the file: H.264 in yuv420p, the size and frame count asked for (ffmpeg's own reading)
+    info = video_info(out)
+    assert info["codec"] == "h264" and str(info["pix_fmt"]).startswith("yuv420p")
+    assert info["size"] == (W, H) and info["frames"] == frames_expected == res.frames
+    assert sorted(p.name for p in tmp_path.iterdir()) == [out.name]  # no temporary left
+    frames = _frames(out)
+    assert len(frames) == frames_expected
+    for f in frames:  # not blank: a real picture has spread in brightness
+        assert f.std() > 10 and f.max() - f.min() > 60
+
+    # the same frames, as segmentation: the bird is in view of the tracking camera in
+    # every frame, and its wings move between frames
+    pb = play_for_video(PRESETS[name], table, options())
+    with Scene(pb, options()) as scene:
+        bird_ids, wing_ids = scene.bird_geoms(), scene.wing_geoms()
+        masks = []
+        for i in range(scene.frames):
+            seg = scene.segmentation(i)
+            is_geom = seg[..., 1] == int(__import__("mujoco").mjtObj.mjOBJ_GEOM)
+            bird = is_geom & np.isin(seg[..., 0], bird_ids)
+            # in view: a visible patch of bird (>= 1% of the frame), not touching every edge
+            assert bird.sum() >= 0.01 * W * H, f"frame {i}: bird not in view"
+            masks.append(is_geom & np.isin(seg[..., 0], wing_ids))
+    # wings move: a quarter wingbeat apart (1.5 frames at 2 beats/s and 12 fps -> 2 frames)
+    # the wing silhouettes differ by more than 5% of their area
+    for a, b in zip(masks[:-2], masks[2:]):
+        changed = np.logical_xor(a, b).sum() / max(1, np.logical_or(a, b).sum())
+        assert changed > 0.05
+
+
+@needs_gl
+@pytest.mark.render
+def test_failure_midway_leaves_nothing(tmp_path, monkeypatch):
+    out = tmp_path / "x.mp4"
+    calls = {"n": 0}
+    real = Scene.update
+
+    def flaky(self, i):
+        calls["n"] += 1
+        if calls["n"] > 3:
+            raise KeyboardInterrupt
+        return real(self, i)
+
+    monkeypatch.setattr(Scene, "update", flaky)
+    with pytest.raises(KeyboardInterrupt):
+        render_manoeuvre(PRESETS["hover"], small_table(), out, options(trails=False))
+    assert list(tmp_path.iterdir()) == []
+
+
+@needs_gl
+@pytest.mark.render
+def test_cli_renders_and_refuses_to_overwrite(tmp_path, capsys):
+    table = small_table()
+    table.save(tmp_path / "t")
+    out = tmp_path / "clip.mp4"
+    argv = ["render", "cruise", "--table", str(tmp_path / "t.npz"), "--out", str(out), "--size", "128x96", "--fps", "10", "--seconds", "0.5", "--quiet"]
+    assert main(argv) == 0
+    assert video_info(out)["frames"] == 5
+    before = out.stat().st_mtime_ns
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "exists" in err[0] and "--force" in err[0]
+    assert out.stat().st_mtime_ns == before
+
+
+@pytest.mark.parametrize(
+    "args, words",
+    [
+        (["hovr"], "manoeuvre 'hovr' is unknown"),
+        (["hover", "--model", "m9"], "model 'm9' is unknown"),
+        (["hover", "--size", "650x480"], "multiples of 16"),
+        (["hover", "--size", "640by480"], "malformed"),
+        (["hover", "--fps", "0"], "--fps 0 is invalid"),
+        (["hover", "--fps", "ten"], "not an integer"),
+        (["hover", "--gl", "vulkan"], "--gl 'vulkan' is unknown"),
+        (["hover", "--camera", "sky"], "--camera 'sky' is unknown"),
+        (["hover", "--out", "/proc/x.mp4"], "not writable"),  # /proc refuses new files, even to root
+        (["hover", "--out", "/proc/birdsim/x.mp4"], "cannot be created"),
+        (["hover", "--out", "x.avi"], "does not end in .mp4"),
+        (["hover", "--table", "/nonexistent/t.npz"], "does not exist"),
+    ],
+)
+def test_bad_input_one_line(tmp_path, capsys, monkeypatch, args, words):
+    monkeypatch.chdir(tmp_path)
+    assert main(["render", *args]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and words in err[0], err
+    assert not any(p.suffix == ".mp4" or "partial" in p.name for p in tmp_path.rglob("*"))
+
+
+def test_table_for_another_model(tmp_path, capsys):
+    small_table("m3").save(tmp_path / "m3")
+    assert main(["render", "hover", "--model", "m4", "--table", str(tmp_path / "m3.npz"), "--out", str(tmp_path / "x.mp4")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "built for model 'm3', not 'm4'" in err[0]
+    assert not (tmp_path / "x.mp4").exists()
+
+
+def test_missing_gl_library_is_named(monkeypatch, capsys, tmp_path):
+    monkeypatch.setattr(gl, "library_available", lambda backend: False)
+    with pytest.raises(gl.GLError, match=r"libOSMesa\.so .*apt-get install libosmesa6"):
+        gl.resolve_gl("osmesa")
+    with pytest.raises(gl.GLError, match=r"libEGL\.so"):
+        gl.resolve_gl("egl")
+    with pytest.raises(gl.GLError, match=r"neither libOSMesa\.so .* nor libEGL\.so"):
+        gl.resolve_gl("auto")
+    small_table().save(tmp_path / "t")
+    assert main(["render", "hover", "--table", str(tmp_path / "t.npz"), "--out", str(tmp_path / "x.mp4")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "libOSMesa.so" in err[0] and "libEGL.so" in err[0]
+    assert list(tmp_path.glob("*.mp4")) == []
+
+
+def test_auto_prefers_osmesa_and_falls_back_to_egl(monkeypatch):
+    monkeypatch.setattr(gl, "library_available", lambda backend: True)
+    assert gl.resolve_gl("auto") == "osmesa"
+    monkeypatch.setattr(gl, "library_available", lambda backend: backend == "egl")
+    assert gl.resolve_gl("auto") == "egl"
+
+
+def test_parse_size():
+    assert parse_size("640x480") == (640, 480) and parse_size("1280X720") == (1280, 720)
+    for bad in ("0x0", "17x16", "640", "8192x16"):
+        with pytest.raises(BirdsimError):
+            parse_size(bad)
