@@ -13,6 +13,7 @@ from .errors import BirdsimError
 COMMAND_MODULES = (
     "birdsim.commands.forces",
     "birdsim.commands.examples",
+    "birdsim.commands.report",
     "birdsim.commands.render",
 )
 
