@@ -243,10 +243,11 @@ def _add_bird(spec: mujoco.MjSpec, model_name: str, bird: Bird, body_pitch: floa
     # hold the torso to the world where it was built (used by the cross-check)
     weld = spec.add_equality(name="hold", type=mujoco.mjtEq.mjEQ_WELD, objtype=mujoco.mjtObj.mjOBJ_BODY)
     weld.name1 = "torso"
-    # anchor at the torso origin; relpose "0 1 0 0 0 0 0" = MJCF's sentinel for "the
-    # pose at qpos0" (the build pose); torque scale 1.  (MjSpec's default data in
-    # MuJoCo 4.0 puts (0, 1, 0) into the anchor, so set every entry.)
-    weld.data = [0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0]
+    # anchor (in body2 = world coordinates) at the torso origin, so that the held force
+    # has no lever arm; relpose "0 1 0 0 0 0 0" = MJCF's sentinel for "the pose at
+    # qpos0" (the build pose); torque scale 1.  (MjSpec's default data in MuJoCo 4.0
+    # puts (0, 1, 0) into the anchor, so set every entry.)
+    weld.data = [*torso.pos, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0]
     weld.solref = [HOLD_TIMECONST_STEPS * bird.period / STEPS_PER_WINGBEAT, 1.0]
     weld.solimp = [0.99, 0.9999, 0.001, 0.5, 2.0]
     weld.active = False

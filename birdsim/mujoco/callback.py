@@ -1,0 +1,119 @@
+"""Blade-element forces on the MuJoCo bird through MuJoCo's passive-force callback.
+
+For every control-point site of the kinematic model (both wings) the callback reads the
+site's velocity (``mj_objectVelocity``, world frame) and frame (``site_xmat``),
+subtracts the wind (``opt.wind`` = the air's velocity in the world: the freestream),
+rotates the velocity into panel axes (seed convention: panel x = site x, panel z = -site
+z) and calls the core's element force, ``bird.polar.force_panel`` -- the one
+implementation of the aerodynamics.  The panel force is rotated back and ADDED to
+``qfrc_passive`` with ``mj_applyFT`` at the site (strips, when ``bird.strips > 1``, are
+points along the site's span axis; their force and moment are applied at the site).
+Body drag (``aero.body_drag_x``, the dissertation's ``-rho/2 V^2 sin(theta)``, with V the
+torso's speed through the air and theta its angle of attack) acts on the torso along the
+torso's air-relative velocity.
+
+``mujoco.set_mjcb_passive`` is process-wide: install the callback with the context
+manager :func:`aero_forces` AFTER compiling every model you need (compiling while it is
+installed fails) and it is removed on exit, also when an exception is raised.  The
+callback acts only on the MjModel it was made for and ignores any other.  Under RK4 it
+runs four times per step.  Do not disable both spring and damper
+(``mjDSBL_SPRING | mjDSBL_DAMPER``): MuJoCo then skips the passive stage and the callback.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from contextlib import contextmanager
+
+import mujoco
+import numpy as np
+
+from ..aero import body_drag_x
+from ..bird import Bird
+from ..errors import BirdsimError
+from .model import aero_sites, span_sign
+
+_SITE = mujoco.mjtObj.mjOBJ_SITE
+
+
+class AeroCallback:
+    """The passive-force callback for one compiled model and one kinematic model.
+
+    Call it as ``cb(m, d)``; MuJoCo does so inside ``mj_passive`` once installed.
+    ``enabled`` switches the forces off without uninstalling (e.g. an aero-off run).
+    """
+
+    def __init__(self, m: mujoco.MjModel, model_name: str, bird: Bird | None = None, *, body_drag: bool = True):
+        self.bird = bird or Bird()
+        self.model = m
+        self.enabled = True
+        self.body_drag = body_drag
+        sites = aero_sites(model_name, self.bird)
+        try:
+            self.site_ids = np.array([m.site(s.site).id for s in sites])
+            self.torso_site = m.site("torso_cp").id
+        except KeyError as exc:
+            raise BirdsimError(f"model lacks site {exc}; allowed: a model built by birdsim.mujoco.model") from None
+        self.body_ids = m.site_bodyid[self.site_ids].copy()
+        self.torso_body = int(m.site_bodyid[self.torso_site])
+        # element offsets from the site along its local y axis, (K, S)
+        self.offsets = np.array([[span_sign(s.side) * o for o in s.strip_offsets] for s in sites])
+        self.areas = np.array([[w * s.chord for w in s.strip_widths] for s in sites])
+        self._vel = np.zeros((len(sites), 6))
+        self._tvel = np.zeros(6)
+        self.calls = 0
+
+    def __call__(self, m: mujoco.MjModel, d: mujoco.MjData) -> None:
+        if not self.enabled or m._address != self.model._address:
+            return
+        self.calls += 1
+        polar, rho = self.bird.polar, self.bird.rho
+        wind = m.opt.wind
+        for k, sid in enumerate(self.site_ids):
+            mujoco.mj_objectVelocity(m, d, _SITE, int(sid), self._vel[k], 0)
+        xmat = d.site_xmat[self.site_ids].reshape(-1, 3, 3)  # columns: site axes in world
+        ang, lin = self._vel[:, :3], self._vel[:, 3:] - wind
+        r = xmat[:, None, :, 1] * self.offsets[:, :, None]  # (K, S, 3) site -> element
+        v = lin[:, None, :] + np.cross(ang[:, None, :], r)  # element velocity rel. to air
+        local = np.einsum("kji,ksj->ksi", xmat, v)
+        # seed panel axes = C (site axes): vx = local x, vz = -local z
+        fx, fz = polar.force_panel(local[..., 0], -local[..., 2], self.areas, rho)
+        f = fx[..., None] * xmat[:, None, :, 0] - fz[..., None] * xmat[:, None, :, 2]
+        force = f.sum(axis=1)
+        torque = np.cross(r, f).sum(axis=1)
+        pos = d.site_xpos[self.site_ids]
+        for k in range(len(self.site_ids)):
+            mujoco.mj_applyFT(m, d, force[k], torque[k], pos[k], int(self.body_ids[k]), d.qfrc_passive)
+        if self.body_drag:
+            self._apply_body_drag(m, d)
+
+    def _apply_body_drag(self, m: mujoco.MjModel, d: mujoco.MjData) -> None:
+        mujoco.mj_objectVelocity(m, d, _SITE, self.torso_site, self._tvel, 0)
+        u = self._tvel[3:] - m.opt.wind
+        speed = float(np.linalg.norm(u))
+        if speed == 0.0:
+            return
+        xmat = d.site_xmat[self.torso_site].reshape(3, 3)
+        loc = xmat.T @ u
+        attack = np.arctan2(-loc[2], loc[0])  # seed body axes: z down
+        drag = body_drag_x(speed, attack, self.bird.rho, self.bird.body_drag_area)
+        mujoco.mj_applyFT(m, d, drag * u / speed, np.zeros(3), d.site_xpos[self.torso_site], self.torso_body, d.qfrc_passive)
+
+
+@contextmanager
+def aero_forces(
+    m: mujoco.MjModel, model_name: str, bird: Bird | None = None, *, body_drag: bool = True
+) -> Iterator[AeroCallback]:
+    """Install the aero callback for ``m`` while the ``with`` block runs.
+
+    Refuses to replace a passive callback someone else installed; always restores
+    ``None`` on exit (exceptions propagate).
+    """
+    cb = AeroCallback(m, model_name, bird, body_drag=body_drag)
+    if mujoco.get_mjcb_passive() is not None:
+        raise BirdsimError("a MuJoCo passive callback is already installed; allowed: one aero_forces block at a time")
+    mujoco.set_mjcb_passive(cb)
+    try:
+        yield cb
+    finally:
+        mujoco.set_mjcb_passive(None)
