@@ -7,7 +7,9 @@ library really loads (without OSMesa, ``import mujoco`` under ``MUJOCO_GL=osmesa
 dies with an obscure PyOpenGL AttributeError), sets both variables and returns the
 back-end's name.
 
-``auto`` = OSMesa when ``libOSMesa`` loads (the design's default), else EGL.  When
+``auto`` = ``MUJOCO_GL`` when it already names osmesa or egl and that library loads
+(the user's choice, or this process's earlier one), else OSMesa when ``libOSMesa``
+loads (the design's default), else EGL.  When
 :mod:`mujoco` was already imported with another back-end, :func:`select_gl` points
 MuJoCo's renderer at the chosen back-end's context class, or says in one line that
 it cannot.
@@ -64,6 +66,9 @@ def resolve_gl(requested: str = "auto") -> str:
         if not library_available(requested):
             raise GLError(missing_message(requested))
         return requested
+    preset = os.environ.get("MUJOCO_GL", "").strip().lower()
+    if preset in ("osmesa", "egl") and library_available(preset):
+        return preset  # the user's (or this process's earlier) choice stands
     for backend in ("osmesa", "egl"):
         if library_available(backend):
             return backend

@@ -129,11 +129,9 @@ class Scene:
     def __init__(self, playback: Playback, options: RenderOptions):
         import mujoco
 
-        from .mujoco.driver import set_pose
         from .mujoco.model import aero_sites, build_model
 
         self._mj = mujoco
-        self._set_pose = set_pose
         self.playback = playback
         self.options = options
         self.sub = max(1, int(options.trail_substeps))
@@ -150,6 +148,7 @@ class Scene:
             if hasattr(mujoco.mjtRndFlag, flag):
                 flags[getattr(mujoco.mjtRndFlag, flag)] = 0
         self.camera = self._camera(options.camera)
+        self._qpos, self._qvel = self._batched_state()
         self.option = mujoco.MjvOption()
         self.sites = [s.site for s in aero_sites(playback.model.name, playback.bird)]
         self.site_ids = [mujoco.mj_name2id(self.m, mujoco.mjtObj.mjOBJ_SITE, s) for s in self.sites]
@@ -165,19 +164,25 @@ class Scene:
             raise RenderError(f"--camera {name!r} is not in the MuJoCo model; allowed: {', '.join(CAMERAS)}")
         return cid
 
-    def pose_instant(self, k: int) -> None:
-        """Pose the bird at playback instant ``k`` (qpos, qvel, kinematics)."""
+    def _batched_state(self) -> tuple[np.ndarray, np.ndarray]:
+        """qpos, qvel of every playback instant at once (the driver's vectorised path;
+        ``set_pose`` does the same for one instant)."""
+        from .mujoco.driver import set_root, wing_arrays
+
         pb = self.playback
-        self._set_pose(
-            self.m,
-            self.d,
-            {j: float(v[k]) for j, v in pb.angles.items()},
-            {j: float(v[k]) for j, v in pb.rates.items()},
-            pitch=float(pb.pitch[k]),
-            position_seed=pb.position_seed[k],
-            velocity_seed=pb.velocity_seed[k],
-            pitch_rate=float(pb.pitch_rate[k]),
-        )
+        qpos, qvel, _ = wing_arrays(self.m, pb.angles, pb.rates, samples=pb.frames)
+        set_root(self.m, qpos, qvel, pitch=pb.pitch, position_seed=pb.position_seed, velocity_seed=pb.velocity_seed, pitch_rate=pb.pitch_rate)
+        return qpos, qvel
+
+    def pose_instant(self, k: int) -> None:
+        """Pose the bird at playback instant ``k``: qpos/qvel, then only what drawing
+        needs (kinematics, centre of mass for the tracking cameras, cameras/lights)."""
+        mj = self._mj
+        self.d.qpos[:] = self._qpos[k]
+        self.d.qvel[:] = self._qvel[k]
+        mj.mj_kinematics(self.m, self.d)
+        mj.mj_comPos(self.m, self.d)
+        mj.mj_camlight(self.m, self.d)
 
     def _trails(self) -> np.ndarray:
         """World positions of the CP sites at every playback instant, (instants, sites, 3)."""
