@@ -1,0 +1,124 @@
+"""Rendering speed: frames per second of MuJoCo's offscreen renderer alone and of the
+whole ``birdsim render`` command, at 640x480 and 1280x720, OSMesa beside EGL; seconds
+of animation per wall second; the four-preset ``make demo`` against its 60 s target.
+
+Each measurement runs in a fresh process: the GL back-end is fixed when mujoco is first
+imported, and the command's figure should include its start-up like a user's run.
+Uses tables/m4.npz when present, else a small synthetic m4 table (said so below).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+SIZES = ((640, 480), (1280, 720))
+PRESETS = ("hover", "cruise", "take-off", "landing")
+
+_RENDER_ONLY = r"""
+import json, sys, time
+from birdsim import gl
+gl.select_gl(sys.argv[1])
+from birdsim.manoeuvre import PRESETS
+from birdsim.render import RenderOptions, Scene, play_for_video
+from birdsim.tables import load_table
+w, h, table = int(sys.argv[2]), int(sys.argv[3]), load_table(sys.argv[4])
+opts = RenderOptions(width=w, height=h, fps=30, seconds=3.0, progress=False)
+pb = play_for_video(PRESETS["cruise"], table, opts)
+with Scene(pb, opts) as scene:
+    scene.update(0); scene.renderer.render()  # warm-up (context, shaders)
+    t0 = time.perf_counter()
+    for i in range(scene.frames):
+        scene.update(i)
+        scene.renderer.render()
+    dt = time.perf_counter() - t0
+print(json.dumps({"frames": scene.frames, "seconds": dt}))
+"""
+
+
+def _table_path(tmp: Path) -> tuple[str, str]:
+    committed = ROOT / "tables" / "m4.npz"
+    if committed.exists():
+        return str(committed), "tables/m4.npz"
+    sys.path.insert(0, str(ROOT / "tests"))
+    from test_render import small_table  # the tests' synthetic table (same class, same file format)
+
+    small_table("m4").save(tmp / "m4")
+    return str(tmp / "m4.npz"), "a synthetic 5x3x5 m4 table (tables/m4.npz not built yet)"
+
+
+def _python() -> str:
+    return str(ROOT / ".venv" / "bin" / "python") if (ROOT / ".venv" / "bin" / "python").exists() else sys.executable
+
+
+def render_only(backend: str, w: int, h: int, table: str) -> float:
+    out = subprocess.run([_python(), "-c", _RENDER_ONLY, backend, str(w), str(h), table], capture_output=True, text=True, cwd=ROOT)
+    if out.returncode:
+        raise RuntimeError(out.stderr.strip().splitlines()[-1])
+    r = json.loads(out.stdout.strip().splitlines()[-1])
+    return r["frames"] / r["seconds"]
+
+
+def command(backend: str, w: int, h: int, table: str, tmp: Path, preset: str = "cruise", seconds: str | None = "3") -> tuple[float, float, int]:
+    """(wall seconds, video seconds, frames) of one ``birdsim render`` process."""
+    out = tmp / f"{preset}-{backend}-{w}.mp4"
+    argv = [_python(), "-m", "birdsim.cli", "render", preset, "--table", table, "--out", str(out), "--size", f"{w}x{h}", "--gl", backend, "--force", "--quiet"]
+    if seconds:
+        argv += ["--seconds", seconds]
+    t0 = time.perf_counter()
+    res = subprocess.run(argv, capture_output=True, text=True, cwd=ROOT)
+    wall = time.perf_counter() - t0
+    if res.returncode:
+        raise RuntimeError(res.stderr.strip())
+    from birdsim.render import video_info
+
+    info = video_info(out)
+    return wall, float(info["frames"]) / float(info["fps"]), int(info["frames"])
+
+
+def main() -> None:
+    sys.path.insert(0, str(ROOT))
+    from birdsim.gl import library_available
+
+    backends = [b for b in ("osmesa", "egl") if library_available(b)]
+    if not backends:
+        print("no headless GL (libOSMesa / libEGL): nothing to measure")
+        return
+    with tempfile.TemporaryDirectory() as d:
+        tmp = Path(d)
+        table, what = _table_path(tmp)
+        print(f"table: {what}; clip: cruise, 3 s of video at 30 fps (90 frames), trails and overlay on")
+        rates: dict[tuple[str, int], float] = {}
+        for w, h in SIZES:
+            for b in backends:
+                fps_render = render_only(b, w, h, table)
+                wall, video, frames = command(b, w, h, table, tmp)
+                rates[(b, w)] = fps_render
+                print(
+                    f"{w}x{h} {b:6s}: renderer alone {fps_render:6.1f} frames/s | whole command {frames / wall:5.1f} frames/s "
+                    f"({wall:.2f} s wall incl. start-up) | {video / wall:4.2f} s of animation per wall second"
+                )
+        if len(backends) == 2:
+            for w, _ in SIZES:
+                print(f"ratio renderer alone EGL/OSMesa at {w} wide: {rates[('egl', w)] / rates[('osmesa', w)]:.2f}")
+        b = backends[0]
+        t0 = time.perf_counter()
+        video_total = 0.0
+        for preset in PRESETS:
+            _, video, _ = command(b, 640, 480, table, tmp, preset, seconds=None)
+            video_total += video
+        total = time.perf_counter() - t0
+        print(
+            f"make demo equivalent (4 presets, m4, 640x480, {b}, sequential): {total:.1f} s wall for {video_total:.1f} s of video "
+            f"(target < 60 s: {'met' if total < 60 else 'NOT met'})"
+        )
+
+
+if __name__ == "__main__":
+    main()
