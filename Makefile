@@ -14,9 +14,14 @@ $(STAMP): pyproject.toml
 	@touch $(STAMP)
 
 setup: $(STAMP)
+	@sh scripts/setup_gl.sh
 
+# the four preset manoeuvres with m4 (tables/m4.npz) into renders/ (regenerated: --force)
+DEMO_MANOEUVRES := hover cruise take-off landing
 demo: setup
-	$(BIN)/birdsim examples
+	@for m in $(DEMO_MANOEUVRES); do \
+	  $(BIN)/birdsim render $$m --model m4 --out renders/$$m-m4.mp4 --force || exit $$?; \
+	done
 
 test: setup
 	$(PYTEST) -m "not slow" -n 2 -q
