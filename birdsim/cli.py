@@ -13,8 +13,10 @@ from .errors import BirdsimError
 COMMAND_MODULES = (
     "birdsim.commands.forces",
     "birdsim.commands.examples",
+    "birdsim.commands.tables",
     "birdsim.commands.report",
     "birdsim.commands.render",
+    "birdsim.commands.crosscheck",
 )
 
 
