@@ -35,5 +35,9 @@ test-all: setup
 bench: setup
 	$(BIN)/python benchmarks/run.py
 
+# The dissertation's analysis as figures: report/index.html (a few minutes; QUICK=1 for coarse grids).
+report: setup
+	$(BIN)/birdsim report --out report --force $(if $(QUICK),--quick)
+
 clean:
 	rm -rf $(VENV) .pytest_cache .hypothesis
