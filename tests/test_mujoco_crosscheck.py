@@ -77,3 +77,30 @@ def test_cli_json_and_errors(capsys):
     assert main(["crosscheck", "--model", "m9"]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "model 'm9' is unknown" in err
+
+
+def _param_sets():
+    from hypothesis import strategies as st
+
+    def for_model(name):
+        km = get_model(name)
+        fields = {p.name: st.floats(p.lower, p.upper, allow_nan=False) for p in km.params}
+        return st.tuples(st.just(name), st.fixed_dictionaries(fields), st.floats(0.0, 1.0))
+
+    return st.sampled_from(["base", "m1", "m2", "m3", "m4"]).flatmap(for_model)
+
+
+def test_inverse_matches_for_any_parameter_set():
+    from hypothesis import given, settings
+
+    @settings(max_examples=30, deadline=None, derandomize=True)
+    @given(_param_sets())
+    def check(case):
+        name, params, speed = case
+        r = crosscheck(name, params, speed, samples=16, forward=None)
+        # relative to the force scale of the case, floored at 1e-3 of the hover force
+        # (a parameter set may give a mean force of ~0, where relative errors are noise)
+        scale = max(np.linalg.norm(r.analytic_seed), 1e-3)
+        assert np.linalg.norm(r.inverse_seed - r.analytic_seed) / scale < INVERSE_TOL
+
+    check()
