@@ -162,7 +162,8 @@ def play(
 
     ``perch_seed``: (X, Z) seed-axes position of the body when perched; a manoeuvre
     that starts (ends) on the perch is shifted so that its first (last) keyframe is
-    there.  Other manoeuvres start at X = 0 and keep their heights.
+    there.  Other manoeuvres keep their heights and are centred on X = 0 (over the
+    manoeuvre's duration).
     """
     kin = check_table_model(table, model)
     bird = bird or Bird()
@@ -230,6 +231,9 @@ def play(
         x = x - (x_of(manoeuvre.keyframes[0].t * period) - x_of(0.0)) + x_perch
     if manoeuvre.perch:
         z_up = z_up + dz_shift
+    else:  # no perch: the path is centred on X = 0 (it stays in the middle of the scene)
+        span = x_of(manoeuvre.duration * period) - x_of(0.0)
+        x = x - 0.5 * span
     pos = np.stack([x, np.zeros_like(x), -z_up], axis=1)
     vel = np.stack([v_spline(time), np.zeros_like(x), -dz], axis=1)
 

@@ -141,6 +141,9 @@ class Scene:
         self.m.vis.global_.offheight = max(int(self.m.vis.global_.offheight), options.height)
         self.m.vis.quality.offsamples = 0
         self.m.vis.quality.shadowsize = 0
+        floor = mujoco.mj_name2id(self.m, mujoco.mjtObj.mjOBJ_GEOM, "floor")
+        if floor >= 0 and self.m.geom_type[floor] == mujoco.mjtGeom.mjGEOM_PLANE:
+            self.m.geom_size[floor][:2] = 0.0  # drawn without edges (this copy only renders)
         self.d = mujoco.MjData(self.m)
         self.renderer = mujoco.Renderer(self.m, options.height, options.width, max_geom=4000)
         flags = self.renderer.scene.flags
@@ -224,6 +227,7 @@ class Scene:
     def rgb(self, i: int) -> np.ndarray:
         self.update(i)
         img = self.renderer.render()
+        fill_sky(img)
         if self.options.overlay:
             draw_overlay(img, overlay_lines(self.playback, i * self.sub), self._get_font())
         return img
@@ -281,6 +285,16 @@ def play_for_video(
     bird = bird or getattr(table, "bird", None) or Bird()
     kin = play(manoeuvre, table, t_beats[:1], bird=bird, model=model).model  # validates model and table first
     return play(manoeuvre, table, t_beats, bird=bird, model=model, perch_seed=perch_seed_position(kin.name, bird))
+
+
+SKY_RGB = np.array([150, 190, 230], dtype=np.uint8)
+
+
+def fill_sky(img: np.ndarray) -> None:
+    """Paint the empty background (exactly black: nothing drawn there; the skybox is off
+    for speed) a flat sky colour, in place."""
+    empty = ~img.any(axis=2)
+    img[empty] = SKY_RGB
 
 
 def overlay_lines(pb: Playback, i: int) -> list[tuple[str, tuple[int, int, int]]]:
@@ -403,6 +417,7 @@ def render_manoeuvre(
             scene.update(i)
             img = scene.renderer.render()
             render_s += time.perf_counter() - t0
+            fill_sky(img)
             if options.overlay:
                 draw_overlay(img, overlay_lines(pb, i * scene.sub), scene._get_font())
             writer.send(np.ascontiguousarray(img))
