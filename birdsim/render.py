@@ -467,6 +467,12 @@ def contact_sheet(video: str | Path, out: str | Path, *, count: int = 12, column
     sheet = Image.new("RGB", (columns * thumb_width, rows * th), (0, 0, 0))
     for k, t in enumerate(thumbs):
         sheet.paste(t, ((k % columns) * thumb_width, (k // columns) * th))
+    import io
+
+    from .io import write_atomic
+
+    buf = io.BytesIO()
+    sheet.save(buf, format="PNG")
     out = Path(out)
-    sheet.save(out)
+    write_atomic(out, buf.getvalue())
     return out

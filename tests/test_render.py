@@ -158,9 +158,13 @@ def test_cli_renders_and_refuses_to_overwrite(tmp_path, capsys):
     table = small_table()
     table.save(tmp_path / "t")
     out = tmp_path / "clip.mp4"
-    argv = ["render", "cruise", "--table", str(tmp_path / "t.npz"), "--out", str(out), "--size", "128x96", "--fps", "10", "--seconds", "0.5", "--quiet"]
+    sheet = tmp_path / "clip.png"
+    argv = ["render", "cruise", "--table", str(tmp_path / "t.npz"), "--out", str(out), "--size", "128x96", "--fps", "10", "--seconds", "0.5", "--quiet", "--sheet", str(sheet)]
     assert main(argv) == 0
     assert video_info(out)["frames"] == 5
+    from PIL import Image
+
+    assert Image.open(sheet).size == (4 * 320, 2 * 240)  # 5 frames -> 2 rows of 4 thumbnails, 320 wide
     before = out.stat().st_mtime_ns
     assert main(argv) == 2
     err = capsys.readouterr().err.strip().splitlines()

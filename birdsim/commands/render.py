@@ -31,6 +31,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--no-trails", action="store_true", help="no control-point pathlines")
     p.add_argument("--no-overlay", action="store_true", help="no text overlay")
     p.add_argument("--gl", default="auto", help="auto (OSMesa if installed, else EGL), osmesa or egl")
+    p.add_argument("--sheet", metavar="FILE.png", help="also save a contact sheet (12 frames) of the video")
     p.add_argument("--force", action="store_true", help="overwrite an existing output file")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     add_bird_arguments(p)
@@ -79,6 +80,10 @@ def run(args: argparse.Namespace) -> int:
     if out.suffix.lower() != ".mp4":
         raise BirdsimError(f"--out {str(out)!r} does not end in .mp4; allowed: a .mp4 path")
     check_writable(out, args.force)
+    if args.sheet:
+        if Path(args.sheet).suffix.lower() != ".png":
+            raise BirdsimError(f"--sheet {args.sheet!r} does not end in .png; allowed: a .png path")
+        check_writable(Path(args.sheet), args.force, "--sheet")
     resolve_gl(args.gl)  # a missing GL library -> one line, before any work
     table_path = Path(args.table) if args.table else Path("tables") / f"{model}.npz"
     table = _load_table(table_path, model, explicit=bool(args.table))
@@ -91,21 +96,25 @@ def run(args: argparse.Namespace) -> int:
         f"wrote {result.path} ({result.frames} frames, {result.width}x{result.height} @ {result.fps} fps, "
         f"{result.video_seconds:.1f} s of video in {result.wall_seconds:.1f} s wall, GL {result.backend})"
     )
+    if args.sheet:
+        from ..render import contact_sheet
+
+        print(f"wrote {contact_sheet(result.path, args.sheet)} (contact sheet)")
     return 0
 
 
-def check_writable(out: Path, force: bool) -> None:
+def check_writable(out: Path, force: bool, arg: str = "--out") -> None:
     """Refuse an existing file without --force and a folder we cannot write into
     (probed by creating and removing the temporary sibling the writer will use)."""
     import os
 
     from ..io import check_output, temporary_sibling
 
-    check_output(out, force)
+    check_output(out, force, arg)
     try:
         os.unlink(temporary_sibling(out))
     except OSError as exc:
-        raise BirdsimError(f"--out {str(out)!r} is not writable: {exc.strerror}; allowed: a path in a writable folder") from None
+        raise BirdsimError(f"{arg} {str(out)!r} is not writable: {exc.strerror}; allowed: a path in a writable folder") from None
 
 
 def _load_table(path: Path, model: str, *, explicit: bool):
