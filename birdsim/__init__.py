@@ -5,6 +5,7 @@ from .bird import Bird
 from .cycle import Cycle, MeanForces, evaluate_cycle
 from .errors import BirdsimError, ParameterError, UnknownModelError
 from .kinematics import MODELS, get_model
+from .tables import LookupTable, load_table
 
 __version__ = "0.1.0"
 
@@ -21,4 +22,6 @@ __all__ = [
     "UnknownModelError",
     "evaluate_cycle",
     "get_model",
+    "load_table",
+    "LookupTable",
 ]

@@ -8,13 +8,15 @@ Order of the work (the dissertation's stable order: Fz, then Fx, then V):
    slice at once.  Then Fx lines are swept from +Fx_max down (a backward pass in Fx),
    each line sweeping Fz from the strongest lift demand (most negative Fz) to 0, every
    cell warm-started from the previous cell.  Where the warm start is poor (its optimum
-   is not clearly better than the best screen candidate) the best ``starts`` screen
+   is not better than the best screen candidate by ``screen_gap``: polishing a screen
+   candidate often gains that much) the best ``starts`` screen
    candidates are polished too (multi-start) and the best answer wins; another branch
    replaces the warm-start branch only when it is cheaper by ``switch_margin``, which
    keeps the table smooth where the minima are nearly tied.
 2. *V passes* (one task per Fx line): a forward pass V = 0 -> V_max and a backward
-   pass re-solve every cell from its V-neighbour; a re-solve replaces the cell when it
-   is cheaper.  Optional under-relaxation (eq. 94, ``relax`` < 1) and the distance cost
+   pass re-solve every cell from its V-neighbour (unless the neighbour's parameters are
+   within ``branch_tol`` of the cell's: same branch); a re-solve replaces the cell when
+   it is cheaper.  Optional under-relaxation (eq. 94, ``relax`` < 1) and the distance cost
    (eq. 93, ``CostWeights.distance``) act along this pass.
 3. *Final check*: every cell is re-evaluated at ``n_final`` samples per wingbeat in one
    batched call; achieved forces, cost fractions and the status (``ok``,
@@ -38,6 +40,7 @@ import time
 from collections.abc import Callable, Sequence
 from concurrent.futures import Executor, Future, ProcessPoolExecutor, as_completed
 from dataclasses import asdict, dataclass, field
+from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -48,7 +51,8 @@ from .cost import CostWeights, breakdown_from_forces, forces, other_cost
 from .errors import BirdsimError
 from .io import write_atomic
 from .kinematics import KinematicModel, get_model
-from .optimize import ForceProblem, random_starts, slsqp
+from .lockstep import run_lockstep
+from .optimize import ForceProblem, box_corners, random_starts, slsqp
 from .tables import AXES, STATUS_NAMES, LookupTable
 
 
@@ -118,9 +122,11 @@ class BuildSettings:
     n_final: int = 64  # samples per wingbeat of the final check (the stored values)
     screen: int = 1024  # space-filling candidates per V slice, shared by its cells
     starts: int = 2  # screen candidates polished where the warm start is poor
+    screen_gap: float = 0.02  # multi-start unless the warm start beats the best screen candidate by this
     switch_margin: float = 1e-4  # another branch must beat the warm-start branch by this
     reach_tol: float = 0.01  # |achieved - demanded| force above which a cell is unreachable
     v_passes: bool = True  # forward and backward passes in V after the slices
+    branch_tol: float = 0.05  # rad; a V-neighbour this close is on the same branch (no re-solve)
     relax: float = 1.0  # under-relaxation delta of eq. 94 along V (1 = off)
     maxiter: int = 100
     seed: int = 0
@@ -131,8 +137,8 @@ class BuildSettings:
         for name in ("n_search", "n_final", "screen", "maxiter"):
             if int(getattr(self, name)) < 2:
                 raise BirdsimError(f"{name}={getattr(self, name)!r} is invalid; allowed: an integer >= 2")
-        if self.starts < 0 or self.reach_tol <= 0 or self.switch_margin < 0:
-            raise BirdsimError("starts >= 0, reach_tol > 0 and switch_margin >= 0 are required")
+        if self.starts < 0 or self.reach_tol <= 0 or self.switch_margin < 0 or self.screen_gap < 0:
+            raise BirdsimError("starts >= 0, reach_tol > 0, switch_margin >= 0 and screen_gap >= 0 are required")
 
 
 @dataclass(frozen=True)
@@ -161,17 +167,21 @@ class BuildConfig:
 # ---- one cell -------------------------------------------------------------------------
 
 
-def _problem(cfg: BuildConfig, model: KinematicModel, fx: float, fz: float, v: float, previous: np.ndarray | None) -> ForceProblem:
-    return ForceProblem(model, fx, fz, v, weights=cfg.weights, bird=cfg.bird, previous=previous, n=cfg.settings.n_search)
+def _problem(
+    cfg: BuildConfig, model: KinematicModel, fx: float, fz: float, v: float, previous: np.ndarray | None, evaluator: Any = None
+) -> ForceProblem:
+    return ForceProblem(
+        model, fx, fz, v, weights=cfg.weights, bird=cfg.bird, previous=previous, n=cfg.settings.n_search, evaluator=evaluator
+    )
 
 
 def _screen(cfg: BuildConfig, model: KinematicModel, v: float) -> tuple[np.ndarray, tuple[np.ndarray, ...], np.ndarray]:
-    """Candidates (S x d), their (Fx, Fz, P) and their non-force cost, one batched call."""
-    lo, hi = model.bounds
+    """Candidates (S x d), their (Fx, Fz, P) and their non-force cost, one batched call:
+    scrambled Sobol points, the model's hover and cruise guesses and the box corners."""
     dummy = _problem(cfg, model, 0.0, 0.0, v, None)
     S = random_starts(dummy, cfg.settings.screen, cfg.settings.seed)
     guesses = [list(model.guess(r).values()) for r in ("hover", "cruise")]
-    S = np.vstack([S, guesses, lo, hi])
+    S = np.vstack([S, guesses, box_corners(dummy)])
     F = forces(model, S, v, cfg.bird, cfg.settings.n_search)
     return S, F, other_cost(model, S, v, cfg.weights)
 
@@ -184,6 +194,7 @@ def _solve_cell(
     v: float,
     warm: np.ndarray | None,
     screen: tuple[np.ndarray, tuple[np.ndarray, ...], np.ndarray],
+    evaluator: Any = None,
 ) -> tuple[np.ndarray, float, int]:
     """Warm-started SLSQP, multi-start from the screen where the warm start is poor.
     Returns (x, cost at n_search, cycle evaluations)."""
@@ -191,11 +202,11 @@ def _solve_cell(
     S, (Fx, Fz, P), other = screen
     c = breakdown_from_forces(Fx, Fz, P, fx, fz, cfg.weights, other).total
     order = np.argsort(c)
-    prob = _problem(cfg, model, fx, fz, v, warm if cfg.weights.distance > 0 else None)
+    prob = _problem(cfg, model, fx, fz, v, warm if cfg.weights.distance > 0 else None, evaluator)
     best = None
     if warm is not None:
         best = slsqp(prob, warm, maxiter=st.maxiter)
-        if best.cost < c[order[0]] - st.switch_margin:
+        if best.cost < c[order[0]] - st.screen_gap:
             return best.x, best.cost, prob.evaluations
     for k in order[: max(st.starts, 1)]:
         sol = slsqp(prob, S[k], maxiter=st.maxiter)
@@ -205,11 +216,23 @@ def _solve_cell(
     return best.x, best.cost, prob.evaluations
 
 
+def _resolve_from(
+    cfg: BuildConfig, model: KinematicModel, fx: float, fz: float, v: float, start: np.ndarray, evaluator: Any = None
+) -> tuple[np.ndarray, float, int]:
+    prob = _problem(cfg, model, fx, fz, v, start if cfg.weights.distance > 0 else None, evaluator)
+    sol = slsqp(prob, start, maxiter=cfg.settings.maxiter)
+    return sol.x, sol.cost, prob.evaluations
+
+
 # ---- tasks (top-level functions: picklable for process and cluster executors) -----------
 
 
 def solve_slice(cfg: BuildConfig, iv: int) -> dict[str, np.ndarray]:
-    """Phase 1 for the slice V = grid.V[iv]: sweep Fz (inner) and Fx (outer, downwards)."""
+    """Phase 1 for the slice V = grid.V[iv]: sweep Fz (inner) and Fx (outer, downwards).
+
+    The first column (strongest lift demand) is a chain of warm starts from +Fx_max
+    down; then every Fx line sweeps Fz upwards, the lines in lockstep (their
+    evaluations batched, :mod:`birdsim.lockstep`)."""
     model = get_model(cfg.model)
     g = cfg.grid
     v = g.V[iv]
@@ -218,42 +241,50 @@ def solve_slice(cfg: BuildConfig, iv: int) -> dict[str, np.ndarray]:
     cost = np.zeros((nfx, nfz))
     evals = np.zeros((nfx, nfz), dtype=np.int64)
     screen = _screen(cfg, model, v)
-    line_start: np.ndarray | None = None
-    for i in reversed(range(nfx)):  # Fx from +max down
-        warm = line_start
-        for j in range(nfz):  # Fz from the strongest lift demand up to 0
-            x, c, e = _solve_cell(cfg, model, g.Fx[i], g.Fz[j], v, warm, screen)
+    warm: np.ndarray | None = None
+    for i in reversed(range(nfx)):  # Fx from +max down, Fz at the strongest lift demand
+        X[i, 0], cost[i, 0], evals[i, 0] = _solve_cell(cfg, model, g.Fx[i], g.Fz[0], v, warm, screen)
+        warm = X[i, 0]
+    for j in range(1, nfz):  # Fz upwards to 0, all Fx lines at once
+        jobs = [partial(_solve_cell, cfg, model, g.Fx[i], g.Fz[j], v, X[i, j - 1], screen) for i in range(nfx)]
+        for i, (x, c, e) in enumerate(run_lockstep(model, cfg.bird, cfg.settings.n_search, jobs)):
             X[i, j], cost[i, j], evals[i, j] = x, c, e
-            warm = x
-            if j == 0:
-                line_start = x
     evals[-1, 0] += screen[0].shape[0]  # the screen, booked on the first cell
     return {"params": X, "cost": cost, "evaluations": evals}
 
 
 def solve_v_line(cfg: BuildConfig, ifx: int, X: np.ndarray, cost: np.ndarray) -> dict[str, np.ndarray]:
-    """Phase 2 for the line Fx = grid.Fx[ifx] (arrays nFz x nV): forward and backward
-    passes in V, each cell re-solved from its V-neighbour and kept if cheaper."""
+    """Phase 2 for the line Fx = grid.Fx[ifx] (arrays nFz x nV): a forward and a
+    backward pass in V, each cell re-solved from its V-neighbour (all Fz of one V in
+    lockstep) and kept if cheaper.  With under-relaxation (relax < 1) the forward pass
+    stores ``relax x* + (1 - relax) x_prev`` (eq. 94) and the backward pass, which
+    would undo that smoothing, is skipped."""
     model = get_model(cfg.model)
     g, st = cfg.grid, cfg.settings
     X, cost = X.copy(), cost.copy()
     evals = np.zeros(cost.shape, dtype=np.int64)
-    nv = len(g.V)
-    for order, step in ((range(1, nv), -1), (range(nv - 2, -1, -1), +1)):
+    nv, nfz = len(g.V), len(g.Fz)
+    plain = st.relax == 1.0 and cfg.weights.distance == 0
+    passes = [(range(1, nv), -1)] + ([(range(nv - 2, -1, -1), +1)] if st.relax == 1.0 else [])
+    for order, step in passes:
         for k in order:
-            for j in range(len(g.Fz)):
+            # a V-neighbour this close is on the same branch: a re-solve would land here again
+            todo = [j for j in range(nfz) if not (plain and np.max(np.abs(X[j, k + step] - X[j, k])) < st.branch_tol)]
+            jobs = [partial(_resolve_from, cfg, model, g.Fx[ifx], g.Fz[j], g.V[k], X[j, k + step].copy()) for j in todo]
+            for j, (x_new, c_new, e) in zip(todo, run_lockstep(model, cfg.bird, st.n_search, jobs)):
                 prev = X[j, k + step]
-                prob = _problem(cfg, model, g.Fx[ifx], g.Fz[j], g.V[k], prev if cfg.weights.distance > 0 else None)
-                current = float(prob.cost(X[j, k][None])[0]) if cfg.weights.distance > 0 else cost[j, k]
-                sol = slsqp(prob, prev, maxiter=st.maxiter)
-                x_new, c_new = sol.x, sol.cost
-                if st.relax < 1.0 and step == -1:
-                    x_new = st.relax * x_new + (1.0 - st.relax) * prev
-                    c_new = float(prob.cost(x_new[None])[0])
+                evals[j, k] += e
+                if not plain:
+                    prob = _problem(cfg, model, g.Fx[ifx], g.Fz[j], g.V[k], prev if cfg.weights.distance > 0 else None)
+                    if st.relax < 1.0:
+                        x_new = st.relax * x_new + (1.0 - st.relax) * prev
+                        X[j, k], cost[j, k] = x_new, float(prob.cost(x_new[None])[0])
+                        continue
+                    current = float(prob.cost(X[j, k][None])[0])
+                else:
+                    current = cost[j, k]
+                if c_new < current - 1e-12:
                     X[j, k], cost[j, k] = x_new, c_new
-                elif c_new < current - 1e-12:
-                    X[j, k], cost[j, k] = x_new, c_new
-                evals[j, k] += prob.evaluations
     return {"params": X, "cost": cost, "evaluations": evals}
 
 

@@ -113,6 +113,7 @@ class ForceProblem(Problem):
         bird: Bird | None = None,
         previous: np.ndarray | None = None,
         n: int = 32,
+        evaluator: Callable[[np.ndarray, float], tuple[np.ndarray, np.ndarray, np.ndarray]] | None = None,
     ) -> None:
         self.model = model if isinstance(model, KinematicModel) else get_model(model)
         super().__init__(*self.model.bounds)
@@ -122,21 +123,45 @@ class ForceProblem(Problem):
         self.bird = bird or Bird()
         self.previous = None if previous is None else np.asarray(previous, dtype=float)
         self.n = n
+        self.evaluator = evaluator  # (X, speed) -> (Fx, Fz, P); e.g. a lockstep batcher
+
+    def _forces(self, X: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        if self.evaluator is not None:
+            return self.evaluator(X, self.speed)
+        return forces(self.model, X, self.speed, self.bird, self.n)
 
     def _parts(self, X: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        Fx, Fz, P = forces(self.model, X, self.speed, self.bird, self.n)
+        Fx, Fz, P = self._forces(X)
         R = np.stack([Fx - self.Fx_demand, Fz - self.Fz_demand, P], axis=-1)
         return R, other_cost(self.model, X, self.speed, self.cost_weights, self.previous)
 
     def achieved(self, x: np.ndarray) -> tuple[float, float, float]:
-        Fx, Fz, P = forces(self.model, np.atleast_2d(x), self.speed, self.bird, self.n)
+        Fx, Fz, P = self._forces(np.atleast_2d(x))
         return float(Fx[0]), float(Fz[0]), float(P[0])
 
+    def achieved_from(self, r: np.ndarray) -> tuple[float, float, float]:
+        """(Fx, Fz, P) from the residuals of one point."""
+        return float(r[0] + self.Fx_demand), float(r[1] + self.Fz_demand), float(r[2])
 
-def _finish(problem: Problem, x: np.ndarray, method: str, converged: bool, message: str, evals0: int, nit: int) -> Solution:
+
+def _finish(
+    problem: Problem,
+    x: np.ndarray,
+    method: str,
+    converged: bool,
+    message: str,
+    evals0: int,
+    nit: int,
+    parts: tuple[np.ndarray, float] | None = None,
+) -> Solution:
+    """The solution at ``x`` (clipped to the box); ``parts`` = (R, h) at x if known."""
     x = np.clip(np.asarray(x, dtype=float), problem.lower, problem.upper)
-    cost = float(problem.cost(x[None])[0])
-    Fx, Fz, P = problem.achieved(x)
+    if parts is None:
+        R, h = problem.parts(x[None])
+        parts = (R[0], float(h[0]))
+    r, h0 = parts
+    cost = float(np.abs(r) @ problem.weights + h0)
+    Fx, Fz, P = problem.achieved_from(r) if isinstance(problem, ForceProblem) else (float("nan"),) * 3
     return Solution(x, cost, method, bool(converged), str(message), problem.evaluations - evals0, int(nit), Fx, Fz, P)
 
 
@@ -152,9 +177,9 @@ def slsqp(problem: Problem, x0: Sequence[float], *, maxiter: int = 100, ftol: fl
     cache: dict[bytes, tuple[np.ndarray, np.ndarray, float, np.ndarray]] = {}
 
     def parts_grad(z: np.ndarray) -> tuple[np.ndarray, np.ndarray, float, np.ndarray]:
-        key = z[:d].tobytes()
+        x = np.clip(z[:d], lo, hi)
+        key = x.tobytes()
         if key not in cache:
-            x = np.clip(z[:d], lo, hi)
             R, h = problem.parts(np.vstack([x[None], x + steps, x - steps]))
             jr = (R[1 : d + 1] - R[d + 1 :]).T / (2 * FD_STEP)  # K x d
             gh = (h[1 : d + 1] - h[d + 1 :]) / (2 * FD_STEP)
@@ -184,7 +209,10 @@ def slsqp(problem: Problem, x0: Sequence[float], *, maxiter: int = 100, ftol: fl
     res = so.minimize(
         fun, z0, jac=jac, method="SLSQP", bounds=bounds, constraints=constraints, options={"maxiter": maxiter, "ftol": ftol}
     )
-    return _finish(problem, res.x[:d], "slsqp", res.success, res.message, evals0, res.nit)
+    x = np.clip(res.x[:d], lo, hi)
+    known = cache.get(x.tobytes())
+    parts = (known[0], known[2]) if known is not None else None
+    return _finish(problem, x, "slsqp", res.success, res.message, evals0, res.nit, parts)
 
 
 def multistart(problem: Problem, starts: np.ndarray, **kwargs: object) -> Solution:
@@ -205,8 +233,17 @@ def _replace_evals(sol: Solution, evaluations: int, method: str) -> Solution:
 
 def random_starts(problem: Problem, count: int, seed: int | None = 0) -> np.ndarray:
     """``count`` scrambled-Sobol points in the box (a space-filling multi-start set)."""
-    u = qmc.Sobol(problem.dim, scramble=True, seed=seed).random(count)
+    m = max(0, int(np.ceil(np.log2(max(count, 1)))))
+    u = qmc.Sobol(problem.dim, scramble=True, seed=seed).random_base2(m)[:count]
     return problem.lower + u * (problem.upper - problem.lower)
+
+
+def box_corners(problem: Problem) -> np.ndarray:
+    """The 2^d corners of the box: optimal wingbeats often sit on bounds (flap and twist
+    at their maxima in hover, wrist idle), which random points never hit exactly."""
+    d = problem.dim
+    bits = (np.arange(2**d)[:, None] >> np.arange(d)) & 1
+    return np.where(bits == 1, problem.upper, problem.lower)
 
 
 def complete_search(problem: Problem, nodes: int = 12, *, chunk: int = 50_000) -> Solution:
