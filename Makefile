@@ -35,6 +35,13 @@ test-all: setup
 bench: setup
 	$(BIN)/python benchmarks/run.py
 
+# Rebuild the shipped lookup tables tables/<model>.npz + .json (11^3 grid; a few minutes in all).
+TABLE_MODELS := base m1 m2 m3 m4
+tables: setup
+	@for m in $(TABLE_MODELS); do \
+	  $(BIN)/birdsim tables build --model $$m --out tables/$$m.npz --force || exit $$?; \
+	done
+
 # The dissertation's analysis as figures: report/index.html (a few minutes; QUICK=1 for coarse grids).
 report: setup
 	$(BIN)/birdsim report --out report --force $(if $(QUICK),--quick)
