@@ -367,11 +367,18 @@ def _run(
             tick(cells_per_task)
         else:
             futures[executor.submit(fn, *args)] = name
-    for fut in as_completed(futures):
-        name = futures[fut]
-        done[name] = fut.result()
-        checkpoints.save(name, done[name])
-        tick(cells_per_task)
+    try:
+        for fut in as_completed(futures):
+            name = futures[fut]
+            done[name] = fut.result()
+            checkpoints.save(name, done[name])
+            tick(cells_per_task)
+    except BaseException:
+        # an interruption or a failed task: keep every other task that has finished
+        for fut, name in futures.items():
+            if name not in done and fut.done() and not fut.cancelled() and fut.exception() is None:
+                checkpoints.save(name, fut.result())
+        raise
     return done
 
 
