@@ -138,8 +138,8 @@ PRESETS: dict[str, Manoeuvre] = {
             "take-off",
             (
                 _kf(0, 0.5, -0.5, 0.0, PERCH_HEIGHT, "take-off"),
-                _kf(1, 0.5, -0.5, 0.0, PERCH_HEIGHT + 0.2),
-                _kf(4, 0.5, -0.5, 0.4, PERCH_HEIGHT + 1.6, "climb-out"),
+                _kf(1, 0.5, -0.5, 0.0, PERCH_HEIGHT + 0.5),  # a hop clear of the perch
+                _kf(4, 0.5, -0.5, 0.4, PERCH_HEIGHT + 1.8, "climb-out"),
                 _kf(7, 0.2, -0.35, 0.75, CRUISE_HEIGHT - 0.3),
                 _kf(9, 0.0, -0.2, 0.9, CRUISE_HEIGHT, "cruise"),
             ),

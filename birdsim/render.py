@@ -309,7 +309,7 @@ def overlay_lines(pb: Playback, i: int) -> list[tuple[str, tuple[int, int, int]]
     half = (len(names) + 1) // 2
     for chunk in (names[:half], names[half:]):
         if chunk:
-            lines.append(("   ".join(f"{n} {pb.params[n][i]:.2f}" for n in chunk), white))
+            lines.append(("   ".join(f"{n} {round(float(pb.params[n][i]), 2) + 0.0:.2f}" for n in chunk), white))
     if pb.clipped[i]:
         req = {k: float(v[i]) for k, v in pb.demand.items()}
         lines.append((f"clipped to table: asked V={req['V']:.2f} Fx={req['Fx']:+.2f} Fz={req['Fz']:+.2f}", amber))
@@ -370,6 +370,9 @@ def mp4_writer(path: Path, width: int, height: int, fps: int, *, crf: int = 23, 
             raise
         finally:
             if ok:
+                umask = os.umask(0)
+                os.umask(umask)
+                os.chmod(tmp, 0o666 & ~umask)  # mkstemp made it 0600; a video is for sharing
                 os.replace(tmp, path)
             elif tmp.exists():
                 tmp.unlink()
