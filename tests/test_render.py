@@ -237,3 +237,12 @@ def test_parse_size():
     for bad in ("0x0", "17x16", "640", "8192x16"):
         with pytest.raises(BirdsimError):
             parse_size(bad)
+
+
+@pytest.mark.skipif(not gl.library_available("osmesa"), reason="OSMesa not installed: the script would install it")
+def test_setup_gl_is_quiet_and_idempotent_when_osmesa_is_installed():
+    import subprocess
+
+    script = Path(__file__).resolve().parents[1] / "scripts" / "setup_gl.sh"
+    res = subprocess.run(["sh", str(script)], capture_output=True, text=True, timeout=60)
+    assert res.returncode == 0 and res.stdout == "" and res.stderr == ""
