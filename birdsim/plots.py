@@ -66,8 +66,9 @@ def wrap(title: str, width: int = 100) -> str:
 def _footnote(fig: "Figure", text: str) -> None:
     """A grey line under the axes; the constrained layout keeps a strip free for it."""
     height = fig.get_figheight()
-    strip = 0.3 / height  # 0.3 inch
-    fig.text(0.5, 0.004, wrap(text, 160), ha="center", va="bottom", fontsize=8, color="0.3")
+    lines = len(wrap(text, int(fig.get_figwidth() * 15)).splitlines())
+    strip = (0.1 + 0.15 * lines) / height  # inches kept free under the axes
+    fig.text(0.5, 0.004, wrap(text, int(fig.get_figwidth() * 15)), ha="center", va="bottom", fontsize=8, color="0.3")
     fig.get_layout_engine().set(rect=(0.0, strip, 1.0, 1.0 - strip))
 
 
@@ -315,7 +316,7 @@ def lines(
             ax.legend(fontsize=8)
     for ax in list(axes.flat)[n:]:
         ax.set_visible(False)
-    fig.suptitle(wrap(title))
+    fig.suptitle(wrap(title, int(fig.get_figwidth() * 11)))
     if footnote:
         _footnote(fig, footnote)
     return fig
@@ -356,18 +357,16 @@ def table_slices(
             bad = ~ok[:, :, i]
             if bad.any():
                 gx, gz = np.meshgrid(fx, fz, indexing="ij")
-                ax.plot(gx[bad], gz[bad], "wx", ms=5, mew=1.2, label="demand missed")
+                ax.plot(gx[bad], gz[bad], "wx", ms=5, mew=1.2)
             ax.set_title(f"{name}, V = {v:g}", fontsize=9)
             if i == nv - 1:
-                ax.set_xlabel(f"Fx demand ({ND})")
+                ax.set_xlabel("Fx demand")
             if j == 0:
-                ax.set_ylabel(f"Fz demand ({ND}, < 0 up)")
+                ax.set_ylabel("Fz demand (< 0 up)")
         fig.colorbar(mesh, ax=list(axes[:, j]), location="bottom", label=f"{name} (rad)", shrink=0.9, ticks=plt.MaxNLocator(4))
-    handles = [plt.Line2D([], [], color="k", marker="x", ls="", label="cell where the optimum misses the demand by > reach tolerance")]
-    fig.legend(handles=handles, loc="upper right", fontsize=8)
     fig.suptitle(wrap(title, 110))
-    if footnote:
-        _footnote(fig, footnote)
+    note = f"x: cell where the optimum misses the demand by more than the reach tolerance; forces {ND}"
+    _footnote(fig, note + ("; " + footnote if footnote else ""))
     return fig
 
 
