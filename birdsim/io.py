@@ -19,15 +19,24 @@ def check_output(path: Path, force: bool, arg: str = "--out") -> Path:
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
-        raise BirdsimError(f"{arg} {str(path)!r} cannot be created: {exc.strerror}") from None
+        why = "a parent is not a folder" if isinstance(exc, (FileExistsError, NotADirectoryError)) else exc.strerror
+        raise BirdsimError(f"{arg} {str(path)!r} cannot be created: {why}") from None
     if not os.access(path.parent, os.W_OK):
         raise BirdsimError(f"{arg} {str(path)!r} is not writable; allowed: a path in a writable folder")
     return path
 
 
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
 def temporary_sibling(path: Path) -> Path:
-    """A fresh temporary file name in the same folder as ``path`` (same file system)."""
+    """A fresh temporary file name in the same folder as ``path`` (same file system),
+    with the permissions an ordinary new file gets (mkstemp's are 0600)."""
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".partial" + path.suffix, dir=path.parent)
+    os.fchmod(fd, 0o666 & ~_umask())
     os.close(fd)
     return Path(tmp)
 

@@ -111,7 +111,9 @@ class AeroCallback:
         xmat = d.site_xmat[self.torso_site].reshape(3, 3)
         loc = xmat.T @ u
         attack = np.arctan2(-loc[2], loc[0])  # seed body axes: z down
-        drag = body_drag_x(speed, attack, self.bird.rho, self.bird.body_drag_area)
+        # the seed's Cd = sin(theta) is for theta in [0, pi/2]; |sin| keeps it a drag
+        # (never a thrust) when the free body meets the air nose-down or backwards
+        drag = body_drag_x(speed, abs(attack), self.bird.rho, self.bird.body_drag_area)
         mujoco.mj_applyFT(m, d, drag * u / speed, np.zeros(3), d.site_xpos[self.torso_site], self.torso_body, d.qfrc_passive)
 
 
