@@ -87,7 +87,13 @@ def run_build(args: argparse.Namespace) -> int:
 
         shutil.rmtree(ckpt)
     cfg = BuildConfig(model.name, grid, bird, weights, settings)
-    table = build_table(cfg, jobs=args.jobs, checkpoint_dir=ckpt, progress=not args.quiet)
+    try:
+        table = build_table(cfg, jobs=args.jobs, checkpoint_dir=ckpt, progress=not args.quiet)
+    except KeyboardInterrupt:
+        import sys
+
+        print(f"birdsim tables: finished parts kept in {ckpt}; run the same command again to resume", file=sys.stderr)
+        raise
     table.save(npz_path, force=True)  # existence was checked before the build
     m = table.meta
     print(
@@ -123,11 +129,25 @@ def table_summary(path: str) -> dict:
             for idx in unreachable[:: max(1, len(unreachable) // 5)][:5]
         ],
         "max_force_error_ok": float(t.force_error[status == "ok"].max()) if np.any(status == "ok") else None,
+        "smoothness": smoothness(t),
         "cost": {"min": float(t.cost.min()), "median": float(np.median(t.cost)), "max": float(t.cost.max())},
         "mean_cost_fractions": dict(zip(FRACTION_NAMES, map(float, frac))),
         "evaluations": int(t.evaluations.sum()),
         "provenance": {k: m.get(k) for k in ("package_version", "git_commit", "built_at", "build_seconds", "cells_per_second", "cost_weights", "solver")},
     }
+
+
+def smoothness(t) -> dict[str, dict[str, float]]:
+    """Parameter steps (rad) between neighbouring ok cells along each axis: the 95th
+    percentile and the largest (a jump flags a branch switch or a flat optimum)."""
+    ok = t.status == "ok"
+    out = {}
+    for k, a in enumerate(AXES):
+        step = np.abs(np.diff(t.params, axis=k)).max(axis=-1)
+        both = np.logical_and(np.delete(ok, -1, axis=k), np.delete(ok, 0, axis=k))
+        vals = step[both]
+        out[a] = {"p95": float(np.percentile(vals, 95)) if vals.size else 0.0, "max": float(vals.max()) if vals.size else 0.0}
+    return out
 
 
 def run_info(args: argparse.Namespace) -> int:
@@ -147,6 +167,8 @@ def run_info(args: argparse.Namespace) -> int:
         )
     if s["max_force_error_ok"] is not None:
         print(f"largest force error of an ok cell: {s['max_force_error_ok']:.2e}")
+    print("parameter steps between neighbouring ok cells (rad): " + ", ".join(
+        f"along {a} p95 {v['p95']:.3f} max {v['max']:.3f}" for a, v in s["smoothness"].items()))
     c = s["cost"]
     print(f"cost: min {c['min']:.4f}, median {c['median']:.4f}, max {c['max']:.4f}; mean fractions " +
           ", ".join(f"{k} {100 * v:.0f} %" for k, v in s["mean_cost_fractions"].items()))
