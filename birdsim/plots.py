@@ -114,7 +114,7 @@ def histories(cycle: "Cycle", title: str) -> "Figure":
         ax.set_ylabel(labels[key])
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8)
         ax.grid(alpha=0.3)
-    axes[-1].set_xlabel("phase t/T (non-dimensional; shaded: wing moving down)")
+    axes[-1].set_xlabel("phase t/T (non-dimensional; shaded: downstroke, flap angle increasing)")
     axes[-1].set_xlim(0, 1)
     fig.suptitle(wrap(title))
     _footnote(fig, FORCE_NOTE)
@@ -322,18 +322,21 @@ def lines(
     return fig
 
 
-def fractions(speeds: np.ndarray, fractions_: np.ndarray, names: Sequence[str], title: str, footnote: str | None = None) -> "Figure":
-    """Fig 36: cost fractions (percent of the total) stacked over speed."""
+def fractions(speeds: np.ndarray, panels: Sequence[tuple[str, np.ndarray]], names: Sequence[str], title: str, footnote: str | None = None) -> "Figure":
+    """Fig 36: cost fractions (percent of the total) stacked over speed, one panel per
+    ``(label, fractions len(speeds) x len(names))``."""
     plt = pyplot()
-    fig, ax = plt.subplots(figsize=(8, 4.8), layout="constrained")
-    ax.stackplot(speeds, 100 * np.asarray(fractions_).T, labels=[n.replace("_", " ") for n in names], alpha=0.85)
-    ax.set_xlabel(f"flight speed V ({ND})")
-    ax.set_ylabel("share of the total cost (%)")
-    ax.set_ylim(0, 100)
-    ax.set_xlim(speeds.min(), speeds.max())
-    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8)
-    ax.grid(alpha=0.3)
-    ax.set_title(wrap(title, 80))
+    fig, axes = plt.subplots(1, len(panels), figsize=(5.5 * len(panels) + 1.5, 4.8), layout="constrained", squeeze=False)
+    for ax, (label, fr) in zip(axes[0], panels):
+        ax.stackplot(speeds, 100 * np.asarray(fr).T, labels=[n.replace("_", " ") for n in names], alpha=0.85)
+        ax.set_xlabel(f"flight speed V ({ND})")
+        ax.set_ylabel("share of the total cost (%)")
+        ax.set_ylim(0, 100)
+        ax.set_xlim(speeds.min(), speeds.max())
+        ax.grid(alpha=0.3)
+        ax.set_title(label, fontsize=10)
+    axes[0, -1].legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8)
+    fig.suptitle(wrap(title, int(fig.get_figwidth() * 11)))
     if footnote:
         _footnote(fig, footnote)
     return fig
