@@ -200,21 +200,22 @@ def maps(
 
 def wrist_optimum(opt: "WristOptimum", title: str) -> "Figure":
     """Fig 27: the best lag and bias (and the upward force there) over the two amplitudes."""
+    searched = (0.0, math.pi / 2)  # colour scale = the searched range, so a constant map looks constant
     panels = [
-        ("lag of largest upward force, Delta* (rad)", opt.lag_star),
-        ("bias of largest upward force, Psi* (rad)", opt.bias_star),
-        (f"largest upward force -Fz ({ND})", opt.upward_max),
+        ("lag of largest upward force, Delta* (rad)", opt.lag_star, searched),
+        ("bias of largest upward force, Psi* (rad)", opt.bias_star, searched),
+        (f"largest upward force -Fz ({ND})", opt.upward_max, (None, None)),
     ]
     plt = pyplot()
     fig, axes = plt.subplots(1, 3, figsize=(15, 4.8), layout="constrained")
-    for ax, (label, v) in zip(axes, panels):
-        mesh = ax.pcolormesh(opt.flap_amp, opt.wrist_amp, v.T, shading="nearest", cmap="viridis")
+    for ax, (label, v, (lo, hi)) in zip(axes, panels):
+        mesh = ax.pcolormesh(opt.flap_amp, opt.wrist_amp, v.T, shading="nearest", cmap="viridis", vmin=lo, vmax=hi)
         fig.colorbar(mesh, ax=ax, label=label)
         ax.set_xlabel("shoulder flap amplitude Phi_f (rad)")
         ax.set_ylabel("wrist flap amplitude Phi_w (rad)")
         ax.set_title(label, fontsize=10)
     fig.suptitle(wrap(title))
-    _footnote(fig, FORCE_NOTE)
+    _footnote(fig, "lag and bias searched on [0, pi/2] (colour scale = that range); " + FORCE_NOTE)
     return fig
 
 
