@@ -424,7 +424,7 @@ def fig_landscapes(ctx: Context) -> list[Entry]:
     e1 = Entry(
         name1,
         "Cost over flap and twist amplitude at V = 0.2, 0.7, 3 (Fig 33)",
-        "The project cost over (Phi_f, Theta_f) for the base model, body pitch chosen best in each cell; star: minimum.",
+        "The project cost over (Phi_f, Theta_f) for the base model, body pitch chosen best on its grid in each cell; star: the grid minimum (the valley is narrow: a finer grid or an optimiser finds lower points).",
         "Fig 33: a distinct valley at V = 0.2, an almost flat low-cost region at V = 0.7 (minimum near Phi_f = 0.98, Theta_f = 0.28), a clear valley again at V = 3.",
         (
             Claim(
