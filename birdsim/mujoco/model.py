@@ -214,30 +214,28 @@ def _add_bird(spec: mujoco.MjSpec, model_name: str, bird: Bird, body_pitch: floa
 
     panel_cls = spec.find_default("panel")
     cp_cls = spec.find_default("cp")
-    thickness_arm = PANEL_THICKNESS * arm_chord
-    thickness_hand = PANEL_THICKNESS * hand_chord
+
+    def panel(body, name: str, span: float, chord: float, sign: float) -> None:
+        """Box geom of span x chord along the body's y axis, with its mass and inertia."""
+        size = np.array([chord / 2, span / 2, PANEL_THICKNESS * chord / 2])
+        body.explicitinertial = True
+        body.mass = wing_mass
+        body.ipos = [0.0, sign * span / 2, 0.0]
+        body.inertia = _box_inertia(wing_mass, size)
+        body.add_geom(name=name, default=panel_cls, size=size, pos=[0.0, sign * span / 2, 0.0])
+
     for side in SIDES:
         sg = span_sign(side)
         arm = torso.add_body(name=f"{side}_arm")
         arm.add_joint(name=f"{side}_heave", type=mujoco.mjtJoint.mjJNT_SLIDE, axis=slide_axis(side, "z"))
         arm.add_joint(name=f"{side}_shoulder", type=mujoco.mjtJoint.mjJNT_BALL)
-        size = np.array([arm_chord / 2, arm_span / 2, thickness_arm / 2])
-        arm.explicitinertial = True
-        arm.mass = wing_mass
-        arm.ipos = [0.0, sg * arm_span / 2, 0.0]
-        arm.inertia = _box_inertia(wing_mass, size)
-        arm.add_geom(name=f"{side}_arm_panel", default=panel_cls, size=size, pos=[0.0, sg * arm_span / 2, 0.0])
+        panel(arm, f"{side}_arm_panel", arm_span, arm_chord, sg)
         arm.add_site(name=f"{side}_cp_wing", default=cp_cls, pos=[0.0, sg * bird.cp_span_fraction * s, 0.0])
         arm.add_site(name=f"{side}_cp_arm", default=cp_cls, pos=[0.0, sg * bird.cp_span_fraction * arm_span, 0.0])
         hand = arm.add_body(name=f"{side}_hand", pos=[0.0, sg * arm_span, 0.0])
         hand.add_joint(name=f"{side}_wrist_flap", type=mujoco.mjtJoint.mjJNT_HINGE, axis=hinge_axis(side, "x"))
         hand.add_joint(name=f"{side}_wrist_twist", type=mujoco.mjtJoint.mjJNT_HINGE, axis=hinge_axis(side, "y"))
-        size = np.array([hand_chord / 2, hand_span / 2, thickness_hand / 2])
-        hand.explicitinertial = True
-        hand.mass = wing_mass
-        hand.ipos = [0.0, sg * hand_span / 2, 0.0]
-        hand.inertia = _box_inertia(wing_mass, size)
-        hand.add_geom(name=f"{side}_hand_panel", default=panel_cls, size=size, pos=[0.0, sg * hand_span / 2, 0.0])
+        panel(hand, f"{side}_hand_panel", hand_span, hand_chord, sg)
         hand.add_site(name=f"{side}_cp_hand", default=cp_cls, pos=[0.0, sg * bird.cp_span_fraction * hand_span, 0.0])
 
     # hold the torso to the world where it was built (used by the cross-check)
