@@ -12,7 +12,9 @@ Order of the work (the dissertation's stable order: Fz, then Fx, then V):
    candidate often gains that much) the best ``starts`` screen
    candidates are polished too (multi-start) and the best answer wins; another branch
    replaces the warm-start branch only when it is cheaper by ``switch_margin``, which
-   keeps the table smooth where the minima are nearly tied.
+   keeps the table smooth where the minima are nearly tied.  A backward pass in Fz
+   (0 -> strongest lift) then re-solves every cell from those of its Fx/Fz neighbours
+   that sit on another branch (farther than ``branch_tol``) and keeps what is cheaper.
 2. *V passes* (one task per Fx line): a forward pass V = 0 -> V_max and a backward
    pass re-solve every cell from its V-neighbour (unless the neighbour's parameters are
    within ``branch_tol`` of the cell's: same branch); a re-solve replaces the cell when
@@ -126,7 +128,7 @@ class BuildSettings:
     switch_margin: float = 1e-4  # another branch must beat the warm-start branch by this
     reach_tol: float = 0.01  # |achieved - demanded| force above which a cell is unreachable
     v_passes: bool = True  # forward and backward passes in V after the slices
-    branch_tol: float = 0.05  # rad; a V-neighbour this close is on the same branch (no re-solve)
+    branch_tol: float = 0.25  # rad; a neighbour this close is on the same branch (no re-solve)
     relax: float = 1.0  # under-relaxation delta of eq. 94 along V (1 = off)
     maxiter: int = 100
     seed: int = 0
@@ -224,6 +226,40 @@ def _resolve_from(
     return sol.x, sol.cost, prob.evaluations
 
 
+#: A wrist amplitude below this (rad) counts as an idle wrist.
+IDLE_WRIST = 1e-6
+
+
+def canonical_params(model: KinematicModel, X: np.ndarray) -> np.ndarray:
+    """Parameters with flat directions pinned: when the wrist is idle (amplitude below
+    :data:`IDLE_WRIST`) its phase lag has no effect at all, so it is set to the model's
+    lower bound 0 (in phase with the shoulder, what most active wrists choose) and the
+    amplitude to 0.  The cost is unchanged; the table gets smoother
+    and the V passes can recognise the same branch."""
+    names = model.param_names
+    if "wrist_amp" not in names:
+        return X
+    X = np.array(X, dtype=float, copy=True)
+    amp, lag = names.index("wrist_amp"), names.index("wrist_lag")
+    idle = X[..., amp] < IDLE_WRIST
+    X[..., amp] = np.where(idle, 0.0, X[..., amp])
+    X[..., lag] = np.where(idle, model.spec("wrist_lag").lower, X[..., lag])
+    return X
+
+
+def _improve_cell(
+    cfg: BuildConfig, model: KinematicModel, fx: float, fz: float, v: float, starts: list[np.ndarray], evaluator: Any = None
+) -> tuple[np.ndarray | None, float, int]:
+    """The best SLSQP answer from ``starts`` (None if there are none)."""
+    prob = _problem(cfg, model, fx, fz, v, None, evaluator)
+    best = None
+    for x0 in starts:
+        sol = slsqp(prob, x0, maxiter=cfg.settings.maxiter)
+        if best is None or sol.cost < best.cost:
+            best = sol
+    return (None, np.inf, prob.evaluations) if best is None else (best.x, best.cost, prob.evaluations)
+
+
 # ---- tasks (top-level functions: picklable for process and cluster executors) -----------
 
 
@@ -232,7 +268,8 @@ def solve_slice(cfg: BuildConfig, iv: int) -> dict[str, np.ndarray]:
 
     The first column (strongest lift demand) is a chain of warm starts from +Fx_max
     down; then every Fx line sweeps Fz upwards, the lines in lockstep (their
-    evaluations batched, :mod:`birdsim.lockstep`)."""
+    evaluations batched, :mod:`birdsim.lockstep`); then a backward pass in Fz re-solves
+    each cell from its Fx/Fz neighbours on other branches."""
     model = get_model(cfg.model)
     g = cfg.grid
     v = g.V[iv]
@@ -249,6 +286,23 @@ def solve_slice(cfg: BuildConfig, iv: int) -> dict[str, np.ndarray]:
         jobs = [partial(_solve_cell, cfg, model, g.Fx[i], g.Fz[j], v, X[i, j - 1], screen) for i in range(nfx)]
         for i, (x, c, e) in enumerate(run_lockstep(model, cfg.bird, cfg.settings.n_search, jobs)):
             X[i, j], cost[i, j], evals[i, j] = x, c, e
+    X = canonical_params(model, X)
+    if cfg.weights.distance == 0:
+        # backward pass in Fz (0 -> strongest lift): each cell re-solved from those of its
+        # Fx/Fz neighbours that sit on another branch; kept if cheaper
+        for j in reversed(range(nfz)):
+            jobs = []
+            for i in range(nfx):
+                near = [(i, j + 1), (i - 1, j), (i + 1, j)]
+                starts = [
+                    X[a, b].copy() for a, b in near
+                    if 0 <= a < nfx and b < nfz and np.max(np.abs(X[a, b] - X[i, j])) >= cfg.settings.branch_tol
+                ]
+                jobs.append(partial(_improve_cell, cfg, model, g.Fx[i], g.Fz[j], v, starts))
+            for i, (x, c, e) in enumerate(run_lockstep(model, cfg.bird, cfg.settings.n_search, jobs)):
+                evals[i, j] += e
+                if x is not None and c < cost[i, j] - 1e-12:
+                    X[i, j], cost[i, j] = canonical_params(model, x), c
     evals[-1, 0] += screen[0].shape[0]  # the screen, booked on the first cell
     return {"params": X, "cost": cost, "evaluations": evals}
 
@@ -284,7 +338,7 @@ def solve_v_line(cfg: BuildConfig, ifx: int, X: np.ndarray, cost: np.ndarray) ->
                 else:
                     current = cost[j, k]
                 if c_new < current - 1e-12:
-                    X[j, k], cost[j, k] = x_new, c_new
+                    X[j, k], cost[j, k] = canonical_params(model, x_new), c_new
     return {"params": X, "cost": cost, "evaluations": evals}
 
 
