@@ -155,8 +155,10 @@ def test_shipped_table_metadata(model):
 def test_rebuilt_corner_matches_the_shipped_table(model):
     # Cells with the two largest Fx and the two most negative Fz are solved first in each
     # slice (the sweep starts there), so rebuilding them over every V repeats the build's
-    # path exactly: costs agree to 1e-6 (solver tolerance, plus last-bit differences of
-    # batched sin/cos that SLSQP can amplify where the optimum is flat).
+    # forward sweep exactly; the later passes only accept cheaper answers (in the full
+    # build also from neighbours outside the corner, so a corner that missed a cheaper
+    # branch would show here).  Costs agree to 1e-6 (solver tolerance, plus last-bit
+    # differences of batched sin/cos that SLSQP can amplify where the optimum is flat).
     t = shipped(model)
     cfg = config_from_meta(t)
     cfg = BuildConfig(cfg.model, sub_grid(cfg.grid, [9, 10], [0, 1], range(11)), cfg.bird, cfg.weights, cfg.settings)
