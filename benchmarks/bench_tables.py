@@ -89,6 +89,7 @@ def full_tables(models: list[str]) -> None:
 def main() -> None:
     batched_gradient_ratio("m4")
     lockstep_ratio("base")
+    lockstep_ratio("m4")
     wanted = os.environ.get("BIRDSIM_BENCH_TABLE_MODELS")
     models = [m.strip() for m in wanted.split(",")] if wanted else list(MODELS)
     full_tables(models)
