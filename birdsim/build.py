@@ -125,6 +125,7 @@ class BuildSettings:
     screen: int = 1024  # space-filling candidates per V slice, shared by its cells
     starts: int = 2  # screen candidates polished where the warm start is poor
     screen_gap: float = 0.02  # multi-start unless the warm start beats the best screen candidate by this
+    always_polish: int = 1  # screen candidates polished even after a good warm start
     switch_margin: float = 1e-4  # another branch must beat the warm-start branch by this
     reach_tol: float = 0.01  # |achieved - demanded| force above which a cell is unreachable
     v_passes: bool = True  # forward and backward passes in V after the slices
@@ -206,11 +207,12 @@ def _solve_cell(
     order = np.argsort(c)
     prob = _problem(cfg, model, fx, fz, v, warm if cfg.weights.distance > 0 else None, evaluator)
     best = None
+    polish = max(st.starts, 1)
     if warm is not None:
         best = slsqp(prob, warm, maxiter=st.maxiter)
         if best.cost < c[order[0]] - st.screen_gap:
-            return best.x, best.cost, prob.evaluations
-    for k in order[: max(st.starts, 1)]:
+            polish = st.always_polish  # a good warm start: still try the best screen candidate(s)
+    for k in order[:polish]:
         sol = slsqp(prob, S[k], maxiter=st.maxiter)
         if best is None or sol.cost < best.cost - st.switch_margin:
             best = sol
