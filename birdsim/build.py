@@ -198,9 +198,9 @@ def _solve_cell(
     warm: np.ndarray | None,
     screen: tuple[np.ndarray, tuple[np.ndarray, ...], np.ndarray],
     evaluator: Any = None,
-) -> tuple[np.ndarray, float, int]:
+) -> tuple[np.ndarray, float, int, bool]:
     """Warm-started SLSQP, multi-start from the screen where the warm start is poor.
-    Returns (x, cost at n_search, cycle evaluations)."""
+    Returns (x, cost at n_search, cycle evaluations, SLSQP converged)."""
     st = cfg.settings
     S, (Fx, Fz, P), other = screen
     c = breakdown_from_forces(Fx, Fz, P, fx, fz, cfg.weights, other).total
@@ -217,15 +217,15 @@ def _solve_cell(
         if best is None or sol.cost < best.cost - st.switch_margin:
             best = sol
     assert best is not None
-    return best.x, best.cost, prob.evaluations
+    return best.x, best.cost, prob.evaluations, best.converged
 
 
 def _resolve_from(
     cfg: BuildConfig, model: KinematicModel, fx: float, fz: float, v: float, start: np.ndarray, evaluator: Any = None
-) -> tuple[np.ndarray, float, int]:
+) -> tuple[np.ndarray, float, int, bool]:
     prob = _problem(cfg, model, fx, fz, v, start if cfg.weights.distance > 0 else None, evaluator)
     sol = slsqp(prob, start, maxiter=cfg.settings.maxiter)
-    return sol.x, sol.cost, prob.evaluations
+    return sol.x, sol.cost, prob.evaluations, sol.converged
 
 
 #: A wrist amplitude below this (rad) counts as an idle wrist.
@@ -251,7 +251,7 @@ def canonical_params(model: KinematicModel, X: np.ndarray) -> np.ndarray:
 
 def _improve_cell(
     cfg: BuildConfig, model: KinematicModel, fx: float, fz: float, v: float, starts: list[np.ndarray], evaluator: Any = None
-) -> tuple[np.ndarray | None, float, int]:
+) -> tuple[np.ndarray | None, float, int, bool]:
     """The best SLSQP answer from ``starts`` (None if there are none)."""
     prob = _problem(cfg, model, fx, fz, v, None, evaluator)
     best = None
@@ -259,7 +259,9 @@ def _improve_cell(
         sol = slsqp(prob, x0, maxiter=cfg.settings.maxiter)
         if best is None or sol.cost < best.cost:
             best = sol
-    return (None, np.inf, prob.evaluations) if best is None else (best.x, best.cost, prob.evaluations)
+    if best is None:
+        return None, np.inf, prob.evaluations, True
+    return best.x, best.cost, prob.evaluations, best.converged
 
 
 # ---- tasks (top-level functions: picklable for process and cluster executors) -----------
@@ -279,15 +281,16 @@ def solve_slice(cfg: BuildConfig, iv: int) -> dict[str, np.ndarray]:
     X = np.zeros((nfx, nfz, d))
     cost = np.zeros((nfx, nfz))
     evals = np.zeros((nfx, nfz), dtype=np.int64)
+    conv = np.zeros((nfx, nfz), dtype=bool)
     screen = _screen(cfg, model, v)
     warm: np.ndarray | None = None
     for i in reversed(range(nfx)):  # Fx from +max down, Fz at the strongest lift demand
-        X[i, 0], cost[i, 0], evals[i, 0] = _solve_cell(cfg, model, g.Fx[i], g.Fz[0], v, warm, screen)
+        X[i, 0], cost[i, 0], evals[i, 0], conv[i, 0] = _solve_cell(cfg, model, g.Fx[i], g.Fz[0], v, warm, screen)
         warm = X[i, 0]
     for j in range(1, nfz):  # Fz upwards to 0, all Fx lines at once
         jobs = [partial(_solve_cell, cfg, model, g.Fx[i], g.Fz[j], v, X[i, j - 1], screen) for i in range(nfx)]
-        for i, (x, c, e) in enumerate(run_lockstep(model, cfg.bird, cfg.settings.n_search, jobs)):
-            X[i, j], cost[i, j], evals[i, j] = x, c, e
+        for i, (x, c, e, ok) in enumerate(run_lockstep(model, cfg.bird, cfg.settings.n_search, jobs)):
+            X[i, j], cost[i, j], evals[i, j], conv[i, j] = x, c, e, ok
     X = canonical_params(model, X)
     if cfg.weights.distance == 0:
         # backward pass in Fz (0 -> strongest lift): each cell re-solved from those of its
@@ -301,15 +304,15 @@ def solve_slice(cfg: BuildConfig, iv: int) -> dict[str, np.ndarray]:
                     if 0 <= a < nfx and b < nfz and np.max(np.abs(X[a, b] - X[i, j])) >= cfg.settings.branch_tol
                 ]
                 jobs.append(partial(_improve_cell, cfg, model, g.Fx[i], g.Fz[j], v, starts))
-            for i, (x, c, e) in enumerate(run_lockstep(model, cfg.bird, cfg.settings.n_search, jobs)):
+            for i, (x, c, e, ok) in enumerate(run_lockstep(model, cfg.bird, cfg.settings.n_search, jobs)):
                 evals[i, j] += e
                 if x is not None and c < cost[i, j] - 1e-12:
-                    X[i, j], cost[i, j] = canonical_params(model, x), c
+                    X[i, j], cost[i, j], conv[i, j] = canonical_params(model, x), c, ok
     evals[-1, 0] += screen[0].shape[0]  # the screen, booked on the first cell
-    return {"params": X, "cost": cost, "evaluations": evals}
+    return {"params": X, "cost": cost, "evaluations": evals, "converged": conv}
 
 
-def solve_v_line(cfg: BuildConfig, ifx: int, X: np.ndarray, cost: np.ndarray) -> dict[str, np.ndarray]:
+def solve_v_line(cfg: BuildConfig, ifx: int, X: np.ndarray, cost: np.ndarray, conv: np.ndarray) -> dict[str, np.ndarray]:
     """Phase 2 for the line Fx = grid.Fx[ifx] (arrays nFz x nV): a forward and a
     backward pass in V, each cell re-solved from its V-neighbour (all Fz of one V in
     lockstep) and kept if cheaper.  With under-relaxation (relax < 1) the forward pass
@@ -317,7 +320,7 @@ def solve_v_line(cfg: BuildConfig, ifx: int, X: np.ndarray, cost: np.ndarray) ->
     would undo that smoothing, is skipped."""
     model = get_model(cfg.model)
     g, st = cfg.grid, cfg.settings
-    X, cost = X.copy(), cost.copy()
+    X, cost, conv = X.copy(), cost.copy(), conv.copy()
     evals = np.zeros(cost.shape, dtype=np.int64)
     nv, nfz = len(g.V), len(g.Fz)
     plain = st.relax == 1.0 and cfg.weights.distance == 0
@@ -327,21 +330,21 @@ def solve_v_line(cfg: BuildConfig, ifx: int, X: np.ndarray, cost: np.ndarray) ->
             # a V-neighbour this close is on the same branch: a re-solve would land here again
             todo = [j for j in range(nfz) if not (plain and np.max(np.abs(X[j, k + step] - X[j, k])) < st.branch_tol)]
             jobs = [partial(_resolve_from, cfg, model, g.Fx[ifx], g.Fz[j], g.V[k], X[j, k + step].copy()) for j in todo]
-            for j, (x_new, c_new, e) in zip(todo, run_lockstep(model, cfg.bird, st.n_search, jobs)):
+            for j, (x_new, c_new, e, ok) in zip(todo, run_lockstep(model, cfg.bird, st.n_search, jobs)):
                 prev = X[j, k + step]
                 evals[j, k] += e
                 if not plain:
                     prob = _problem(cfg, model, g.Fx[ifx], g.Fz[j], g.V[k], prev if cfg.weights.distance > 0 else None)
                     if st.relax < 1.0:
                         x_new = st.relax * x_new + (1.0 - st.relax) * prev
-                        X[j, k], cost[j, k] = x_new, float(prob.cost(x_new[None])[0])
+                        X[j, k], cost[j, k], conv[j, k] = x_new, float(prob.cost(x_new[None])[0]), ok
                         continue
                     current = float(prob.cost(X[j, k][None])[0])
                 else:
                     current = cost[j, k]
                 if c_new < current - 1e-12:
-                    X[j, k], cost[j, k] = canonical_params(model, x_new), c_new
-    return {"params": X, "cost": cost, "evaluations": evals}
+                    X[j, k], cost[j, k], conv[j, k] = canonical_params(model, x_new), c_new, ok
+    return {"params": X, "cost": cost, "evaluations": evals, "converged": conv}
 
 
 # ---- orchestration ---------------------------------------------------------------------
@@ -389,7 +392,8 @@ class Checkpoints:
             return None
         try:
             with np.load(self.folder / f"{name}.npz") as z:
-                return {k: z[k] for k in z.files}
+                data = {k: z[k] for k in z.files}
+            return data if {"params", "cost", "evaluations", "converged"} <= set(data) else None
         except (OSError, ValueError):
             return None  # a damaged checkpoint is recomputed
 
@@ -473,19 +477,21 @@ def build_table(
         X = np.stack([slices[f"slice_V{k:03d}"]["params"] for k in range(len(g.V))], axis=2)
         cost = np.stack([slices[f"slice_V{k:03d}"]["cost"] for k in range(len(g.V))], axis=2)
         evals = np.stack([slices[f"slice_V{k:03d}"]["evaluations"] for k in range(len(g.V))], axis=2)
+        conv = np.stack([slices[f"slice_V{k:03d}"]["converged"] for k in range(len(g.V))], axis=2)
         if cfg.settings.v_passes:
             lines = _run(
-                {f"line_Fx{i:03d}": (solve_v_line, (cfg, i, X[i], cost[i])) for i in range(len(g.Fx))},
+                {f"line_Fx{i:03d}": (solve_v_line, (cfg, i, X[i], cost[i], conv[i])) for i in range(len(g.Fx))},
                 executor, ckpt, tick, len(g.Fz) * len(g.V),
             )
             X = np.stack([lines[f"line_Fx{i:03d}"]["params"] for i in range(len(g.Fx))], axis=0)
             evals = evals + np.stack([lines[f"line_Fx{i:03d}"]["evaluations"] for i in range(len(g.Fx))], axis=0)
+            conv = np.stack([lines[f"line_Fx{i:03d}"]["converged"] for i in range(len(g.Fx))], axis=0)
     finally:
         if own:
             executor.shutdown(wait=True, cancel_futures=True)
         if bar is not None:
             bar.close()
-    table = finish_table(cfg, model, X, evals)
+    table = finish_table(cfg, model, X, evals, conv)
     seconds = time.perf_counter() - t0
     table.meta.update(build_seconds=round(seconds, 3), cells_per_second=round(ncells / seconds, 2), jobs=jobs if own else "executor")
     ckpt.remove()
@@ -511,7 +517,9 @@ def final_check(cfg: BuildConfig, model: KinematicModel, X: np.ndarray) -> dict[
     }
 
 
-def finish_table(cfg: BuildConfig, model: KinematicModel, X: np.ndarray, evals: np.ndarray) -> LookupTable:
+def finish_table(
+    cfg: BuildConfig, model: KinematicModel, X: np.ndarray, evals: np.ndarray, converged: np.ndarray | None = None
+) -> LookupTable:
     from . import __version__
 
     chk = final_check(cfg, model, X)
@@ -523,6 +531,7 @@ def finish_table(cfg: BuildConfig, model: KinematicModel, X: np.ndarray, evals: 
         "config_sha": cfg.digest(),
         **{k: v for k, v in cfg.to_dict().items() if k != "bird"},
         "counts": {s: int(np.sum(chk["status_code"] == i)) for i, s in enumerate(STATUS_NAMES)},
+        "not_converged": int(np.sum(~converged)) if converged is not None else 0,
     }
     return LookupTable(
         model=cfg.model,
@@ -531,6 +540,7 @@ def finish_table(cfg: BuildConfig, model: KinematicModel, X: np.ndarray, evals: 
         axes={a: np.asarray(getattr(cfg.grid, a), dtype=float) for a in AXES},
         params=X,
         evaluations=evals,
+        converged=np.ones(X.shape[:-1], dtype=bool) if converged is None else converged.astype(bool),
         meta=meta,
         **chk,
     )

@@ -49,6 +49,11 @@ class Solution:
     Fz: float = float("nan")
     P: float = float("nan")
 
+    @property
+    def status(self) -> str:
+        """``converged`` or ``stopped: <solver message>``."""
+        return "converged" if self.converged else f"stopped: {self.message}"
+
     def params(self, names: Sequence[str]) -> dict[str, float]:
         return {n: float(v) for n, v in zip(names, self.x)}
 

@@ -56,6 +56,7 @@ class LookupTable:
     status_code: np.ndarray  # nFx x nFz x nV, uint8 index into STATUS_NAMES
     evaluations: np.ndarray  # nFx x nFz x nV, cycle evaluations spent on the cell
     meta: dict[str, Any] = field(default_factory=dict)
+    converged: np.ndarray | None = None  # nFx x nFz x nV, SLSQP's own convergence flag of the kept answer
 
     def __post_init__(self) -> None:
         shape = tuple(len(self.axes[a]) for a in AXES)
@@ -68,6 +69,9 @@ class LookupTable:
             "status_code": shape,
             "evaluations": shape,
         }
+        if self.converged is None:
+            object.__setattr__(self, "converged", np.ones(shape, dtype=bool))
+        expected["converged"] = shape
         for name, want in expected.items():
             got = np.shape(getattr(self, name))
             if got != want:
@@ -194,6 +198,7 @@ class LookupTable:
             achieved=self.achieved,
             status_code=self.status_code.astype(np.uint8),
             evaluations=self.evaluations.astype(np.int64),
+            converged=np.asarray(self.converged, dtype=bool),
         )
         data = buf.getvalue()
         meta = dict(self.meta)
@@ -265,6 +270,7 @@ def load_table(path: str | Path) -> LookupTable:
             status_code=arrays["status_code"],
             evaluations=arrays["evaluations"],
             meta=meta,
+            converged=arrays.get("converged"),
         )
     except TableError:
         raise

@@ -77,6 +77,7 @@ def test_status_is_honest(small_base):
     np.testing.assert_allclose(t.cost_fractions.sum(axis=-1), 1.0, atol=1e-12)
     for key in ("package_version", "git_commit", "built_at", "cost_weights", "solver", "grid", "build_seconds"):
         assert key in t.meta
+    assert t.converged.dtype == bool and t.converged.shape == t.shape and t.converged.mean() > 0.9
 
 
 class FailingAfter(Executor):

@@ -54,6 +54,9 @@ def test_complete_search_g_hits_the_corner_minimum_exactly():
 def test_gradient_method_f_from_0_1_reaches_the_centre():
     sol = slsqp(unit(f), [0.0, 1.0])
     assert sol.cost == pytest.approx(0.25, abs=1e-8)  # Table 3: error 0.0000
+    assert sol.status == "converged"
+    stopped = slsqp(unit(f), [0.0, 1.0], maxiter=1)
+    assert not stopped.converged and stopped.status.startswith("stopped: ")
     np.testing.assert_allclose(sol.x, [0.5, 0.5], atol=1e-4)
 
 

@@ -122,6 +122,7 @@ def table_summary(path: str) -> dict:
         "cells": cells,
         "status": {s: int(np.sum(status == s)) for s in STATUS_NAMES},
         "coverage": float(np.mean(status == "ok")),
+        "solver_not_converged": int(np.sum(~np.asarray(t.converged, dtype=bool))),
         "unreachable_per_V": per_v,
         "unreachable_examples": [
             {a: float(t.axes[a][idx[k]]) for k, a in enumerate(AXES)}
@@ -160,6 +161,7 @@ def run_info(args: argparse.Namespace) -> int:
     print(f"parameters: {', '.join(s['param_names'])}")
     st = s["status"]
     print(f"cells: {s['cells']}; ok {st['ok']} ({100 * s['coverage']:.1f} %), unreachable {st['unreachable']}, failed {st['failed']}")
+    print(f"cells whose kept SLSQP answer stopped without converging (e.g. iteration limit): {s['solver_not_converged']}")
     print("unreachable per V: " + ", ".join(f"{v}: {n}" for v, n in s["unreachable_per_V"].items()))
     for ex in s["unreachable_examples"]:
         print(
