@@ -198,15 +198,17 @@ def _add_bird(spec: mujoco.MjSpec, model_name: str, bird: Bird, body_pitch: floa
     torso.quat = pitch_quat(body_pitch)
     torso.add_freejoint(name="root")
     s = bird.semispan
-    body_size = np.array([0.3, 0.08, 0.08]) * s
+    # the dissertation leaves the body's shape open (sec. 3.2.1); a torso about as long as
+    # the chord keeps the bird recognisable next to its square seed wings
+    body_size = np.array([0.55, 0.13, 0.13]) * s
     torso.explicitinertial = True
     torso.mass = bird.mass
     torso.ipos = [0.0, 0.0, 0.0]
     torso.inertia = _box_inertia(bird.mass, body_size)
     torso.add_geom(name="torso_body", type=mujoco.mjtGeom.mjGEOM_ELLIPSOID, size=body_size, mass=0.0)
-    torso.add_geom(name="head", type=mujoco.mjtGeom.mjGEOM_SPHERE, size=[0.07 * s, 0, 0], pos=[0.32 * s, 0, 0.04 * s], mass=0.0)
+    torso.add_geom(name="head", type=mujoco.mjtGeom.mjGEOM_SPHERE, size=[0.11 * s, 0, 0], pos=[0.6 * s, 0, 0.08 * s], mass=0.0)
     torso.add_geom(
-        name="tail", type=mujoco.mjtGeom.mjGEOM_BOX, size=[0.12 * s, 0.07 * s, 0.005 * s], pos=[-0.38 * s, 0, 0], mass=0.0
+        name="tail", type=mujoco.mjtGeom.mjGEOM_BOX, size=[0.22 * s, 0.14 * s, 0.008 * s], pos=[-0.7 * s, 0, 0.02 * s], mass=0.0
     )
     torso.add_site(name="torso_cp", default=spec.find_default("cp"), pos=[0, 0, 0])
     for name, pos in CAMERAS.items():
