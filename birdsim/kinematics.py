@@ -82,11 +82,19 @@ class Sinusoid:
 
     def at(self, omega_t: np.ndarray, omega: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Angle, rate and acceleration at phase ``omega_t``."""
+        q, qd = self.angle_rate(omega_t, omega)
+        if _is_zero(qd):
+            return q, 0.0, 0.0
+        return q, qd, -omega * omega * (q - self.bias)
+
+    def angle_rate(self, omega_t: np.ndarray, omega: float) -> tuple[np.ndarray, np.ndarray | float]:
+        """Angle and rate at phase ``omega_t`` (the hot path: no acceleration, no zero bias)."""
         if isinstance(self.amp, float) and self.amp == 0.0:  # a constant joint: no time axis
-            return np.asarray(self.bias, dtype=float), 0.0, 0.0
+            return np.asarray(self.bias, dtype=float), 0.0
         arg = omega_t + self.phase
-        s, c = np.sin(arg), np.cos(arg)
-        return self.amp * s + self.bias, self.amp * omega * c, -self.amp * omega * omega * s
+        q = self.amp * np.sin(arg)
+        qd = (self.amp * omega) * np.cos(arg)
+        return (q if _is_zero(self.bias) else q + self.bias), qd
 
 
 JOINTS: dict[str, Joint] = {
@@ -303,7 +311,7 @@ def joint_states(
     wt = np.reshape(omega_t, (-1,) + (1,) * trailing)
     states = {}
     for name, motion in model.joint_motion(shaped, bird).items():
-        q, qd, _ = motion.at(wt, bird.omega)
+        q, qd = motion.angle_rate(wt, bird.omega)
         states[name] = JointState(np.cos(q), np.sin(q), q, qd)
     return states
 
