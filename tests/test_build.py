@@ -214,3 +214,20 @@ def test_regimes_of_sec_4_1(model):
     assert 0.3 * hover["flap_amp"] < cruise["flap_amp"] < 0.75 * hover["flap_amp"]
     assert 0.0 < cruise["twist_amp"] < 0.6 * hover["twist_amp"]
     assert t.status_at(0, -0.2, 0.9) == "ok"
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("model", MODELS)
+def test_fresh_multistart_never_beats_the_table_over_many_cells(model):
+    # the same check as above over 25 cells per model (seconds per model); the
+    # same 2e-3 margin and reasoning
+    t = shipped(model)
+    rng = np.random.default_rng(77 + MODELS.index(model))
+    worst = 0.0
+    for _ in range(25):
+        i, j, k = (int(x) for x in rng.integers(0, 11, 3))
+        demand = (t.axes["Fx"][i], t.axes["Fz"][j], t.axes["V"][k])
+        prob = ForceProblem(model, *demand, n=64)
+        fresh = multistart(prob, random_starts(prob, 16, seed=int(rng.integers(1 << 30))))
+        worst = max(worst, t.cost[i, j, k] - fresh.cost)
+    assert worst <= 2e-3, worst

@@ -183,3 +183,12 @@ def test_wrist_activity_scales_the_upper_bounds() -> None:
     np.testing.assert_allclose(k["wrist_amp"], [0, PI / 8, PI / 4])
     np.testing.assert_allclose(k["wrist_lag"], [0, PI / 4, PI / 2])
     np.testing.assert_allclose(k["wrist_bias"], [0, PI / 8, PI / 4])
+
+
+@pytest.mark.slow
+def test_full_report_builds(tmp_path: Path) -> None:
+    """The full-resolution report: every family, every figure."""
+    sections = report.build_report(tmp_path / "report", quick=False, progress=False)
+    assert not [s.error for s in sections if s.error]
+    files = [e.file for s in sections for e in s.entries]
+    assert len(files) == 41 and all((tmp_path / "report" / f).stat().st_size > 20_000 for f in files)
