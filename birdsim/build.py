@@ -39,6 +39,7 @@ import os
 import shutil
 import subprocess
 import time
+import zipfile
 from collections.abc import Callable, Sequence
 from concurrent.futures import Executor, Future, ProcessPoolExecutor, as_completed
 from dataclasses import asdict, dataclass, field
@@ -140,8 +141,13 @@ class BuildSettings:
         for name in ("n_search", "n_final", "screen", "maxiter"):
             if int(getattr(self, name)) < 2:
                 raise BirdsimError(f"{name}={getattr(self, name)!r} is invalid; allowed: an integer >= 2")
-        if self.starts < 0 or self.reach_tol <= 0 or self.switch_margin < 0 or self.screen_gap < 0:
-            raise BirdsimError("starts >= 0, reach_tol > 0, switch_margin >= 0 and screen_gap >= 0 are required")
+        # written as "not (ok)" so that NaN is refused too (every comparison with NaN is False)
+        if not self.reach_tol > 0:
+            raise BirdsimError(f"reach_tol={self.reach_tol!r} is invalid; allowed: a number > 0")
+        for name in ("starts", "always_polish", "switch_margin", "screen_gap", "branch_tol"):
+            value = getattr(self, name)
+            if not value >= 0:
+                raise BirdsimError(f"{name}={value!r} is invalid; allowed: a number >= 0")
 
 
 @dataclass(frozen=True)
@@ -375,14 +381,23 @@ def _git_commit() -> str:
 
 class Checkpoints:
     """Finished tasks of one build, one ``.npz`` per task in a folder; a folder of a
-    different configuration is cleared."""
+    different configuration is cleared.  A folder that is not a checkpoint folder (no
+    ``config.sha`` stamp and not empty), or a path that is a file, is refused, never
+    cleared."""
 
     def __init__(self, folder: Path | None, digest: str) -> None:
         self.folder = folder
         if folder is None:
             return
         stamp = folder / "config.sha"
-        if folder.exists() and (not stamp.is_file() or stamp.read_text().strip() != digest):
+        if folder.exists() and not folder.is_dir():
+            raise BirdsimError(f"checkpoint_dir {str(folder)!r} is a file; allowed: a folder used only for checkpoints")
+        if folder.exists() and not stamp.is_file() and any(folder.iterdir()):
+            raise BirdsimError(
+                f"checkpoint_dir {str(folder)!r} holds files but no config.sha; allowed: a new or empty folder, "
+                "or one written by an earlier build (it is cleared and removed)"
+            )
+        if folder.exists() and stamp.is_file() and stamp.read_text().strip() != digest:
             shutil.rmtree(folder)
         folder.mkdir(parents=True, exist_ok=True)
         stamp.write_text(digest + "\n")
@@ -394,7 +409,7 @@ class Checkpoints:
             with np.load(self.folder / f"{name}.npz") as z:
                 data = {k: z[k] for k in z.files}
             return data if {"params", "cost", "evaluations", "converged"} <= set(data) else None
-        except (OSError, ValueError):
+        except (OSError, ValueError, EOFError, zipfile.BadZipFile):
             return None  # a damaged checkpoint is recomputed
 
     def save(self, name: str, arrays: dict[str, np.ndarray]) -> None:

@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from birdsim.build import BuildConfig, BuildSettings, Grid, build_table, config_from_meta, sub_grid
+from birdsim.build import BuildConfig, BuildSettings, Checkpoints, Grid, build_table, config_from_meta, sub_grid
 from birdsim.errors import BirdsimError
 from birdsim.kinematics import get_model
 from birdsim.optimize import ForceProblem, random_starts, multistart
@@ -50,6 +50,12 @@ def test_bad_settings():
         BuildSettings(relax=0.0)
     with pytest.raises(BirdsimError, match="screen"):
         BuildSettings(screen=1)
+    # NaN slips through "x < 0" checks; it would mark every cell ok (err > nan is False)
+    for name in ("reach_tol", "screen_gap", "switch_margin", "branch_tol"):
+        with pytest.raises(BirdsimError, match=f"{name}=nan is invalid"):
+            BuildSettings(**{name: float("nan")})
+    with pytest.raises(BirdsimError, match="branch_tol=-1"):
+        BuildSettings(branch_tol=-1.0)
 
 
 # ---- a small build ---------------------------------------------------------------------------
@@ -107,6 +113,30 @@ def test_interrupted_build_resumes_from_checkpoints(tmp_path, small_base):
     assert len(again.submitted) == 1 + len(SMALL.Fx)  # the missing slice and the V passes only
     assert not ckpt.exists()
     np.testing.assert_array_equal(t.params, small_base.params)  # same answer as uninterrupted
+
+
+def test_checkpoints_never_clear_a_foreign_folder_and_recompute_damaged_files(tmp_path):
+    mine = tmp_path / "mine"
+    mine.mkdir()
+    (mine / "notes.txt").write_text("keep me")
+    with pytest.raises(BirdsimError, match="holds files but no config.sha"):
+        Checkpoints(mine, "abc")
+    assert (mine / "notes.txt").read_text() == "keep me"
+    (tmp_path / "afile").write_text("x")
+    with pytest.raises(BirdsimError, match="is a file"):
+        Checkpoints(tmp_path / "afile", "abc")
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    ck = Checkpoints(empty, "abc")  # an empty folder is fine
+    arrays = {"params": np.zeros((2, 3, 1)), "cost": np.zeros((2, 3)), "evaluations": np.zeros((2, 3), int), "converged": np.ones((2, 3), bool)}
+    ck.save("slice_V000", arrays)
+    assert ck.load("slice_V000") is not None
+    full = (empty / "slice_V000.npz").read_bytes()
+    for cut in (10, len(full) // 2, len(full) - 5):  # a truncated file: recomputed, not a crash
+        (empty / "slice_V000.npz").write_bytes(full[:cut])
+        assert ck.load("slice_V000") is None
+    assert Checkpoints(empty, "other").load("slice_V000") is None  # another configuration clears it
+    assert not any(empty.iterdir()) or (empty / "config.sha").read_text().strip() == "other"
 
 
 def test_any_executor_gives_the_same_table(small_base):
