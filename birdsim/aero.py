@@ -58,6 +58,12 @@ class SeedPolar(Polar):
     cd0: float = 0.05
     cd_max: float = 1.0
 
+    def __post_init__(self) -> None:
+        for name in ("cl_max", "cd0", "cd_max"):
+            v = getattr(self, name)
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not np.isfinite(v):
+                raise BirdConfigError(f"polar.{name}={v!r} is invalid; allowed: a finite number")
+
     def coefficients(self, alpha: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         s = np.sin(alpha)
         return self.cl_max * np.sin(2.0 * alpha), self.cd0 + self.cd_max * s * s

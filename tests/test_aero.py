@@ -57,6 +57,12 @@ def test_polar_from_dict_errors():
     assert polar_from_dict({"kind": "seed", "cl_max": 1.5}) == SeedPolar(cl_max=1.5)
     with pytest.raises(BirdConfigError, match="polar.kind='foo' is unknown"):
         polar_from_dict({"kind": "foo"})
+    # a NaN or infinite coefficient would turn every force into NaN without a word
+    for bad in (float("nan"), float("inf"), "2"):
+        with pytest.raises(BirdConfigError, match="polar.cd0=.* is invalid; allowed: a finite number"):
+            polar_from_dict({"kind": "seed", "cd0": bad})
+    with pytest.raises(BirdConfigError, match="polar.cl_max=nan"):
+        Bird().with_overrides({"polar.cl_max": "nan"})
 
 
 # ---- sec. 3.4: the advance ratio ----------------------------------------------------
