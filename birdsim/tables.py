@@ -17,6 +17,7 @@ from __future__ import annotations
 import hashlib
 import io
 import json
+import zipfile
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -28,6 +29,7 @@ from .bird import Bird
 from .cost import FRACTION_NAMES
 from .errors import BirdsimError
 from .io import check_output, write_atomic
+from .kinematics import MODELS
 
 #: Bump when the file layout changes; tables of another version are refused on load.
 TABLE_FORMAT_VERSION = 1
@@ -80,6 +82,20 @@ class LookupTable:
             ax = np.asarray(self.axes[a], dtype=float)
             if ax.ndim != 1 or ax.size < 2 or np.any(np.diff(ax) <= 0) or not np.all(np.isfinite(ax)):
                 raise TableError(f"table axis {a}={ax.tolist()} is invalid; allowed: >= 2 finite increasing values")
+        model = MODELS.get(self.model) if isinstance(self.model, str) else None
+        if model is None:
+            raise TableError(f"table model {self.model!r} is unknown; allowed: {', '.join(MODELS)}")
+        if tuple(self.param_names) != model.param_names:
+            raise TableError(
+                f"table param_names={list(self.param_names)} do not match model {self.model}; "
+                f"allowed: {', '.join(model.param_names)}"
+            )
+        codes = np.asarray(self.status_code)
+        if codes.dtype.kind not in "iu" or np.any(codes < 0) or np.any(codes >= len(STATUS_NAMES)):
+            raise TableError(
+                f"table array status_code holds {codes.dtype} values in [{codes.min()}, {codes.max()}]; "
+                f"allowed: integers 0..{len(STATUS_NAMES) - 1} ({', '.join(STATUS_NAMES)})"
+            )
 
     # ---- views -----------------------------------------------------------------------
 
@@ -272,10 +288,12 @@ def load_table(path: str | Path) -> LookupTable:
             meta=meta,
             converged=arrays.get("converged"),
         )
+        npz_version = int(arrays["format_version"])
     except TableError:
         raise
-    except (KeyError, ValueError, TypeError, OSError) as exc:
-        raise TableError(f"table file {str(npz_path)!r} is unreadable or incomplete: {exc}") from None
-    if int(arrays["format_version"]) != TABLE_FORMAT_VERSION:
-        raise TableError(f"table file {str(npz_path)!r} has format version {int(arrays['format_version'])}; allowed: {TABLE_FORMAT_VERSION}")
+    except (KeyError, ValueError, TypeError, OSError, EOFError, zipfile.BadZipFile) as exc:
+        why = f"missing {exc}" if isinstance(exc, KeyError) else str(exc)
+        raise TableError(f"table file {str(npz_path)!r} is unreadable or incomplete: {why}") from None
+    if npz_version != TABLE_FORMAT_VERSION:
+        raise TableError(f"table file {str(npz_path)!r} has format version {npz_version}; allowed: {TABLE_FORMAT_VERSION}")
     return table

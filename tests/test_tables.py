@@ -142,6 +142,41 @@ def test_inconsistent_arrays_are_refused():
     t, _ = synthetic()
     with pytest.raises(BirdsimError, match="table array cost has shape"):
         LookupTable(t.model, t.bird, t.param_names, t.axes, t.params, t.cost[:1], t.cost_fractions, t.achieved, t.status_code, t.evaluations)
+    with pytest.raises(BirdsimError, match="status_code holds uint8 values in .0, 7.; allowed: integers 0..2"):
+        LookupTable(t.model, t.bird, t.param_names, t.axes, t.params, t.cost, t.cost_fractions, t.achieved, t.status_code * 7, t.evaluations)
+    with pytest.raises(BirdsimError, match="param_names=.* do not match model base"):
+        LookupTable(t.model, t.bird, ("a", "b", "c"), t.axes, t.params, t.cost, t.cost_fractions, t.achieved, t.status_code, t.evaluations)
+    with pytest.raises(BirdsimError, match="table model 'm9' is unknown"):
+        LookupTable("m9", t.bird, t.param_names, t.axes, t.params, t.cost, t.cost_fractions, t.achieved, t.status_code, t.evaluations)
+
+
+def _rewrite_npz(npz, js, edit):
+    """Rewrite the .npz through ``edit(arrays)`` and give the .json the matching checksum,
+    so that only the content check can catch it."""
+    import hashlib
+    import io
+
+    with np.load(npz) as z:
+        arrays = {k: z[k] for k in z.files}
+    edit(arrays)
+    buf = io.BytesIO()
+    np.savez(buf, **arrays)
+    npz.write_bytes(buf.getvalue())
+    meta = json.loads(js.read_text())
+    meta["npz_sha256"] = hashlib.sha256(buf.getvalue()).hexdigest()
+    js.write_text(json.dumps(meta))
+
+
+def test_consistent_but_corrupt_files_give_one_clear_error(tmp_path):
+    t, _ = synthetic()
+    npz, js = t.save(tmp_path / "a")
+    _rewrite_npz(npz, js, lambda a: a.pop("format_version"))
+    with pytest.raises(TableError, match="unreadable or incomplete: missing 'format_version'"):
+        load_table(npz)
+    t.save(tmp_path / "a", force=True)
+    _rewrite_npz(npz, js, lambda a: a.update(status_code=a["status_code"] + 5))
+    with pytest.raises(TableError, match="status_code holds"):
+        load_table(npz)
 
 
 # ---- the command ----------------------------------------------------------------------------
