@@ -26,7 +26,7 @@ from scipy.stats import qmc
 
 from .bird import Bird
 from .cost import CostWeights, forces, other_cost
-from .errors import BirdsimError
+from .errors import BirdsimError, check_finite
 from .kinematics import KinematicModel, get_model
 
 #: Central-difference step (rad) of the batched gradients: truncation error ~h^2 f''',
@@ -122,7 +122,11 @@ class ForceProblem(Problem):
     ) -> None:
         self.model = model if isinstance(model, KinematicModel) else get_model(model)
         super().__init__(*self.model.bounds)
-        self.Fx_demand, self.Fz_demand, self.speed = float(Fx_demand), float(Fz_demand), float(speed)
+        self.Fx_demand = check_finite("Fx_demand", Fx_demand)
+        self.Fz_demand = check_finite("Fz_demand", Fz_demand)
+        self.speed = check_finite("speed", speed, "a finite number >= 0")
+        if self.speed < 0:
+            raise BirdsimError(f"speed={speed!r} is invalid; allowed: a finite number >= 0")
         self.cost_weights = weights or CostWeights()
         self.weights = np.array([self.cost_weights.force_x, self.cost_weights.force_z, self.cost_weights.power])
         self.bird = bird or Bird()

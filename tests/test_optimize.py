@@ -93,6 +93,20 @@ def test_solve_interface_and_bad_method():
         solve(unit(f), "newton")
 
 
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        ((math.nan, -0.2, 0.5), "Fx_demand=nan is not finite"),
+        ((0.1, -math.inf, 0.5), "Fz_demand=-inf is not finite"),
+        ((0.1, -0.2, -1.0), "speed=-1.0 is invalid"),
+    ],
+)
+def test_force_problem_refuses_non_finite_demands(args, message):
+    # a NaN demand used to give a NaN cost and a "solution" without a word
+    with pytest.raises(BirdsimError, match=message):
+        ForceProblem("m1", *args)
+
+
 def test_start_sets_fill_the_box():
     p = unit(f)
     S = random_starts(p, 64, seed=1)
