@@ -114,3 +114,11 @@ def test_free_torso_every_example(ex):
     r = crosscheck(ex.model, ex.params, ex.speed, samples=64, forward="free")
     assert r.inverse_rel_error < INVERSE_TOL
     assert r.forward_rel_error < FORWARD_TOL
+
+
+@pytest.mark.parametrize("fraction", [0.0, 1.0])
+def test_zero_span_hand_or_arm(fraction):
+    # the Bird allows a zero-span panel; MuJoCo's bird must still compile and agree
+    p = dict(pitch=0.3, flap_amp=0.6, twist_amp=0.3, stroke_plane=0.1, wrist_amp=0.3, wrist_bias=0.2, wrist_lag=1.0)
+    r = crosscheck("m4", p, 0.5, Bird(hand_span_fraction=fraction), samples=32, forward=None)
+    assert r.inverse_rel_error < INVERSE_TOL and r.power_rel_error < INVERSE_TOL

@@ -108,6 +108,17 @@ def test_geometry_follows_the_bird():
     assert m.opt.timestep == pytest.approx(bird.period / 512)
 
 
+@pytest.mark.parametrize("fraction", [0.0, 1.0])
+@pytest.mark.parametrize("model", ["m1", "m4"])
+def test_zero_span_panel_compiles(model, fraction):
+    # Bird allows hand_span_fraction in [0, 1]; MuJoCo refuses a box of zero size, so
+    # the zero-span panel keeps its geom as a sliver (its CP site and forces are exact:
+    # the cross-check covers the physics)
+    m = build_model(model, Bird(hand_span_fraction=fraction))
+    empty = "r_hand_panel" if fraction == 0.0 else "r_arm_panel"
+    assert 0 < m.geom(empty).size[1] <= 1e-6
+
+
 def test_unknown_model_is_one_clear_error():
     with pytest.raises(UnknownModelError, match="model 'm9' is unknown; allowed: base"):
         build_model("m9")

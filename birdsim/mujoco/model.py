@@ -51,6 +51,8 @@ STEPS_PER_WINGBEAT = 512
 PANEL_MASS_FRACTION = 0.01
 #: Panel thickness as a fraction of its chord (visual and inertia only).
 PANEL_THICKNESS = 0.02
+#: Half-span (fraction of the chord) of the geom drawn for a panel of zero span.
+ZERO_SPAN_HALF = 1e-6
 #: Height of the torso above the floor in the default keyframe, in semispans.
 KEY_HEIGHT = 2.0
 #: Time constant of the weld ``hold`` in timesteps (MuJoCo's stable minimum is 2).
@@ -224,7 +226,10 @@ def _add_bird(spec: mujoco.MjSpec, model_name: str, bird: Bird, body_pitch: floa
         body.mass = wing_mass
         body.ipos = [0.0, sign * span / 2, 0.0]
         body.inertia = _box_inertia(wing_mass, size)
-        body.add_geom(name=name, default=panel_cls, size=size, pos=[0.0, sign * span / 2, 0.0])
+        # MuJoCo refuses a box of zero size: a zero-span panel (hand_span_fraction 0 or 1,
+        # which the Bird allows) keeps its named geom as an invisible sliver
+        drawn = np.array([size[0], max(size[1], ZERO_SPAN_HALF * chord), size[2]])
+        body.add_geom(name=name, default=panel_cls, size=drawn, pos=[0.0, sign * span / 2, 0.0])
 
     for side in SIDES:
         sg = span_sign(side)
