@@ -33,6 +33,7 @@ a rerun with the same configuration skips the finished tasks.
 
 from __future__ import annotations
 
+import fnmatch
 import hashlib
 import json
 import os
@@ -379,11 +380,19 @@ def _git_commit() -> str:
         return "unknown"
 
 
+def _is_checkpoint_file(name: str) -> bool:
+    """A name that :class:`Checkpoints` writes (write_atomic's temporaries included)."""
+    return name == "config.sha" or any(fnmatch.fnmatchcase(name, p) for p in _CHECKPOINT_PATTERNS)
+
+
+_CHECKPOINT_PATTERNS = ("slice_V*.npz", "line_Fx*.npz", ".slice_V*.npz.*.partial.npz", ".line_Fx*.npz.*.partial.npz")
+
+
 class Checkpoints:
     """Finished tasks of one build, one ``.npz`` per task in a folder; a folder of a
-    different configuration is cleared.  A folder that is not a checkpoint folder (no
-    ``config.sha`` stamp and not empty), or a path that is a file, is refused, never
-    cleared."""
+    different configuration is cleared.  A folder holding anything but checkpoint files
+    (``config.sha``, ``slice_V*.npz``, ``line_Fx*.npz`` and their temporaries), or a
+    path that is a file, is refused, never cleared: the folder is removed at the end."""
 
     def __init__(self, folder: Path | None, digest: str) -> None:
         self.folder = folder
@@ -392,12 +401,14 @@ class Checkpoints:
         stamp = folder / "config.sha"
         if folder.exists() and not folder.is_dir():
             raise BirdsimError(f"checkpoint_dir {str(folder)!r} is a file; allowed: a folder used only for checkpoints")
-        if folder.exists() and not stamp.is_file() and any(folder.iterdir()):
-            raise BirdsimError(
-                f"checkpoint_dir {str(folder)!r} holds files but no config.sha; allowed: a new or empty folder, "
-                "or one written by an earlier build (it is cleared and removed)"
-            )
-        if folder.exists() and stamp.is_file() and stamp.read_text().strip() != digest:
+        if folder.exists():
+            foreign = sorted(p.name for p in folder.iterdir() if not _is_checkpoint_file(p.name))
+            if foreign:
+                raise BirdsimError(
+                    f"checkpoint_dir {str(folder)!r} holds {foreign[0]!r}, not a checkpoint; allowed: a new or empty "
+                    "folder, or one written by an earlier build (it is cleared and removed)"
+                )
+        if folder.exists() and (not stamp.is_file() or stamp.read_text().strip() != digest):
             shutil.rmtree(folder)
         folder.mkdir(parents=True, exist_ok=True)
         stamp.write_text(digest + "\n")

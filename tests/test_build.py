@@ -119,9 +119,13 @@ def test_checkpoints_never_clear_a_foreign_folder_and_recompute_damaged_files(tm
     mine = tmp_path / "mine"
     mine.mkdir()
     (mine / "notes.txt").write_text("keep me")
-    with pytest.raises(BirdsimError, match="holds files but no config.sha"):
+    (mine / "slice_V000.npz").write_bytes(b"")
+    with pytest.raises(BirdsimError, match="holds 'notes.txt', not a checkpoint"):
         Checkpoints(mine, "abc")
-    assert (mine / "notes.txt").read_text() == "keep me"
+    assert (mine / "notes.txt").read_text() == "keep me" and (mine / "slice_V000.npz").exists()
+    (mine / "notes.txt").unlink()  # checkpoint files without a stamp: cleared, reused
+    Checkpoints(mine, "abc")
+    assert sorted(p.name for p in mine.iterdir()) == ["config.sha"]
     (tmp_path / "afile").write_text("x")
     with pytest.raises(BirdsimError, match="is a file"):
         Checkpoints(tmp_path / "afile", "abc")
