@@ -96,7 +96,7 @@ class RoboflyPolar(Polar):
     kind: ClassVar[str] = "robofly"
 
     def coefficients(self, alpha: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        a = np.mod(np.asarray(alpha) + 0.5 * np.pi, np.pi) - 0.5 * np.pi  # (-pi/2, pi/2]
+        a = np.mod(np.asarray(alpha) + 0.5 * np.pi, np.pi) - 0.5 * np.pi  # [-pi/2, pi/2)
         deg = np.degrees(np.abs(a))
         cl = 0.225 + 1.58 * np.sin(np.radians(2.13 * deg - 7.20))
         cd = 1.92 - 1.55 * np.cos(np.radians(2.04 * deg - 9.82))

@@ -161,7 +161,10 @@ class KinematicModel:
     def guess(self, regime: str = "hover") -> dict[str, float]:
         """A physically sensible starting point: ``hover`` (large amplitudes, steep pitch)
         or ``cruise`` (small amplitudes, flat body)."""
-        attr = {"hover": "hover_guess", "cruise": "cruise_guess"}[regime]
+        attrs = {"hover": "hover_guess", "cruise": "cruise_guess"}
+        if regime not in attrs:
+            raise ParameterError(f"regime={regime!r} is unknown; allowed: hover, cruise")
+        attr = attrs[regime]
         return {p.name: min(max(getattr(p, attr), p.lower), p.upper) for p in self.params}
 
     def chain_with_geometry(self, bird: Bird) -> tuple[tuple[tuple[ChainElement, ...], float, float], ...]:

@@ -111,6 +111,8 @@ def test_guesses_are_inside_bounds():
     for m in birdsim.MODELS.values():
         for regime in ("hover", "cruise"):
             validate_params(m, m.guess(regime))
+    with pytest.raises(ParameterError, match="regime='glide' is unknown; allowed: hover, cruise"):
+        get_model("m1").guess("glide")
 
 
 def test_parameter_errors_are_one_clear_line():

@@ -90,3 +90,6 @@ def test_set_pose_rejects_bad_input_in_one_line():
         set_pose(m, d, {}, pitch=0.0, position_seed=(0.0, np.nan, 0.0))
     with pytest.raises(BirdsimError, match="flap is not finite"):
         set_pose(m, d, {"flap": np.inf}, pitch=0.0)
+    # NaN times went straight into qpos
+    with pytest.raises(BirdsimError, match="times=nan is not finite"):
+        trajectory(m, "m1", get_model("m1").guess("hover"), np.array([0.0, np.nan]))

@@ -250,6 +250,8 @@ def joint_series(
     times = np.asarray(times, dtype=float)
     if times.ndim != 1:
         raise BirdsimError(f"times has shape {times.shape}; allowed: a 1-D array of times")
+    if not np.all(np.isfinite(times)):
+        raise BirdsimError(f"times={float(times[~np.isfinite(times)][0])} is not finite; allowed: finite times")
     p = {k: np.broadcast_to(v, times.shape) for k, v in p.items()}
     angles, rates, accs = {}, {}, {}
     for name, motion in km.joint_motion(p, bird).items():
