@@ -137,10 +137,14 @@ class Bird:
     def with_overrides(self, overrides: dict[str, str]) -> "Bird":
         """A copy with ``NAME=VALUE`` strings applied (``--set`` on the command line).
 
-        ``polar.NAME`` sets a coefficient of the polar.
+        ``polar.NAME`` sets a coefficient of the polar; ``polar.kind`` switches to another
+        polar, which starts from its own default coefficients.
         """
         top: dict[str, Any] = {}
         polar = self.polar.to_dict()
+        kind = overrides.get("polar.kind")
+        if kind is not None and kind != polar["kind"]:
+            polar = {"kind": kind}  # the old polar's coefficients do not fit the new kind
         types = {f.name: type(getattr(self, f.name)) for f in fields(self)}
         for key, raw in overrides.items():
             if key.startswith("polar."):

@@ -16,6 +16,10 @@ def test_toml_round_trip(tmp_path):
 def test_overrides():
     b = Bird().with_overrides({"strips": "12", "induced_velocity": "true", "polar.cl_max": "1.5"})
     assert b.strips == 12 and b.induced_velocity and b.polar == SeedPolar(cl_max=1.5)
+    # switching the polar kind must not carry the seed polar's coefficients along
+    assert Bird().with_overrides({"polar.kind": "robofly"}).polar == RoboflyPolar()
+    back = Bird(polar=RoboflyPolar()).with_overrides({"polar.kind": "seed", "polar.cd0": "0.1"})
+    assert back.polar == SeedPolar(cd0=0.1)
 
 
 @pytest.mark.parametrize(
