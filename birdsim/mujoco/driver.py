@@ -29,7 +29,7 @@ import numpy as np
 from ..bird import Bird
 from ..errors import BirdsimError
 from ..kinematics import JOINTS, get_model, validate_params
-from .model import SIDES, hinge_axis, pitch_quat, slide_axis
+from .model import SIDES, hinge_axis
 
 #: The core joints composed into the shoulder ball joint, outermost first.
 SHOULDER = ("sweep", "stroke", "flap", "twist")
@@ -85,7 +85,6 @@ def ball_state(
     for k in range(n - 1, -1, -1):
         v[k] = np.einsum("tji,j->ti", b, axes[k])  # B^T a_k
         b = rots[k] @ b
-    omega = np.zeros((t, 3))
     alpha = np.zeros((t, 3))
     outer = np.zeros((t, 3))  # W_k = sum_{j>k} v_j qd_j
     for k in range(n - 1, -1, -1):
