@@ -48,6 +48,10 @@ CRUISE_HEIGHT = 6.0
 
 DEMANDS = ("Fx", "Fz", "V")
 
+#: Longest manoeuvre (wingbeats): keyframe times and durations beyond it are refused
+#: (playback samples the schedule 64 times per wingbeat; 1e9 beats would need 477 GiB).
+MAX_BEATS = 10000.0
+
 
 @dataclass(frozen=True)
 class Keyframe:
@@ -79,8 +83,10 @@ class Manoeuvre:
         ts = [k.t for k in self.keyframes]
         if any(b <= a for a, b in zip(ts, ts[1:])):
             raise ManoeuvreError(f"manoeuvre {self.name!r}: keyframe times {ts} are not increasing; allowed: strictly increasing t")
-        if not (math.isfinite(self.duration) and self.duration > 0):
-            raise ManoeuvreError(f"manoeuvre {self.name!r}: duration={self.duration!r}; allowed: a number of wingbeats > 0")
+        if ts[-1] > MAX_BEATS:
+            raise ManoeuvreError(f"manoeuvre {self.name!r}: keyframe t={ts[-1]:g}; allowed: t <= {MAX_BEATS:g} wingbeats")
+        if not (math.isfinite(self.duration) and 0 < self.duration <= MAX_BEATS):
+            raise ManoeuvreError(f"manoeuvre {self.name!r}: duration={self.duration!r}; allowed: a number of wingbeats in (0, {MAX_BEATS:g}]")
         if self.perch not in ("", "start", "end"):
             raise ManoeuvreError(f"manoeuvre {self.name!r}: perch={self.perch!r}; allowed: start, end or empty")
 
@@ -178,7 +184,7 @@ def load_manoeuvre(path: str | Path) -> Manoeuvre:
     """Read a manoeuvre TOML file.  Two forms (times in wingbeats)::
 
         name = "climb"                      # optional (default: file stem)
-        duration = 8                        # optional (default: last keyframe + 1)
+        duration = 8                        # optional (default: last keyframe + 1), <= MAX_BEATS
         perch = ""                          # "start", "end" or "" (optional)
         [[keyframe]]                        # one table per keyframe ...
         t = 0
@@ -238,7 +244,7 @@ def load_manoeuvre(path: str | Path) -> Manoeuvre:
             raise ManoeuvreError(f"{where}: regime={regime!r} is not a string")
         keyframes.append(Keyframe(vals["t"], vals["Fx"], vals["Fz"], vals["V"], z_prev, regime))
     last = keyframes[-1].t
-    duration = _number(f"{arg}: duration", data["duration"]) if "duration" in data else last + 1.0
+    duration = _number(f"{arg}: duration", data["duration"]) if "duration" in data else min(last + 1.0, MAX_BEATS)
     name = data.get("name", p.stem)
     if not isinstance(name, str) or not name:
         raise ManoeuvreError(f"{arg}: name={name!r}; allowed: a non-empty string")
@@ -265,4 +271,4 @@ def _number(arg: str, raw: Any) -> float:
     return float(raw)
 
 
-__all__ = ["CRUISE_HEIGHT", "Keyframe", "Manoeuvre", "ManoeuvreError", "PERCH_HEIGHT", "PRESETS", "get_manoeuvre", "load_manoeuvre"]
+__all__ = ["CRUISE_HEIGHT", "Keyframe", "MAX_BEATS", "Manoeuvre", "ManoeuvreError", "PERCH_HEIGHT", "PRESETS", "get_manoeuvre", "load_manoeuvre"]

@@ -39,6 +39,7 @@ from .playback import Playback, TableLike, frame_times, play
 CAMERAS = ("track", "side", "top", "overview")
 #: Largest frame side accepted (MuJoCo's offscreen buffer is enlarged to fit).
 MAX_SIDE = 4096
+MAX_SECONDS = 3600.0  # longest video (--seconds, or the whole manoeuvre at --beat-rate)
 
 
 class RenderError(BirdsimError):
@@ -72,8 +73,8 @@ class RenderOptions:
                 raise RenderError(f"--size {name}={v!r} is invalid; allowed: a multiple of 16 in [16, {MAX_SIDE}] (H.264/yuv420p)")
         if not isinstance(self.fps, int) or isinstance(self.fps, bool) or not 1 <= self.fps <= 240:
             raise RenderError(f"--fps {self.fps!r} is invalid; allowed: an integer in [1, 240]")
-        if self.seconds is not None and not (isinstance(self.seconds, (int, float)) and math.isfinite(self.seconds) and 0 < self.seconds <= 3600):
-            raise RenderError(f"--seconds {self.seconds!r} is invalid; allowed: a number in (0, 3600]")
+        if self.seconds is not None and not (isinstance(self.seconds, (int, float)) and math.isfinite(self.seconds) and 0 < self.seconds <= MAX_SECONDS):
+            raise RenderError(f"--seconds {self.seconds!r} is invalid; allowed: a number in (0, {MAX_SECONDS:g}]")
         if not (math.isfinite(self.beats_per_second) and 0 < self.beats_per_second <= 100):
             raise RenderError(f"--beat-rate {self.beats_per_second!r} is invalid; allowed: wingbeats per second in (0, 100]")
         if self.camera not in CAMERAS:
@@ -82,8 +83,16 @@ class RenderOptions:
             raise RenderError(f"crf={self.crf!r} is invalid; allowed: 0..51")
 
     def duration(self, manoeuvre: Manoeuvre) -> float:
-        """Seconds of video."""
-        return self.seconds if self.seconds is not None else manoeuvre.duration / self.beats_per_second
+        """Seconds of video; one clear line when the whole manoeuvre would exceed an hour."""
+        if self.seconds is not None:
+            return self.seconds
+        seconds = manoeuvre.duration / self.beats_per_second
+        if seconds > MAX_SECONDS:
+            raise RenderError(
+                f"manoeuvre {manoeuvre.name!r} lasts {manoeuvre.duration:g} wingbeats = {seconds:g} s of video at --beat-rate "
+                f"{self.beats_per_second:g}; allowed: at most {MAX_SECONDS:g} s (give --seconds or a higher --beat-rate)"
+            )
+        return seconds
 
 
 def parse_size(text: str) -> tuple[int, int]:

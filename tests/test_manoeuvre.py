@@ -109,6 +109,9 @@ def test_user_file_both_forms_agree(tmp_path):
         ("name = 'x'\n", "neither"),
         ("[demands]\nt = [0, 1]\nFx = [0]\nFz = [0, 0]\nV = [0, 0]\n", "one length"),
         ("[[keyframe\n", "not valid TOML"),
+        # a huge time would make playback sample ~1e11 instants (MemoryError traceback before the fix)
+        ("[[keyframe]]\nt = 1e9\nFx = 0\nFz = 0\nV = 0\n", "t <= 10000 wingbeats"),
+        ("duration = 2e4\n[[keyframe]]\nt = 0\nFx = 0\nFz = 0\nV = 0\n", "duration=20000.0; allowed"),
     ],
 )
 def test_bad_files_give_one_clear_line(tmp_path, text, words):
@@ -125,3 +128,9 @@ def test_unknown_preset_and_missing_file():
         get_manoeuvre("hovr")
     with pytest.raises(BirdsimError, match="does not exist"):
         get_manoeuvre("/nonexistent/x.toml")
+
+
+def test_default_duration_stays_within_the_longest_manoeuvre(tmp_path):
+    p = tmp_path / "long.toml"
+    p.write_text("[[keyframe]]\nt = 10000\nFx = 0\nFz = 0\nV = 0\n")
+    assert load_manoeuvre(p).duration == 10000

@@ -187,6 +187,8 @@ def test_cli_renders_and_refuses_to_overwrite(tmp_path, capsys):
         (["hover", "--out", "/proc/birdsim/x.mp4"], "cannot be created"),
         (["hover", "--out", "x.avi"], "does not end in .mp4"),
         (["hover", "--table", "/nonexistent/t.npz"], "does not exist"),
+        (["hover", "--seconds", "3601"], "--seconds 3601.0 is invalid"),
+        (["hover", "--beat-rate", "0.001"], "= 6000 s of video at --beat-rate 0.001; allowed: at most 3600 s"),
     ],
 )
 def test_bad_input_one_line(tmp_path, capsys, monkeypatch, args, words):

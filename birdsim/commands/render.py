@@ -76,6 +76,7 @@ def run(args: argparse.Namespace) -> int:
         gl=args.gl,
         progress=not args.quiet,
     )
+    options.duration(manoeuvre)  # a manoeuvre longer than the longest video -> one line
     out = Path(args.out) if args.out else Path("renders") / f"{_slug(manoeuvre.name)}-{model}.mp4"
     if out.suffix.lower() != ".mp4":
         raise BirdsimError(f"--out {str(out)!r} does not end in .mp4; allowed: a .mp4 path")
