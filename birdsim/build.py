@@ -63,6 +63,12 @@ from .tables import AXES, STATUS_NAMES, LookupTable
 # ---- configuration ------------------------------------------------------------------
 
 
+#: Largest grid accepted: nodes per axis and cells in all (a count of 1e9 in --grid
+#: used to exhaust memory before any check; a million cells is hours of building).
+MAX_NODES = 1000
+MAX_CELLS = 1_000_000
+
+
 @dataclass(frozen=True)
 class Grid:
     """The demand grid: increasing values of Fx, Fz (dissertation force) and V."""
@@ -78,6 +84,8 @@ class Grid:
                 raise BirdsimError(f"--grid {a}={list(ax)} is invalid; allowed: >= 2 finite increasing values")
         if self.V[0] < 0:
             raise BirdsimError(f"--grid V starts at {self.V[0]:g}; allowed: speeds >= 0")
+        if len(self.Fx) * len(self.Fz) * len(self.V) > MAX_CELLS:
+            raise BirdsimError(f"--grid {'x'.join(map(str, self.shape))} has too many cells; allowed: at most {MAX_CELLS} cells")
 
     @classmethod
     def default(cls, size: int = 11) -> "Grid":
@@ -88,8 +96,8 @@ class Grid:
     def parse(cls, spec: str, size: int = 11) -> "Grid":
         """``"Fx=-0.5:0.5:11,Fz=-0.5:0:11,V=0:1:11"`` (``lo:hi:count``) or explicit
         values ``"V=0|0.5|1"``; axes left out take the default range with ``size`` nodes."""
-        if not isinstance(size, int) or size < 2:
-            raise BirdsimError(f"--size {size!r} is invalid; allowed: an integer >= 2")
+        if not isinstance(size, int) or not 2 <= size <= MAX_NODES:
+            raise BirdsimError(f"--size {size!r} is invalid; allowed: an integer in [2, {MAX_NODES}]")
         defaults = {"Fx": (-0.5, 0.5), "Fz": (-0.5, 0.0), "V": (0.0, 1.0)}
         axes = {a: tuple(float(x) for x in np.linspace(*defaults[a], size)) for a in AXES}
         for part in filter(None, (s.strip() for s in spec.split(","))):
@@ -101,13 +109,13 @@ class Grid:
                 if ":" in value:
                     lo, hi, count = value.split(":")
                     n = int(count)
-                    if n < 2:
+                    if not 2 <= n <= MAX_NODES:
                         raise ValueError
                     axes[name] = tuple(float(x) for x in np.linspace(float(lo), float(hi), n))
                 else:
                     axes[name] = tuple(float(x) for x in value.split("|"))
             except ValueError:
-                raise BirdsimError(f"--grid {part!r} is malformed; allowed: {name}=LO:HI:COUNT (COUNT >= 2) or {name}=A|B|C") from None
+                raise BirdsimError(f"--grid {part!r} is malformed; allowed: {name}=LO:HI:COUNT (2 <= COUNT <= {MAX_NODES}) or {name}=A|B|C") from None
         return cls(**axes)
 
     @property

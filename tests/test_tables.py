@@ -210,6 +210,10 @@ def test_cli_build_info_lookup(tmp_path, capsys):
         (["tables", "build", "--model", "base", "--grid", "V=1|0"], "--grid V=[1.0, 0.0] is invalid"),
         (["tables", "build", "--model", "base", "--grid", "Q=1"], "--grid 'Q=1' is malformed"),
         (["tables", "build", "--model", "base", "--jobs", "0"], "--jobs 0 is invalid"),
+        # a count of 1e9 used to exhaust memory (the process was killed) before any check
+        (["tables", "build", "--model", "base", "--grid", "Fx=0:1:1000000000"], "(2 <= COUNT <= 1000)"),
+        (["tables", "build", "--model", "base", "--size", "100000000"], "--size 100000000 is invalid"),
+        (["tables", "build", "--model", "base", "--grid", "Fx=0:1:1000,Fz=-1:0:1000"], "--grid 1000x1000x11 has too many cells"),
         (["tables", "info", "nowhere.npz"], "does not exist"),
     ],
 )
