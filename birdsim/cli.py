@@ -20,6 +20,13 @@ COMMAND_MODULES = (
 )
 
 
+#: What ``birdsim --help`` says first (the module docstring is for developers).
+DESCRIPTION = (
+    "Flapping-bird flight after the dissertation: wingbeat forces, optimal-wingbeat tables, "
+    "MuJoCo renders of manoeuvres and the analysis report."
+)
+
+
 class _Parser(argparse.ArgumentParser):
     """argparse, but a usage mistake is one line (no usage dump) and exit status 2."""
 
@@ -28,7 +35,7 @@ class _Parser(argparse.ArgumentParser):
 
 
 def build_parser() -> argparse.ArgumentParser:
-    parser = _Parser(prog="birdsim", description=__doc__.splitlines()[0])
+    parser = _Parser(prog="birdsim", description=DESCRIPTION)
     sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
     for name in COMMAND_MODULES:
         try:
@@ -38,6 +45,7 @@ def build_parser() -> argparse.ArgumentParser:
                 raise
             continue
         module.register(sub)
+    sub.metavar = "{" + ",".join(sub.choices) + "}"  # "required: {forces,...}", not the dest name
     return parser
 
 

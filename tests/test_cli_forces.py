@@ -41,12 +41,20 @@ def test_forces_geometry_override_changes_result(capsys):
         (["--model", "m1", "--speed", "0", *HOVER[:-1], "twist_amp=nan"], "not finite"),
         (["--model", "m1", "--speed", "0", *HOVER, "--param", "oops"], "malformed"),
         (["--model", "m1", "--speed", "0", *HOVER, "--bird", "/nonexistent.toml"], "does not exist"),
+        (["--model", "m1", "--speed", "0", *HOVER, "--samples", "0"], "--samples 0 is invalid; allowed: an integer >= 2"),
     ],
 )
 def test_forces_bad_input_one_line(args, text, capsys):
     assert main(["forces", *args]) == 2
     err = capsys.readouterr().err
     assert text in err and err.count("\n") == 1 and "Traceback" not in err
+
+
+def test_missing_subcommand_names_the_choices(capsys):
+    with pytest.raises(SystemExit) as exc:
+        main(["tables"])
+    err = capsys.readouterr().err
+    assert exc.value.code == 2 and err.count("\n") == 1 and "{build,info,lookup}" in err and "tables_command" not in err
 
 
 def test_console_script_usage_error_is_one_line():

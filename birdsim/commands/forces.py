@@ -44,6 +44,8 @@ def run(args: argparse.Namespace) -> int:
     if missing:
         raise ParameterError(f"--param {missing[0]} is missing for model {model.name}; required: {', '.join(model.param_names)}")
     speed = _float("--speed", args.speed)
+    if not args.appendix_grid and args.samples < 2:
+        raise BirdsimError(f"--samples {args.samples} is invalid; allowed: an integer >= 2")
     n, endpoint = (11, True) if args.appendix_grid else (args.samples, False)
     cyc = evaluate_cycle(model, params, speed, bird=bird, n=n, endpoint=endpoint)
     out = {

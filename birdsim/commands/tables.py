@@ -24,12 +24,12 @@ FORCE_NOTE = "right wing + body drag (the dissertation's flapcost force), Fz < 0
 
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("tables", help="build, inspect and query optimal-wingbeat lookup tables", description=__doc__)
-    tsub = p.add_subparsers(dest="tables_command", required=True, parser_class=type(p))
+    tsub = p.add_subparsers(dest="tables_command", metavar="{build,info,lookup}", required=True, parser_class=type(p))
 
     b = tsub.add_parser("build", help="optimise every cell of a (Fx, Fz, V) grid for one model")
     b.add_argument("--model", required=True, help="base, m1, m2, m3 or m4")
     b.add_argument("--grid", default="", help='e.g. "Fx=-0.5:0.5:11,Fz=-0.5:0:11,V=0:1:11" or "V=0|0.5|1"; '
-                   "axes left out take DESIGN.md's default range")
+                   "axes left out take the default range (Fx=-0.5:0.5, Fz=-0.5:0, V=0:1)")
     b.add_argument("--size", type=int, default=11, help="nodes per axis for axes not given in --grid (default 11)")
     b.add_argument("--out", help="output table (default tables/<model>.npz; a .json is written beside it)")
     b.add_argument("--force", action="store_true", help="overwrite an existing table")
