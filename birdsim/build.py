@@ -476,6 +476,33 @@ def _run(
     return done
 
 
+def _ignore_sigint() -> None:
+    """Worker initializer: Ctrl-C is the parent's to handle (it stops the workers)."""
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
+def _stop_workers(executor: ProcessPoolExecutor) -> None:
+    """Terminate a ProcessPoolExecutor's workers (running tasks are abandoned)."""
+    import signal
+    import threading
+
+    main = threading.current_thread() is threading.main_thread()
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None  # a second Ctrl-C cannot cut this short
+    try:
+        terminate = getattr(executor, "terminate_workers", None)  # Python >= 3.14
+        if terminate is not None:
+            terminate()
+        else:
+            for proc in list((getattr(executor, "_processes", None) or {}).values()):
+                proc.terminate()
+        executor.shutdown(wait=False, cancel_futures=True)
+    finally:
+        if main and previous is not None:
+            signal.signal(signal.SIGINT, previous)
+
+
 def build_table(
     cfg: BuildConfig,
     *,
@@ -501,7 +528,7 @@ def build_table(
     own = executor is None
     if own:
         jobs = jobs or os.cpu_count() or 1
-        executor = _InlineExecutor() if jobs == 1 else ProcessPoolExecutor(max_workers=jobs)
+        executor = _InlineExecutor() if jobs == 1 else ProcessPoolExecutor(max_workers=jobs, initializer=_ignore_sigint)
     assert executor is not None
     try:
         slices = _run(
@@ -520,6 +547,13 @@ def build_table(
             X = np.stack([lines[f"line_Fx{i:03d}"]["params"] for i in range(len(g.Fx))], axis=0)
             evals = evals + np.stack([lines[f"line_Fx{i:03d}"]["evaluations"] for i in range(len(g.Fx))], axis=0)
             conv = np.stack([lines[f"line_Fx{i:03d}"]["converged"] for i in range(len(g.Fx))], axis=0)
+    except BaseException:
+        # Ctrl-C or a failed task: finished parts are saved; stop our workers now (a
+        # second Ctrl-C inside shutdown(wait=True) used to leave them alive and the
+        # process hanging at exit)
+        if own and isinstance(executor, ProcessPoolExecutor):
+            _stop_workers(executor)
+        raise
     finally:
         if own:
             executor.shutdown(wait=True, cancel_futures=True)

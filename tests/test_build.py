@@ -265,3 +265,42 @@ def test_fresh_multistart_never_beats_the_table_over_many_cells(model):
         fresh = multistart(prob, random_starts(prob, 16, seed=int(rng.integers(1 << 30))))
         worst = max(worst, t.cost[i, j, k] - fresh.cost)
     assert worst <= 2e-3, worst
+
+
+def _slow_slice(cfg, k):  # a V slice that would take half a minute
+    import time
+
+    time.sleep(30)
+
+
+def test_interrupted_build_stops_its_workers_at_once(tmp_path, monkeypatch):
+    """Ctrl-C during a process-pool build terminates the workers instead of waiting for
+    their slices (a second Ctrl-C inside that wait used to leave them alive and the
+    command hanging at exit)."""
+    import time
+
+    import birdsim.build as build
+
+    pools = []
+
+    class Pool(build.ProcessPoolExecutor):
+        def __init__(self, *a, **k):
+            super().__init__(*a, **k)
+            pools.append(self)
+
+    monkeypatch.setattr(build, "ProcessPoolExecutor", Pool)
+    monkeypatch.setattr(build, "solve_slice", _slow_slice)
+
+    def interrupted(futures):
+        time.sleep(0.5)  # the workers are asleep in _slow_slice
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(build, "as_completed", interrupted)
+    t0 = time.perf_counter()
+    with pytest.raises(KeyboardInterrupt):
+        build_table(BuildConfig("base", SMALL), jobs=2, checkpoint_dir=tmp_path / "ckpt")
+    assert time.perf_counter() - t0 < 10  # not the 30 s of a slice
+    workers = list(pools[0]._processes.values()) if pools[0]._processes else []
+    for p in workers:
+        p.join(timeout=5)
+    assert not any(p.is_alive() for p in workers)
