@@ -79,6 +79,15 @@ def test_cli_json_and_errors(capsys):
     assert err.count("\n") == 1 and "model 'm9' is unknown" in err
 
 
+
+def test_cli_figure_with_an_unknown_suffix_is_refused_before_work(tmp_path, capsys):
+    # matplotlib's ValueError used to end the command with a traceback after the whole cross-check
+    assert main(["crosscheck", "--model", "m1", "--figure", str(tmp_path / "f.txt")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--figure" in err and "allowed: a path ending in .png, .pdf, .svg" in err
+    assert not list(tmp_path.iterdir())
+
+
 def _param_sets():
     from hypothesis import strategies as st
 

@@ -21,6 +21,7 @@ from ..kinematics import MODELS, get_model
 from .common import add_bird_arguments, bird_from_args
 
 FORCE_NOTE = "whole bird (2 wings + body drag), seed earth axes (Fz < 0 is up)"
+FIGURE_SUFFIXES = (".png", ".pdf", ".svg")
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -59,6 +60,8 @@ def run(args: argparse.Namespace) -> int:
         raise BirdsimError(f"--samples {args.samples} is invalid; allowed: an integer >= 2")
     if args.random < 0:
         raise BirdsimError(f"--random {args.random} is invalid; allowed: an integer >= 0")
+    if args.figure and Path(args.figure).suffix.lower() not in FIGURE_SUFFIXES:
+        raise BirdsimError(f"--figure {args.figure!r} has an unknown suffix; allowed: a path ending in {', '.join(FIGURE_SUFFIXES)}")
     figure = check_output(Path(args.figure), args.force, "--figure") if args.figure else None
     bird = bird_from_args(args)
     forward = None if args.forward == "none" else args.forward
