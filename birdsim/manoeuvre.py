@@ -258,7 +258,10 @@ def load_manoeuvre(path: str | Path) -> Manoeuvre:
 def _columns_to_rows(arg: str, table: Any) -> list[dict[str, Any]]:
     if not isinstance(table, dict):
         raise ManoeuvreError(f"{arg}: demands must be a table of equal-length arrays t, Fx, Fz, V (z optional)")
-    lengths = {k: len(v) for k, v in table.items() if isinstance(v, list)}
+    scalars = [k for k, v in table.items() if not isinstance(v, list)]
+    if scalars:
+        raise ManoeuvreError(f"{arg}: [demands] {scalars[0]}={table[scalars[0]]!r} is not an array; allowed: arrays of one length, e.g. {scalars[0]} = [0, 1]")
+    lengths = {k: len(v) for k, v in table.items()}
     if set(lengths) != set(table) or len(set(lengths.values())) != 1:
         raise ManoeuvreError(f"{arg}: [demands] columns must be arrays of one length; got {lengths or table}")
     n = next(iter(lengths.values()))

@@ -108,6 +108,8 @@ def test_user_file_both_forms_agree(tmp_path):
         ("[[keyframe]]\nt = 0\nFx = 0\nFz = 0\nV = 0\nwing = 1\n", "'wing' is unknown"),
         ("name = 'x'\n", "neither"),
         ("[demands]\nt = [0, 1]\nFx = [0]\nFz = [0, 0]\nV = [0, 0]\n", "one length"),
+        # a scalar column used to be left out of the message, which listed only t, Fx, Fz
+        ("[demands]\nt = [0, 1]\nFx = [0, 0]\nFz = [0, 0]\nV = 0.9\n", "[demands] V=0.9 is not an array"),
         ("[[keyframe\n", "not valid TOML"),
         # a huge time would make playback sample ~1e11 instants (MemoryError traceback before the fix)
         ("[[keyframe]]\nt = 1e9\nFx = 0\nFz = 0\nV = 0\n", "t <= 10000 wingbeats"),
