@@ -40,6 +40,8 @@ def test_forces_geometry_override_changes_result(capsys):
         (["--model", "m1", "--speed", "-1", *HOVER], "speed=-1.0 is invalid"),
         (["--model", "m1", "--speed", "0", *HOVER[:-1], "twist_amp=nan"], "not finite"),
         (["--model", "m1", "--speed", "0", *HOVER, "--param", "oops"], "malformed"),
+        (["--model", "m1", "--speed", "0", *HOVER, "--param", "pitch=0.2"], "pitch is given twice"),
+        (["--model", "m1", "--speed", "0", *HOVER[:-1], "twist_amp=x"], "not a number; allowed"),
         (["--model", "m1", "--speed", "0", *HOVER, "--bird", "/nonexistent.toml"], "does not exist"),
         (["--model", "m1", "--speed", "0", *HOVER, "--samples", "0"], "--samples 0 is invalid; allowed: an integer >= 2"),
     ],

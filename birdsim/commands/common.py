@@ -15,6 +15,8 @@ def parse_pairs(pairs: list[str] | None, arg: str) -> dict[str, str]:
         name, sep, value = pair.partition("=")
         if not sep or not name.strip():
             raise BirdsimError(f"{arg} {pair!r} is malformed; allowed: NAME=VALUE")
+        if name.strip() in out:
+            raise BirdsimError(f"{arg} {name.strip()} is given twice ({out[name.strip()]!r}, {value.strip()!r}); allowed: once")
         out[name.strip()] = value.strip()
     return out
 

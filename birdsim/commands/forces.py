@@ -29,7 +29,7 @@ def _float(arg: str, raw: str) -> float:
     try:
         return float(raw)
     except ValueError:
-        raise BirdsimError(f"{arg}={raw!r} is not a number") from None
+        raise BirdsimError(f"{arg}={raw!r} is not a number; allowed: a number (radians for angles)") from None
 
 
 def run(args: argparse.Namespace) -> int:
