@@ -226,7 +226,11 @@ def evaluate_cycle(
     if not np.all(np.isfinite(v)) or np.any(v < 0):
         bad = float(v[~(np.isfinite(v) & (v >= 0))].flat[0]) if v.ndim else float(v)
         raise BirdsimError(f"speed={bad} is invalid; allowed: a finite number >= 0")
-    batch = np.broadcast_shapes(v.shape, *(a.shape for a in p.values()))
+    try:
+        batch = np.broadcast_shapes(v.shape, *(a.shape for a in p.values()))
+    except ValueError:
+        shapes = ", ".join(f"{k} {a.shape}" for k, a in {"speed": v, **p}.items())
+        raise BirdsimError(f"parameter shapes do not broadcast ({shapes}); allowed: arrays of one common shape") from None
     flat = {k: np.broadcast_to(a, batch).reshape(-1) for k, a in p.items()}
     v_flat = np.broadcast_to(v, batch).reshape(-1)
     phases = sample_phases(n, endpoint)

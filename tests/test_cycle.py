@@ -250,6 +250,11 @@ def test_batch_shape_broadcasts():
     assert c.mean.Fz.shape == (2, 3) and c.Fz.shape == (2, 3, 64) and c.panel_force_earth.shape == (2, 3, 1, 64, 3)
 
 
+def test_shapes_that_do_not_broadcast_are_one_line():
+    with pytest.raises(birdsim.BirdsimError, match="do not broadcast"):
+        evaluate_cycle("m1", dict(pitch=np.zeros(3), flap_amp=np.zeros(4), twist_amp=0.1), 0.5)
+
+
 def test_induced_velocity_reduces_hover_lift():
     p = example(61).params
     plain = evaluate_cycle("m1", p, 0.0, check_bounds=False)
