@@ -10,7 +10,6 @@ Uses tables/m4.npz when present, else a small synthetic m4 table (said so below)
 from __future__ import annotations
 
 import json
-import os
 import subprocess
 import sys
 import tempfile

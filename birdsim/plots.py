@@ -26,7 +26,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
 
     from .cycle import Cycle
-    from .figdata import ControlPointPaths, Landscape, WristOptimum
+    from .figdata import ControlPointPaths, WristOptimum
 
 FORCE_NOTE = "force = right wing + body drag (dissertation force), seed axes, Fz < 0 is up"
 ND = "non-dimensional"

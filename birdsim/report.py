@@ -132,7 +132,7 @@ def _history_claims(eq: int, c, cyc: dict) -> tuple[str, list[Claim]]:
     """What the dissertation says about the example of equation ``eq`` (sec. 3.5) and
     the test of each statement on our cycle ``c`` (``cyc`` holds the other examples)."""
     m = c.mean
-    Fx, Fz, P = float(m.Fx), float(m.Fz), float(m.P)
+    Fx, Fz = float(m.Fx), float(m.Fz)
     n = c.Fz.shape[-1]
     down = _down(n)
     fz, fx, p = c.Fz, c.Fx + float(c.body_drag_x), c.P
@@ -896,7 +896,7 @@ def fig_optimisers(ctx: Context) -> list[Entry]:
     cf, sf, ef = runs["f"]
     cg, sg1, sg2, sg3, eg = runs["g"]
     claims = (
-        Claim(f"complete search (12 nodes) misses f's minimum by 0.0021", bool(nodes == 12 and abs(cf.value - 0.25 - 0.0021) < 5e-5), f"ours: f({cf.x[0]:.4f}, {cf.x[1]:.4f}) = {cf.value:.4f} ({nodes} nodes, {cf.evaluations} evaluations)"),
+        Claim("complete search (12 nodes) misses f's minimum by 0.0021", bool(nodes == 12 and abs(cf.value - 0.25 - 0.0021) < 5e-5), f"ours: f({cf.x[0]:.4f}, {cf.x[1]:.4f}) = {cf.value:.4f} ({nodes} nodes, {cf.evaluations} evaluations)"),
         Claim("gradient method finds f's minimum exactly from (0, 1)", abs(sf.value - 0.25) < 1e-6, f"SLSQP: {sf.value:.6f} after {sf.iterations} iterations, {sf.evaluations} evaluations"),
         Claim("the evolutionary method gets within 0.001 of f's minimum", abs(ef.value - 0.25) < 1e-3, f"{ef.value:.5f} after {ef.evaluations} evaluations"),
         Claim("complete search finds g's global minimum 0 at a node", abs(cg.value) < 1e-12, f"g = {cg.value:.4f} at ({cg.x[0]:.2f}, {cg.x[1]:.2f})"),

@@ -114,6 +114,7 @@ def test_m4_hover_eq87_hand_carries_most_force():
     c = ev(87)
     hand, arm = c.panel_mean["hand"], c.panel_mean["arm"]
     assert float(hand.Fz) < 0.5 * float(c.mean.Fz) < 0  # more than half of the upward force
+    assert float(arm.Fz) < 0  # the arm lifts too, less
     assert abs(float(c.mean.Fx)) < 1e-12
 
 

@@ -7,7 +7,6 @@ do not depend on the committed tables.
 
 from __future__ import annotations
 
-import os
 from pathlib import Path
 
 import numpy as np
