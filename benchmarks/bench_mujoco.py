@@ -13,7 +13,7 @@ from birdsim.mujoco.callback import aero_forces
 from birdsim.mujoco.crosscheck import crosscheck
 from birdsim.mujoco.driver import trajectory
 from birdsim.mujoco.model import build_model
-from birdsim.examples import EXAMPLES
+from birdsim.physics.examples import EXAMPLES
 
 
 def _steps_per_second(m: mujoco.MjModel, traj, seconds: float) -> float:

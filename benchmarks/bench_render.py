@@ -22,11 +22,11 @@ PRESETS = ("hover", "cruise", "take-off", "landing")
 
 _RENDER_ONLY = r"""
 import json, sys, time
-from birdsim import gl
+from birdsim.render import gl
 gl.select_gl(sys.argv[1])
-from birdsim.manoeuvre import PRESETS
-from birdsim.render import RenderOptions, Scene, play_for_video
-from birdsim.tables import load_table
+from birdsim.flight.manoeuvre import PRESETS
+from birdsim.render.renderer import RenderOptions, Scene, play_for_video
+from birdsim.tables.lookup import load_table
 w, h, table = int(sys.argv[2]), int(sys.argv[3]), load_table(sys.argv[4])
 opts = RenderOptions(width=w, height=h, fps=30, seconds=3.0, progress=False)
 pb = play_for_video(PRESETS["cruise"], table, opts)
@@ -75,7 +75,7 @@ def command(backend: str, w: int, h: int, table: str, tmp: Path, preset: str = "
     wall = time.perf_counter() - t0
     if res.returncode:
         raise RuntimeError(res.stderr.strip())
-    from birdsim.render import video_info
+    from birdsim.render.renderer import video_info
 
     info = video_info(out)
     return wall, float(info["frames"]) / float(info["fps"]), int(info["frames"])
@@ -83,7 +83,7 @@ def command(backend: str, w: int, h: int, table: str, tmp: Path, preset: str = "
 
 def main() -> None:
     sys.path.insert(0, str(ROOT))
-    from birdsim.gl import library_available
+    from birdsim.render.gl import library_available
 
     backends = [b for b in ("osmesa", "egl") if library_available(b)]
     if not backends:

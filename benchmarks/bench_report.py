@@ -11,7 +11,7 @@ import time
 import numpy as np
 
 from birdsim import evaluate_cycle
-from birdsim import figdata as fd
+from birdsim.report import figdata as fd
 
 
 def _best(fn, repeats: int = 3) -> float:
@@ -46,7 +46,7 @@ def main() -> None:
     print(f"report grid (Fig 26, m4, {sets} sets x 32 samples): batched {tb * 1e3:.1f} ms, "
           f"one call per set {tl * 1e3:.0f} ms (from {len(sub)} sets), ratio {tl / tb:.1f}x")
 
-    from birdsim.report import build_report
+    from birdsim.report.report import build_report
 
     with tempfile.TemporaryDirectory() as out:
         t0 = time.perf_counter()

@@ -12,10 +12,10 @@ import time
 
 import numpy as np
 
-from birdsim import build as B
-from birdsim.build import BuildConfig, Grid, build_table, solve_slice
-from birdsim.cost import forces
-from birdsim.kinematics import MODELS, get_model
+from birdsim.tables import build as B
+from birdsim.tables.build import BuildConfig, Grid, build_table, solve_slice
+from birdsim.tables.cost import forces
+from birdsim.physics.kinematics import MODELS, get_model
 
 TARGETS = {"base": 10.0, "m4": 60.0}  # seconds, issue 3
 

@@ -1,11 +1,11 @@
 """birdsim: physics-based animation of flapping bird flight (MuJoCo + blade-element aerodynamics)."""
 
-from .aero import Polar, RoboflyPolar, SeedPolar
-from .bird import Bird
-from .cycle import Cycle, MeanForces, evaluate_cycle
-from .errors import BirdsimError, ParameterError, UnknownModelError
-from .kinematics import MODELS, get_model
-from .tables import LookupTable, load_table
+from birdsim.physics.aero import Polar, RoboflyPolar, SeedPolar
+from birdsim.physics.bird import Bird
+from birdsim.physics.cycle import Cycle, MeanForces, evaluate_cycle
+from birdsim.errors import BirdsimError, ParameterError, UnknownModelError
+from birdsim.physics.kinematics import MODELS, get_model
+from birdsim.tables.lookup import LookupTable, load_table
 
 __version__ = "0.1.0"
 

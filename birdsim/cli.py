@@ -7,7 +7,7 @@ import argparse
 import importlib
 import sys
 
-from .errors import BirdsimError
+from birdsim.errors import BirdsimError
 
 #: Subcommand modules, in the order ``birdsim --help`` lists them.
 COMMAND_MODULES = (

@@ -6,7 +6,7 @@ import os
 import tempfile
 from pathlib import Path
 
-from .errors import BirdsimError
+from birdsim.errors import BirdsimError
 
 
 def check_output(path: Path, force: bool, arg: str = "--out") -> Path:

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from birdsim import Bird, evaluate_cycle
-from birdsim.aero import Polar, RoboflyPolar, SeedPolar, induced_velocity, polar_from_dict
+from birdsim.physics.aero import Polar, RoboflyPolar, SeedPolar, induced_velocity, polar_from_dict
 from birdsim.errors import BirdConfigError
 
 

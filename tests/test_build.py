@@ -10,11 +10,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from birdsim.build import BuildConfig, BuildSettings, Checkpoints, Grid, build_table, config_from_meta, sub_grid
+from birdsim.tables.build import BuildConfig, BuildSettings, Checkpoints, Grid, build_table, config_from_meta, sub_grid
 from birdsim.errors import BirdsimError
-from birdsim.kinematics import get_model
-from birdsim.optimize import ForceProblem, random_starts, multistart
-from birdsim.tables import load_table
+from birdsim.physics.kinematics import get_model
+from birdsim.tables.optimize import ForceProblem, random_starts, multistart
+from birdsim.tables.lookup import load_table
 
 TABLES = Path(__file__).resolve().parent.parent / "tables"
 MODELS = ("base", "m1", "m2", "m3", "m4")
@@ -158,7 +158,7 @@ def test_distance_cost_and_relaxation_damp_changes_along_v():
         return float(np.abs(np.diff(t.params, axis=2)).sum())
 
     plain = build_table(BuildConfig("m1", g), jobs=1)
-    from birdsim.cost import CostWeights
+    from birdsim.tables.cost import CostWeights
 
     damped = build_table(BuildConfig("m1", g, weights=CostWeights(distance=0.5)), jobs=1)
     relaxed = build_table(BuildConfig("m1", g, settings=BuildSettings(relax=0.3)), jobs=1)
@@ -279,7 +279,7 @@ def test_interrupted_build_stops_its_workers_at_once(tmp_path, monkeypatch):
     command hanging at exit)."""
     import time
 
-    import birdsim.build as build
+    import birdsim.tables.build as build
 
     pools = []
 

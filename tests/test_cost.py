@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from birdsim import evaluate_cycle, get_model
-from birdsim.cost import FRACTION_NAMES, CostWeights, breakdown_from_forces, evaluate_cost, other_cost
+from birdsim.tables.cost import FRACTION_NAMES, CostWeights, breakdown_from_forces, evaluate_cost, other_cost
 from birdsim.errors import BirdsimError
 
 

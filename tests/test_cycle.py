@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 
 import birdsim
 from birdsim import Bird, evaluate_cycle, get_model
-from birdsim.examples import EXAMPLES, example
+from birdsim.physics.examples import EXAMPLES, example
 from reference_flapcost import flapcost_histories
 
 PI = math.pi
@@ -269,8 +269,8 @@ def test_induced_velocity_is_the_fixed_point(speed):
     # inflow from the returned mean force and evaluate once more.  8 damped iterations
     # left ~1e-4 here; the fixed point agrees to the stopping tolerance (1e-10 in the
     # inflow), 1e-8 in the force leaves room for the force's sensitivity to it.
-    from birdsim.aero import induced_velocity
-    from birdsim.cycle import _histories, sample_phases
+    from birdsim.physics.aero import induced_velocity
+    from birdsim.physics.cycle import _histories, sample_phases
 
     bird = Bird(induced_velocity=True)
     p = dict(pitch=1.4, flap_amp=1.5, twist_amp=0.7) if speed == 0 else dict(pitch=0.2, flap_amp=1.0, twist_amp=0.3)

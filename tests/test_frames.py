@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from birdsim import frames
+from birdsim.physics import frames
 
 
 @pytest.mark.parametrize("axis", ["x", "y", "z"])

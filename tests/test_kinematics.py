@@ -10,7 +10,7 @@ import pytest
 import birdsim
 from birdsim import Bird, get_model
 from birdsim.errors import ParameterError, UnknownModelError
-from birdsim.kinematics import JointState, Offset, joint_states, points_in_body, validate_params
+from birdsim.physics.kinematics import JointState, Offset, joint_states, points_in_body, validate_params
 
 rng = np.random.default_rng(3)
 

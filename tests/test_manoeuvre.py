@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from birdsim.errors import BirdsimError
-from birdsim.manoeuvre import CRUISE_HEIGHT, PERCH_HEIGHT, PRESETS, ManoeuvreError, get_manoeuvre, load_manoeuvre
+from birdsim.flight.manoeuvre import CRUISE_HEIGHT, PERCH_HEIGHT, PRESETS, ManoeuvreError, get_manoeuvre, load_manoeuvre
 
 
 def test_presets_are_the_four_regimes():

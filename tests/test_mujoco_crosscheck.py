@@ -16,7 +16,7 @@ import pytest
 
 from birdsim import Bird, get_model
 from birdsim.cli import main
-from birdsim.examples import EXAMPLES
+from birdsim.physics.examples import EXAMPLES
 from birdsim.mujoco.crosscheck import crosscheck
 
 INVERSE_TOL = 1e-6

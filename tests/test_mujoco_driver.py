@@ -9,7 +9,7 @@ import pytest
 
 from birdsim import Bird, evaluate_cycle, get_model
 from birdsim.errors import BirdsimError
-from birdsim.examples import EXAMPLES
+from birdsim.physics.examples import EXAMPLES
 from birdsim.mujoco.driver import set_pose, trajectory
 from birdsim.mujoco.model import aero_sites, build_model
 

@@ -8,10 +8,10 @@ import math
 import numpy as np
 import pytest
 
-from birdsim.cost import evaluate_cost
+from birdsim.tables.cost import evaluate_cost
 from birdsim.errors import BirdsimError
-from birdsim.kinematics import get_model
-from birdsim.optimize import (
+from birdsim.physics.kinematics import get_model
+from birdsim.tables.optimize import (
     ForceProblem,
     FunctionProblem,
     box_corners,

@@ -7,9 +7,9 @@ import pytest
 from scipy.interpolate import RegularGridInterpolator
 
 from birdsim import Bird, get_model
-from birdsim.kinematics import joint_states
-from birdsim.manoeuvre import PRESETS, Keyframe, Manoeuvre
-from birdsim.playback import PlaybackConfig, TableMismatchError, frame_times, play
+from birdsim.physics.kinematics import joint_states
+from birdsim.flight.manoeuvre import PRESETS, Keyframe, Manoeuvre
+from birdsim.flight.playback import PlaybackConfig, TableMismatchError, frame_times, play
 
 
 class SmallTable:

@@ -12,7 +12,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from birdsim import gl
+from birdsim.render import gl
 from birdsim.errors import BirdsimError
 
 try:  # the default back-end here; every test that renders needs one of the two
@@ -22,10 +22,10 @@ except gl.GLError:  # pragma: no cover - a machine without OSMesa and EGL
 
 from birdsim import Bird, get_model  # noqa: E402
 from birdsim.cli import main  # noqa: E402
-from birdsim.cost import FRACTION_NAMES  # noqa: E402
-from birdsim.manoeuvre import PRESETS  # noqa: E402
-from birdsim.render import RenderOptions, Scene, parse_size, play_for_video, render_manoeuvre, video_info  # noqa: E402
-from birdsim.tables import LookupTable  # noqa: E402
+from birdsim.tables.cost import FRACTION_NAMES  # noqa: E402
+from birdsim.flight.manoeuvre import PRESETS  # noqa: E402
+from birdsim.render.renderer import RenderOptions, Scene, parse_size, play_for_video, render_manoeuvre, video_info  # noqa: E402
+from birdsim.tables.lookup import LookupTable  # noqa: E402
 
 needs_gl = pytest.mark.skipif(BACKEND is None, reason="no headless OpenGL (libOSMesa or libEGL)")
 W, H, FPS, SECONDS = 160, 128, 12, 1.5

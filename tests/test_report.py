@@ -13,13 +13,13 @@ import numpy as np
 import pytest
 
 from birdsim import Bird, evaluate_cycle
-from birdsim import figdata as fd
+from birdsim.report import figdata as fd
 from birdsim.errors import BirdsimError
-from birdsim.frames import body_to_earth, rotate
+from birdsim.physics.frames import body_to_earth, rotate
 
 pytest.importorskip("matplotlib")
 
-from birdsim import plots, report  # noqa: E402
+from birdsim.report import plots, report  # noqa: E402
 
 PI = math.pi
 

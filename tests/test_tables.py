@@ -9,10 +9,10 @@ import numpy as np
 import pytest
 
 import birdsim
-from birdsim.bird import Bird
+from birdsim.physics.bird import Bird
 from birdsim.cli import main
 from birdsim.errors import BirdsimError
-from birdsim.tables import AXES, LookupTable, TableError, load_table, table_paths
+from birdsim.tables.lookup import AXES, LookupTable, TableError, load_table, table_paths
 
 
 def synthetic(model="base", shape=(3, 4, 5)) -> LookupTable:

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import argparse
 
-from ..bird import Bird
-from ..errors import BirdsimError
+from birdsim.physics.bird import Bird
+from birdsim.errors import BirdsimError
 
 
 def parse_pairs(pairs: list[str] | None, arg: str) -> dict[str, str]:

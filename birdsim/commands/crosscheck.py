@@ -14,11 +14,11 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import BirdsimError
-from ..examples import EXAMPLES
-from ..io import check_output, temporary_sibling
-from ..kinematics import MODELS, get_model
-from .common import add_bird_arguments, bird_from_args
+from birdsim.errors import BirdsimError
+from birdsim.physics.examples import EXAMPLES
+from birdsim.io import check_output, temporary_sibling
+from birdsim.physics.kinematics import MODELS, get_model
+from birdsim.commands.common import add_bird_arguments, bird_from_args
 
 FORCE_NOTE = "whole bird (2 wings + body drag), seed earth axes (Fz < 0 is up)"
 FIGURE_SUFFIXES = (".png", ".pdf", ".svg")
@@ -53,7 +53,7 @@ def _cases(models: list[str], k: int, seed: int) -> list[tuple[str, str, dict, f
 def run(args: argparse.Namespace) -> int:
     from tqdm import tqdm
 
-    from ..mujoco.crosscheck import crosscheck
+    from birdsim.mujoco.crosscheck import crosscheck
 
     models = list(MODELS) if args.model == "all" else [get_model(args.model).name]
     if args.samples < 2:

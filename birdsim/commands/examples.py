@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import argparse
 
-from ..cycle import evaluate_cycle
-from ..examples import EXAMPLES
+from birdsim.physics.cycle import evaluate_cycle
+from birdsim.physics.examples import EXAMPLES
 
 
 def register(sub: argparse._SubParsersAction) -> None:

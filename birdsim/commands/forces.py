@@ -5,10 +5,10 @@ from __future__ import annotations
 import argparse
 import json
 
-from ..cycle import evaluate_cycle
-from ..errors import BirdsimError, ParameterError
-from ..kinematics import get_model
-from .common import add_bird_arguments, bird_from_args, parse_pairs
+from birdsim.physics.cycle import evaluate_cycle
+from birdsim.errors import BirdsimError, ParameterError
+from birdsim.physics.kinematics import get_model
+from birdsim.commands.common import add_bird_arguments, bird_from_args, parse_pairs
 
 FORCE_NOTE = "right wing + body drag (the dissertation's flapcost force); whole_bird = 2 wings + body"
 

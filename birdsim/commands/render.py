@@ -7,10 +7,10 @@ import argparse
 import re
 from pathlib import Path
 
-from ..errors import BirdsimError
-from ..gl import GL_CHOICES
-from ..manoeuvre import PRESETS
-from .common import add_bird_arguments, bird_from_args
+from birdsim.errors import BirdsimError
+from birdsim.render.gl import GL_CHOICES
+from birdsim.flight.manoeuvre import PRESETS
+from birdsim.commands.common import add_bird_arguments, bird_from_args
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -54,10 +54,10 @@ def _slug(text: str) -> str:
 
 def run(args: argparse.Namespace) -> int:
     # every cheap check first, so that a mistake costs nothing and writes nothing
-    from ..gl import resolve_gl
-    from ..kinematics import get_model
-    from ..manoeuvre import get_manoeuvre
-    from ..render import RenderOptions, parse_size
+    from birdsim.render.gl import resolve_gl
+    from birdsim.physics.kinematics import get_model
+    from birdsim.flight.manoeuvre import get_manoeuvre
+    from birdsim.render.renderer import RenderOptions, parse_size
 
     manoeuvre = get_manoeuvre(args.manoeuvre)
     model = get_model(args.model).name
@@ -90,7 +90,7 @@ def run(args: argparse.Namespace) -> int:
     table = _load_table(table_path, model, explicit=bool(args.table))
     bird = bird_from_args(args) if (args.bird or args.set) else None
 
-    from ..render import render_manoeuvre
+    from birdsim.render.renderer import render_manoeuvre
 
     result = render_manoeuvre(manoeuvre, table, out, options, bird=bird, model=model, force=args.force)
     print(
@@ -98,7 +98,7 @@ def run(args: argparse.Namespace) -> int:
         f"{result.video_seconds:.1f} s of video in {result.wall_seconds:.1f} s wall, GL {result.backend})"
     )
     if args.sheet:
-        from ..render import contact_sheet
+        from birdsim.render.renderer import contact_sheet
 
         print(f"wrote {contact_sheet(result.path, args.sheet)} (contact sheet)")
     return 0
@@ -109,7 +109,7 @@ def check_writable(out: Path, force: bool, arg: str = "--out") -> None:
     (probed by creating and removing the temporary sibling the writer will use)."""
     import os
 
-    from ..io import check_output, temporary_sibling
+    from birdsim.io import check_output, temporary_sibling
 
     check_output(out, force, arg)
     try:
@@ -119,15 +119,15 @@ def check_writable(out: Path, force: bool, arg: str = "--out") -> None:
 
 
 def _load_table(path: Path, model: str, *, explicit: bool):
-    from ..playback import check_table_model
+    from birdsim.flight.playback import check_table_model
 
     if not path.exists():
         hint = f"build it with `birdsim tables build --model {model}`" if not explicit else "a table file (.npz)"
         raise BirdsimError(f"--table {str(path)!r} does not exist; allowed: {hint}")
     try:
-        from ..tables import load_table
+        from birdsim.tables.lookup import load_table
     except ImportError:  # pragma: no cover - tables land with issue 3
-        raise BirdsimError("--table: this birdsim has no table support (birdsim.tables is missing)") from None
+        raise BirdsimError("--table: this birdsim has no table support (birdsim.tables.lookup is missing)") from None
     table = load_table(path)
     check_table_model(table, model)
     return table

@@ -7,11 +7,11 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from .common import add_bird_arguments, bird_from_args
+from birdsim.commands.common import add_bird_arguments, bird_from_args
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    from ..report import FAMILIES
+    from birdsim.report.report import FAMILIES
 
     p = sub.add_parser("report", help="figures of the dissertation's analysis + index.html", description=__doc__)
     p.add_argument("--out", default="report", metavar="DIR", help="output folder (default: report/)")
@@ -26,7 +26,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..report import build_report
+    from birdsim.report.report import build_report
 
     sections = build_report(Path(args.out), quick=args.quick, force=args.force, bird=bird_from_args(args), only=args.only)
     figures = sum(len(s.entries) for s in sections)

@@ -11,13 +11,13 @@ from pathlib import Path
 
 import numpy as np
 
-from ..build import BuildConfig, BuildSettings, Grid, build_table
-from ..cost import FRACTION_NAMES, CostWeights
-from ..errors import BirdsimError, check_finite
-from ..io import check_output
-from ..kinematics import get_model
-from ..tables import AXES, STATUS_NAMES, load_table, table_paths
-from .common import add_bird_arguments, bird_from_args
+from birdsim.tables.build import BuildConfig, BuildSettings, Grid, build_table
+from birdsim.tables.cost import FRACTION_NAMES, CostWeights
+from birdsim.errors import BirdsimError, check_finite
+from birdsim.io import check_output
+from birdsim.physics.kinematics import get_model
+from birdsim.tables.lookup import AXES, STATUS_NAMES, load_table, table_paths
+from birdsim.commands.common import add_bird_arguments, bird_from_args
 
 FORCE_NOTE = "right wing + body drag (the dissertation's flapcost force), Fz < 0 is up"
 

@@ -28,10 +28,10 @@ from contextlib import contextmanager
 import mujoco
 import numpy as np
 
-from ..aero import body_drag_x
-from ..bird import Bird
-from ..errors import BirdsimError
-from .model import aero_sites, span_sign
+from birdsim.physics.aero import body_drag_x
+from birdsim.physics.bird import Bird
+from birdsim.errors import BirdsimError
+from birdsim.mujoco.model import aero_sites, span_sign
 
 _SITE = mujoco.mjtObj.mjOBJ_SITE
 

@@ -33,13 +33,13 @@ from dataclasses import dataclass, field
 import mujoco
 import numpy as np
 
-from ..bird import Bird
-from ..cycle import evaluate_cycle
-from ..errors import BirdsimError
-from ..kinematics import get_model
-from .callback import aero_forces
-from .driver import trajectory
-from .model import HOLD_TIMECONST_STEPS, build_model
+from birdsim.physics.bird import Bird
+from birdsim.physics.cycle import evaluate_cycle
+from birdsim.errors import BirdsimError
+from birdsim.physics.kinematics import get_model
+from birdsim.mujoco.callback import aero_forces
+from birdsim.mujoco.driver import trajectory
+from birdsim.mujoco.model import HOLD_TIMECONST_STEPS, build_model
 
 C = np.array([1.0, -1.0, -1.0])
 #: Where the held torso sits (seed earth axes; the height is irrelevant with gravity

@@ -26,10 +26,10 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
-from ..bird import Bird
-from ..errors import BirdsimError
-from ..kinematics import JOINTS, get_model, validate_params
-from .model import SIDES, hinge_axis
+from birdsim.physics.bird import Bird
+from birdsim.errors import BirdsimError
+from birdsim.physics.kinematics import JOINTS, get_model, validate_params
+from birdsim.mujoco.model import SIDES, hinge_axis
 
 #: The core joints composed into the shoulder ball joint, outermost first.
 SHOULDER = ("sweep", "stroke", "flap", "twist")

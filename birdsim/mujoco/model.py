@@ -1,4 +1,4 @@
-"""The articulated bird in MuJoCo, built from the :class:`~birdsim.bird.Bird` with MjSpec.
+"""The articulated bird in MuJoCo, built from the :class:`~birdsim.physics.bird.Bird` with MjSpec.
 
 One source of truth: spans, chords and control points come from ``bird.panels(model)``
 and ``bird.cp_span_fraction``; ``models/bird.xml`` and ``models/scene.xml`` are written
@@ -40,9 +40,9 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
-from ..bird import Bird
-from ..errors import BirdsimError
-from ..kinematics import get_model
+from birdsim.physics.bird import Bird
+from birdsim.errors import BirdsimError
+from birdsim.physics.kinematics import get_model
 
 #: Simulation steps per wingbeat: ``opt.timestep = bird.period / STEPS_PER_WINGBEAT``.
 STEPS_PER_WINGBEAT = 512
@@ -113,7 +113,7 @@ def aero_sites(model_name: str, bird: Bird) -> tuple[AeroSite, ...]:
     With ``bird.strips > 1`` each panel's elements are the core's strips; their offsets
     from the site follow ``kinematics.strip_positions``.
     """
-    from ..kinematics import strip_positions
+    from birdsim.physics.kinematics import strip_positions
 
     get_model(model_name)
     out = []
@@ -366,7 +366,7 @@ def mjcf_texts(bird: Bird | None = None, model_name: str = "m4") -> dict[str, st
 
 def write_mjcf(directory: str | Path, bird: Bird | None = None) -> list[Path]:
     """Write ``bird.xml`` and ``scene.xml`` (m4 layout, default bird unless given)."""
-    from ..io import write_atomic
+    from birdsim.io import write_atomic
 
     out = []
     for name, text in mjcf_texts(bird).items():

@@ -32,9 +32,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .bird import Bird
-from .errors import ParameterError, UnknownModelError
-from .frames import Axis, Vec3, _is_zero, cross_axis, rotate
+from birdsim.physics.bird import Bird
+from birdsim.errors import ParameterError, UnknownModelError
+from birdsim.physics.frames import Axis, Vec3, _is_zero, cross_axis, rotate
 
 PI = math.pi
 

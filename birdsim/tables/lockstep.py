@@ -20,16 +20,16 @@ from typing import Any, TypeVar
 
 import numpy as np
 
-from .bird import Bird
-from .cost import forces
-from .kinematics import KinematicModel
+from birdsim.physics.bird import Bird
+from birdsim.tables.cost import forces
+from birdsim.physics.kinematics import KinematicModel
 
 T = TypeVar("T")
 
 
 class Batcher:
     """Collects ``(X, speed)`` requests of ``parties`` threads and answers them with
-    one call of :func:`birdsim.cost.forces`."""
+    one call of :func:`birdsim.tables.cost.forces`."""
 
     def __init__(self, model: KinematicModel, bird: Bird, n: int, parties: int) -> None:
         self.model, self.bird, self.n = model, bird, n
@@ -85,7 +85,7 @@ def run_lockstep(
     jobs: Sequence[Callable[[Callable[[np.ndarray, float], tuple[np.ndarray, np.ndarray, np.ndarray]]], T]],
 ) -> list[T]:
     """Run ``job(evaluator)`` for every job in its own thread, all evaluations batched.
-    ``evaluator(X, speed) -> (Fx, Fz, P)`` replaces :func:`birdsim.cost.forces`."""
+    ``evaluator(X, speed) -> (Fx, Fz, P)`` replaces :func:`birdsim.tables.cost.forces`."""
     if not jobs:
         return []
     if len(jobs) == 1:

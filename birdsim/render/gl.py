@@ -22,7 +22,7 @@ import ctypes.util
 import os
 import sys
 
-from .errors import BirdsimError
+from birdsim.errors import BirdsimError
 
 #: Allowed values of ``--gl``.
 GL_CHOICES = ("auto", "osmesa", "egl")

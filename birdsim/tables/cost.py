@@ -22,10 +22,10 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
-from .bird import Bird
-from .cycle import evaluate_cycle
-from .errors import BirdsimError
-from .kinematics import KinematicModel
+from birdsim.physics.bird import Bird
+from birdsim.physics.cycle import evaluate_cycle
+from birdsim.errors import BirdsimError
+from birdsim.physics.kinematics import KinematicModel
 
 #: Names of the cost fractions, in the order of the last axis of ``fractions``.
 FRACTION_NAMES = ("force_x", "force_z", "power", "other")

@@ -9,8 +9,8 @@ so encoding overlaps rendering).  The file is written to a temporary sibling and
 renamed into place; a failure or Ctrl-C leaves nothing behind.
 
 Shadows, reflections, skybox and multisampling are off: on the CPU they cost several
-times the frame rate.  Import :mod:`birdsim.gl` rules: the GL back-end is chosen
-(:func:`birdsim.gl.select_gl`) before :mod:`mujoco` is imported, so this module imports
+times the frame rate.  Import :mod:`birdsim.render.gl` rules: the GL back-end is chosen
+(:func:`birdsim.render.gl.select_gl`) before :mod:`mujoco` is imported, so this module imports
 mujoco lazily.
 """
 
@@ -29,12 +29,12 @@ from typing import Any
 
 import numpy as np
 
-from .bird import Bird
-from .errors import BirdsimError
-from .gl import select_gl
-from .io import check_output, temporary_sibling
-from .manoeuvre import Manoeuvre
-from .playback import Playback, TableLike, frame_times, play
+from birdsim.physics.bird import Bird
+from birdsim.errors import BirdsimError
+from birdsim.render.gl import select_gl
+from birdsim.io import check_output, temporary_sibling
+from birdsim.flight.manoeuvre import Manoeuvre
+from birdsim.flight.playback import Playback, TableLike, frame_times, play
 
 CAMERAS = ("track", "side", "top", "overview")
 #: Largest frame side accepted (MuJoCo's offscreen buffer is enlarged to fit).
@@ -138,7 +138,7 @@ class Scene:
     def __init__(self, playback: Playback, options: RenderOptions):
         import mujoco
 
-        from .mujoco.model import aero_sites, build_model
+        from birdsim.mujoco.model import aero_sites, build_model
 
         self._mj = mujoco
         self.playback = playback
@@ -179,7 +179,7 @@ class Scene:
     def _batched_state(self) -> tuple[np.ndarray, np.ndarray]:
         """qpos, qvel of every playback instant at once (the driver's vectorised path;
         ``set_pose`` does the same for one instant)."""
-        from .mujoco.driver import set_root, wing_arrays
+        from birdsim.mujoco.driver import set_root, wing_arrays
 
         pb = self.playback
         qpos, qvel, _ = wing_arrays(self.m, pb.angles, pb.rates, samples=pb.frames)
@@ -440,7 +440,7 @@ def perch_seed_position(model_name: str, bird: Bird) -> tuple[float, float]:
     """(X, Z) in seed axes of the torso when it sits on the MJCF's perch."""
     import mujoco
 
-    from .mujoco.model import build_model
+    from birdsim.mujoco.model import build_model
 
     m = build_model(model_name, bird)
     d = mujoco.MjData(m)
@@ -481,7 +481,7 @@ def contact_sheet(video: str | Path, out: str | Path, *, count: int = 12, column
         sheet.paste(t, ((k % columns) * thumb_width, (k // columns) * th))
     import io
 
-    from .io import write_atomic
+    from birdsim.io import write_atomic
 
     buf = io.BytesIO()
     sheet.save(buf, format="PNG")

@@ -18,11 +18,11 @@ from functools import cached_property
 
 import numpy as np
 
-from .aero import body_drag_x, induced_velocity
-from .bird import Bird
-from .errors import BirdsimError
-from .frames import Vec3, _is_zero, body_to_earth, earth_to_body
-from .kinematics import (
+from birdsim.physics.aero import body_drag_x, induced_velocity
+from birdsim.physics.bird import Bird
+from birdsim.errors import BirdsimError
+from birdsim.physics.frames import Vec3, _is_zero, body_to_earth, earth_to_body
+from birdsim.physics.kinematics import (
     Joint,
     KinematicModel,
     _add,
@@ -273,7 +273,7 @@ def evaluate_cycle(
 
 
 #: The induced-velocity coupling stops when the disc's inflow changes by less than this
-#: (the bisection in :func:`birdsim.aero.induced_velocity` resolves ~1e-16).
+#: (the bisection in :func:`birdsim.physics.aero.induced_velocity` resolves ~1e-16).
 INDUCED_TOL = 1e-10
 INDUCED_MAX_ITERATIONS = 100
 

@@ -50,14 +50,14 @@ from typing import Any
 
 import numpy as np
 
-from .bird import Bird
-from .cost import CostWeights, breakdown_from_forces, forces, other_cost
-from .errors import BirdsimError
-from .io import write_atomic
-from .kinematics import KinematicModel, get_model
-from .lockstep import run_lockstep
-from .optimize import ForceProblem, box_corners, random_starts, slsqp
-from .tables import AXES, STATUS_NAMES, LookupTable
+from birdsim.physics.bird import Bird
+from birdsim.tables.cost import CostWeights, breakdown_from_forces, forces, other_cost
+from birdsim.errors import BirdsimError
+from birdsim.io import write_atomic
+from birdsim.physics.kinematics import KinematicModel, get_model
+from birdsim.tables.lockstep import run_lockstep
+from birdsim.tables.optimize import ForceProblem, box_corners, random_starts, slsqp
+from birdsim.tables.lookup import AXES, STATUS_NAMES, LookupTable
 
 
 # ---- configuration ------------------------------------------------------------------
@@ -287,7 +287,7 @@ def solve_slice(cfg: BuildConfig, iv: int) -> dict[str, np.ndarray]:
 
     The first column (strongest lift demand) is a chain of warm starts from +Fx_max
     down; then every Fx line sweeps Fz upwards, the lines in lockstep (their
-    evaluations batched, :mod:`birdsim.lockstep`); then a backward pass in Fz re-solves
+    evaluations batched, :mod:`birdsim.tables.lockstep`); then a backward pass in Fz re-solves
     each cell from its Fx/Fz neighbours on other branches."""
     model = get_model(cfg.model)
     g = cfg.grid
@@ -588,7 +588,7 @@ def final_check(cfg: BuildConfig, model: KinematicModel, X: np.ndarray) -> dict[
 def finish_table(
     cfg: BuildConfig, model: KinematicModel, X: np.ndarray, evals: np.ndarray, converged: np.ndarray | None = None
 ) -> LookupTable:
-    from . import __version__
+    from birdsim import __version__
 
     chk = final_check(cfg, model, X)
     meta = {

@@ -15,7 +15,7 @@ from typing import ClassVar
 
 import numpy as np
 
-from .errors import BirdConfigError
+from birdsim.errors import BirdConfigError
 
 
 @dataclass(frozen=True)

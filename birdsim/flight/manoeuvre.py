@@ -10,7 +10,7 @@ and after the last keyframe they hold.
 
 The height ``z`` (up, semispans above the floor) is prescribed by the keyframes too
 (the dissertation neglects vertical velocity in the force balance, sec. 4.2.3
-footnote 26); horizontal motion is integrated from V by :mod:`birdsim.playback`.
+footnote 26); horizontal motion is integrated from V by :mod:`birdsim.flight.playback`.
 
 Presets (sec. 4.1 regimes): ``hover`` (V=0, Fx=0, Fz=-0.5), ``cruise`` (V=0.9, Fx=0,
 Fz=-0.2), ``take-off`` (from the perch, V rising from 0 with Fx=0.5, Fz=-0.5, easing to
@@ -30,7 +30,7 @@ from typing import Any
 import numpy as np
 from scipy.interpolate import CubicHermiteSpline, PchipInterpolator
 
-from .errors import BirdsimError
+from birdsim.errors import BirdsimError
 
 if sys.version_info >= (3, 11):
     import tomllib

@@ -19,14 +19,14 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from .errors import BirdsimError
-from .io import write_atomic
+from birdsim.errors import BirdsimError
+from birdsim.io import write_atomic
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
 
-    from .cycle import Cycle
-    from .figdata import ControlPointPaths, WristOptimum
+    from birdsim.physics.cycle import Cycle
+    from birdsim.report.figdata import ControlPointPaths, WristOptimum
 
 FORCE_NOTE = "force = right wing + body drag (dissertation force), seed axes, Fz < 0 is up"
 ND = "non-dimensional"

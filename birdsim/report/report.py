@@ -19,13 +19,13 @@ from pathlib import Path
 
 import numpy as np
 
-from . import figdata as fd
-from . import plots
-from .bird import Bird
-from .cycle import evaluate_cycle
-from .errors import BirdsimError
-from .examples import EXAMPLES
-from .io import write_atomic
+from birdsim.report import figdata as fd
+from birdsim.report import plots
+from birdsim.physics.bird import Bird
+from birdsim.physics.cycle import evaluate_cycle
+from birdsim.errors import BirdsimError
+from birdsim.physics.examples import EXAMPLES
+from birdsim.io import write_atomic
 
 PI = math.pi
 
@@ -53,7 +53,7 @@ class Resolution:
 
     def build_settings(self):
         """Table-build settings of the report's own builds (coarser in quick mode)."""
-        from .build import BuildSettings
+        from birdsim.tables.build import BuildSettings
 
         if not self.quick:
             return BuildSettings(screen=self.table_screen)
@@ -380,9 +380,9 @@ def fig_wrist(ctx: Context) -> list[Entry]:
 
 
 def _cost_function(model: str, demand: tuple[float, float], previous: dict[str, float] | None = None, nu: float = 0.0):
-    """The project cost (birdsim.cost) of a grid, as a :data:`figdata.CostFunction`."""
-    from .cost import CostWeights, breakdown_from_forces, other_cost
-    from .kinematics import get_model
+    """The project cost (birdsim.tables.cost) of a grid, as a :data:`figdata.CostFunction`."""
+    from birdsim.tables.cost import CostWeights, breakdown_from_forces, other_cost
+    from birdsim.physics.kinematics import get_model
 
     m = get_model(model)
     weights = CostWeights(distance=nu)
@@ -641,7 +641,7 @@ def _sweeps(ctx: Context, model: str):
     """Forward (from the upper bounds at V = 0, sec. 4.1.1) and backward (from the
     cruise guess at V = 1) passes; m4 as Fig 52: Fx = 0, stroke plane held at 0, the
     backward pass from small shoulder and large wrist values."""
-    from .kinematics import get_model
+    from birdsim.physics.kinematics import get_model
 
     m = get_model(model)
     speeds = np.linspace(0.0, 1.0, ctx.res.sweep_speeds)
@@ -670,7 +670,7 @@ _SWEEP_SAID = {
 
 
 def _sweep_claims(model: str, fwd: fd.SpeedSweep, bwd: fd.SpeedSweep, base_fwd: fd.SpeedSweep | None) -> list[Claim]:
-    from .kinematics import get_model
+    from birdsim.physics.kinematics import get_model
 
     m = get_model(model)
     col = {n: fwd.params[:, i] for i, n in enumerate(fwd.param_names)}
@@ -716,7 +716,7 @@ def _missed(sw: fd.SpeedSweep, demand: tuple[float, float]) -> np.ndarray:
 
 
 def fig_sweeps(ctx: Context) -> list[Entry]:
-    from .kinematics import get_model
+    from birdsim.physics.kinematics import get_model
 
     entries = []
     base_fwd = None
@@ -766,7 +766,7 @@ def fig_sweeps(ctx: Context) -> list[Entry]:
         )
         if model == "base":
             base_fractions = fwd
-    from .cost import FRACTION_NAMES
+    from birdsim.tables.cost import FRACTION_NAMES
 
     strong = (SMALL_DEMAND[0], -0.5)  # the largest upward demand of the default grid
     speeds = base_fractions.speeds
@@ -810,12 +810,12 @@ TABLE_FOLDER = Path(__file__).resolve().parents[1] / "tables"
 
 def _table(ctx: Context, model: str):
     """The committed table of ``model`` if there is one, else a small one built here."""
-    from .tables import load_table, table_paths
+    from birdsim.tables.lookup import load_table, table_paths
 
     npz, _ = table_paths(TABLE_FOLDER / model)
     if npz.exists() and not ctx.res.quick:
         return load_table(npz), f"committed table {npz.relative_to(TABLE_FOLDER.parent)}"
-    from .build import BuildConfig, Grid, build_table
+    from birdsim.tables.build import BuildConfig, Grid, build_table
 
     k = ctx.res.table_grid
     grid = Grid.parse("V=" + "|".join(f"{v:g}" for v in TABLE_SPEEDS), size=k)
@@ -825,7 +825,7 @@ def _table(ctx: Context, model: str):
 
 
 def fig_tables(ctx: Context) -> list[Entry]:
-    from .kinematics import get_model
+    from birdsim.physics.kinematics import get_model
 
     entries = []
     for model in ("base", "m1", "m2", "m3", "m4"):
@@ -926,8 +926,8 @@ def fig_optimisers(ctx: Context) -> list[Entry]:
 def _build_time(ctx: Context) -> Entry:
     import platform
 
-    from .build import BuildConfig, Grid, build_table
-    from .kinematics import get_model
+    from birdsim.tables.build import BuildConfig, Grid, build_table
+    from birdsim.physics.kinematics import get_model
 
     k = ctx.res.build_grid
     models = ("base", "m1", "m2", "m3", "m4")

@@ -14,7 +14,7 @@ The chain, per instant ``t``:
    (:meth:`KinematicModel.joint_motion`), now with slowly varying coefficients:
    ``q = a(t) sin(phi + c(t)) + b(t)`` and
    ``q' = a' sin(.) + a (omega + c') cos(.) + b'`` -- so with constant parameters the
-   playback equals the analytic wingbeat of :mod:`birdsim.cycle`, and rates are the
+   playback equals the analytic wingbeat of :mod:`birdsim.physics.cycle`, and rates are the
    exact time derivative of the angles;
 6. body pitch = the table's ``pitch`` parameter (smoothed likewise), the body moves
    forward at the (table-clipped) V, ``x = integral of V dt``, and at the prescribed
@@ -37,14 +37,14 @@ import numpy as np
 from scipy.interpolate import CubicSpline
 from scipy.signal import lfilter
 
-from .bird import Bird
-from .errors import BirdsimError
-from .kinematics import KinematicModel, get_model
-from .manoeuvre import DEMANDS, PERCH_HEIGHT, Manoeuvre
+from birdsim.physics.bird import Bird
+from birdsim.errors import BirdsimError
+from birdsim.physics.kinematics import KinematicModel, get_model
+from birdsim.flight.manoeuvre import DEMANDS, PERCH_HEIGHT, Manoeuvre
 
 
 class TableLike(Protocol):
-    """What playback needs of a lookup table (birdsim.tables.LookupTable)."""
+    """What playback needs of a lookup table (birdsim.tables.lookup.LookupTable)."""
 
     model: str
     param_names: Sequence[str]

@@ -25,11 +25,11 @@ from typing import Any
 import numpy as np
 from scipy.interpolate import RegularGridInterpolator
 
-from .bird import Bird
-from .cost import FRACTION_NAMES
-from .errors import BirdsimError
-from .io import check_output, write_atomic
-from .kinematics import MODELS
+from birdsim.physics.bird import Bird
+from birdsim.tables.cost import FRACTION_NAMES
+from birdsim.errors import BirdsimError
+from birdsim.io import check_output, write_atomic
+from birdsim.physics.kinematics import MODELS
 
 #: Bump when the file layout changes; tables of another version are refused on load.
 TABLE_FORMAT_VERSION = 1

@@ -18,8 +18,8 @@ from dataclasses import asdict, dataclass, field, fields, replace
 from pathlib import Path
 from typing import Any
 
-from .aero import Polar, SeedPolar, polar_from_dict
-from .errors import BirdConfigError
+from birdsim.physics.aero import Polar, SeedPolar, polar_from_dict
+from birdsim.errors import BirdConfigError
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -130,7 +130,7 @@ class Bird:
     def to_toml(self, path: str | Path) -> None:
         import tomli_w
 
-        from .io import write_atomic
+        from birdsim.io import write_atomic
 
         write_atomic(Path(path), tomli_w.dumps(self.to_dict()).encode())
 

@@ -24,10 +24,10 @@ import numpy as np
 from scipy import optimize as so
 from scipy.stats import qmc
 
-from .bird import Bird
-from .cost import CostWeights, forces, other_cost
-from .errors import BirdsimError, check_finite
-from .kinematics import KinematicModel, get_model
+from birdsim.physics.bird import Bird
+from birdsim.tables.cost import CostWeights, forces, other_cost
+from birdsim.errors import BirdsimError, check_finite
+from birdsim.physics.kinematics import KinematicModel, get_model
 
 #: Central-difference step (rad) of the batched gradients: truncation error ~h^2 f''',
 #: round-off ~1e-16/h; 1e-6 keeps both below 1e-9 for these O(1) smooth functions.
@@ -105,7 +105,7 @@ class FunctionProblem(Problem):
 
 class ForceProblem(Problem):
     """Find the wingbeat of ``model`` that delivers (Fx_d, Fz_d) at speed V for the least
-    cost (:mod:`birdsim.cost`).  ``n`` samples per wingbeat in the search."""
+    cost (:mod:`birdsim.tables.cost`).  ``n`` samples per wingbeat in the search."""
 
     def __init__(
         self,

@@ -15,11 +15,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .aero import Polar
-from .bird import Bird
-from .cycle import evaluate_cycle
-from .frames import body_to_earth
-from .kinematics import get_model, joint_states, panel_to_body, points_in_body
+from birdsim.physics.aero import Polar
+from birdsim.physics.bird import Bird
+from birdsim.physics.cycle import evaluate_cycle
+from birdsim.physics.frames import body_to_earth
+from birdsim.physics.kinematics import get_model, joint_states, panel_to_body, points_in_body
 
 #: Flatten batches larger than this into chunks (parameter sets per evaluate_cycle call).
 CHUNK = 8192
@@ -270,7 +270,7 @@ class SpeedSweep:
     """Optimal wingbeats over speed for one demand, solved in order with warm starts.
 
     ``params`` is len(speeds) x d (columns ``param_names``); ``fractions`` the cost
-    fractions (``birdsim.cost.FRACTION_NAMES``) of each solution, len(speeds) x 4."""
+    fractions (``birdsim.tables.cost.FRACTION_NAMES``) of each solution, len(speeds) x 4."""
 
     model: str
     direction: str  # "forward" (V increasing) or "backward"
@@ -296,9 +296,9 @@ def speed_sweep(
     """Sec. 4.1.1 'updating solutions': SLSQP at each speed in turn, started from the
     previous speed's optimum (the first from ``start``); ``backward`` runs from the
     highest speed down.  ``fixed`` pins parameters (both bounds set to the value, e.g.
-    m4's stroke plane in Fig 52).  Uses :class:`birdsim.optimize.ForceProblem`."""
-    from .cost import CostWeights, evaluate_cost
-    from .optimize import ForceProblem, slsqp
+    m4's stroke plane in Fig 52).  Uses :class:`birdsim.tables.optimize.ForceProblem`."""
+    from birdsim.tables.cost import CostWeights, evaluate_cost
+    from birdsim.tables.optimize import ForceProblem, slsqp
 
     m = get_model(model)
     bird = bird or Bird()
@@ -357,8 +357,8 @@ class OptimiserRun:
 
 
 def optimiser_run(function: str, method: str, *, x0: Sequence[float] | None = None, nodes: int = 12, seed: int = 0) -> OptimiserRun:
-    """Run one of ``birdsim.optimize``'s solvers on f or g, recording each evaluation."""
-    from .optimize import FunctionProblem, complete_search, evolutionary, slsqp
+    """Run one of ``birdsim.tables.optimize``'s solvers on f or g, recording each evaluation."""
+    from birdsim.tables.optimize import FunctionProblem, complete_search, evolutionary, slsqp
 
     fun = {"f": test_function_f, "g": test_function_g}[function]
     seen: list[np.ndarray] = []

@@ -1,0 +1,1 @@
+"""Stage 3, flight: manoeuvres, playback of tables along a manoeuvre."""

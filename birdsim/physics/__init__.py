@@ -1,0 +1,1 @@
+"""Stage 1, physics: frames, the bird, aerodynamics, kinematic models, one wingbeat."""

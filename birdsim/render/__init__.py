@@ -1,0 +1,1 @@
+"""Stage 5, pictures: GL selection, offscreen renderer, overlay, MP4."""

@@ -1,0 +1,1 @@
+"""Stage 2, optimal wingbeats: cost, optimisers, table builds, lookup tables."""
