@@ -44,7 +44,13 @@ class PanelGeometry:
 
 @dataclass(frozen=True)
 class Bird:
-    """Geometry, coefficients and flapping frequency of one (right) wing and its body."""
+    """Geometry, coefficients and flapping frequency of one (right) wing and its body.
+
+    ``mass`` is the whole bird's [mass units of the bird file: kg for an SI bird];
+    ``gravity`` its gravitational acceleration [length / time^2], 0 = weightless (the
+    first-stage default; free flight needs a bird file that sets it). Reference scales and
+    the reduced (non-dimensional) bird that tables are built for: :mod:`birdsim.physics.units`.
+    """
 
     name: str = "seed"
     semispan: float = 1.0
@@ -60,6 +66,7 @@ class Bird:
     induced_velocity: bool = False
     disc_area: float = math.pi
     mass: float = 1.0
+    gravity: float = 0.0
     polar: Polar = field(default_factory=SeedPolar)
 
     def __post_init__(self) -> None:
@@ -73,7 +80,7 @@ class Bird:
             v = getattr(self, name)
             if not (isinstance(v, (int, float)) and 0.0 <= v <= 1.0):
                 raise BirdConfigError(f"bird.{name}={v!r} is invalid; allowed: a number in [0, 1]")
-        for name in ("wrist_twist_ratio", "body_drag_area"):
+        for name in ("wrist_twist_ratio", "body_drag_area", "gravity"):
             v = getattr(self, name)
             if not (isinstance(v, (int, float)) and math.isfinite(v) and v >= 0):
                 raise BirdConfigError(f"bird.{name}={v!r} is invalid; allowed: a finite number >= 0")
