@@ -1,0 +1,171 @@
+"""The posed MuJoCo bird and its offscreen renderer: :class:`Scene` draws any
+:class:`~birdsim.render.states.StateSequence` (a Playback is adapted on the way in).
+
+Pipeline per frame: state ``qpos``/``qvel`` -> kinematics -> ``mujoco.Renderer.
+update_scene`` (camera ``track``, ``side``, ``top`` or ``overview`` of the MJCF) ->
+decorations (CP pathlines, reference path) -> render -> sky and overlay in the pixels.
+
+Shadows, reflections, skybox and multisampling are off: on the CPU they cost several
+times the frame rate.  :mod:`birdsim.render.gl` rules: the GL back-end is chosen before
+:mod:`mujoco` is imported, so this module imports mujoco lazily.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from birdsim.flight.playback import Playback
+from birdsim.render.decor import add_polyline, add_trails, trail_window
+from birdsim.render.options import CAMERAS, RenderError, RenderOptions
+from birdsim.render.overlay import draw_overlay, fill_sky, font_for_height
+from birdsim.render.states import StateSequence, states_from_playback
+
+
+class Scene:
+    """A posed MuJoCo bird with an offscreen renderer; use as a context manager.
+
+    ``Scene(states, options)``: ``states`` a :class:`StateSequence` (or a
+    :class:`Playback` from :func:`~birdsim.render.states.play_for_video`, adapted with
+    ``options.trail_substeps`` instants per frame).  It builds the MJCF of the states'
+    model and bird, enlarges the offscreen buffer when needed, turns the costly effects
+    off and precomputes the CP pathlines.  ``rgb(i)`` renders video frame ``i``
+    (overlay included), ``segmentation(i)`` the (object id, object type) image of the
+    same view.
+    """
+
+    def __init__(self, states: StateSequence | Playback, options: RenderOptions):
+        import mujoco
+
+        from birdsim.mujoco.model import aero_sites, build_model
+
+        self._mj = mujoco
+        self.playback = states if isinstance(states, Playback) else None
+        self.options = options
+        self.m = build_model(states.model.name if isinstance(states, Playback) else states.model, states.bird)
+        if isinstance(states, Playback):
+            states = states_from_playback(states, max(1, int(options.trail_substeps)), m=self.m)
+        if states.qpos.shape[1] != self.m.nq or states.qvel.shape[1] != self.m.nv:
+            raise RenderError(f"states have nq={states.qpos.shape[1]}, nv={states.qvel.shape[1]}; the model {states.model!r} has nq={self.m.nq}, nv={self.m.nv}")
+        self.states = states
+        self.sub = states.instants_per_frame
+        self.frames = states.frames
+        self.m.vis.global_.offwidth = max(int(self.m.vis.global_.offwidth), options.width)
+        self.m.vis.global_.offheight = max(int(self.m.vis.global_.offheight), options.height)
+        self.m.vis.quality.offsamples = 0
+        self.m.vis.quality.shadowsize = 0
+        floor = mujoco.mj_name2id(self.m, mujoco.mjtObj.mjOBJ_GEOM, "floor")
+        if floor >= 0 and self.m.geom_type[floor] == mujoco.mjtGeom.mjGEOM_PLANE:
+            self.m.geom_size[floor][:2] = 0.0  # drawn without edges (this copy only renders)
+        self.d = mujoco.MjData(self.m)
+        self.renderer = mujoco.Renderer(self.m, options.height, options.width, max_geom=4000)
+        flags = self.renderer.scene.flags
+        for flag in ("mjRND_SHADOW", "mjRND_REFLECTION", "mjRND_SKYBOX", "mjRND_FOG", "mjRND_HAZE"):
+            if hasattr(mujoco.mjtRndFlag, flag):
+                flags[getattr(mujoco.mjtRndFlag, flag)] = 0
+        self.camera = self._camera(options.camera)
+        self.option = mujoco.MjvOption()
+        self.sites = [s.site for s in aero_sites(states.model, states.bird)]
+        self.site_ids = [mujoco.mj_name2id(self.m, mujoco.mjtObj.mjOBJ_SITE, s) for s in self.sites]
+        self.trails = self._trails() if options.trails else None
+        self._font = None
+
+    # ---- set-up ----------------------------------------------------------------------
+
+    def _camera(self, name: str) -> Any:
+        mj = self._mj
+        cid = mj.mj_name2id(self.m, mj.mjtObj.mjOBJ_CAMERA, name)
+        if cid < 0:
+            raise RenderError(f"--camera {name!r} is not in the MuJoCo model; allowed: {', '.join(CAMERAS)}")
+        return cid
+
+    def pose_instant(self, k: int) -> None:
+        """Pose the bird at instant ``k``: qpos/qvel, then only what drawing needs
+        (kinematics, centre of mass for the tracking cameras, cameras/lights)."""
+        mj = self._mj
+        self.d.qpos[:] = self.states.qpos[k]
+        self.d.qvel[:] = self.states.qvel[k]
+        mj.mj_kinematics(self.m, self.d)
+        mj.mj_comPos(self.m, self.d)
+        mj.mj_camlight(self.m, self.d)
+
+    def _trails(self) -> np.ndarray:
+        """World positions of the CP sites at every instant, (instants, sites, 3)."""
+        out = np.empty((self.states.instants, len(self.site_ids), 3))
+        for k in range(self.states.instants):
+            self.pose_instant(k)
+            out[k] = self.d.site_xpos[self.site_ids]
+        return out
+
+    # ---- per frame -------------------------------------------------------------------
+
+    def instant(self, i: int) -> int:
+        """The state instant video frame ``i`` shows."""
+        return i * self.sub
+
+    def update(self, i: int) -> None:
+        """Pose frame ``i`` and build its scene (bird, camera, decorations)."""
+        self.pose_instant(self.instant(i))
+        self.renderer.update_scene(self.d, camera=self.camera, scene_option=self.option)
+        scn = self.renderer.scene
+        if self.states.reference_path is not None:
+            add_polyline(self._mj, scn, self.states.reference_path)
+        if self.trails is not None:
+            self._add_trails(i)
+
+    def _add_trails(self, i: int) -> None:
+        dt_beats = float(np.median(np.diff(self.states.t_beats))) if self.states.instants > 1 else 1.0
+        keep = max(2, int(round(self.options.trail_beats / max(dt_beats, 1e-12))))
+        add_trails(self._mj, self.renderer.scene, self.trails[trail_window(i, self.sub, keep)], self.sites)
+
+    def finish(self, img: np.ndarray, i: int) -> np.ndarray:
+        """Sky and overlay of frame ``i`` drawn into the rendered pixels (in place)."""
+        fill_sky(img)
+        if self.options.overlay:
+            draw_overlay(img, self.states.overlay_at(self.instant(i)), self._get_font())
+        return img
+
+    def rgb(self, i: int) -> np.ndarray:
+        """Frame ``i`` as (H, W, 3) uint8, overlay included."""
+        self.update(i)
+        return self.finish(self.renderer.render(), i)
+
+    def segmentation(self, i: int) -> np.ndarray:
+        """(H, W, 2): object id and object type per pixel (-1 where nothing)."""
+        self.update(i)
+        self.renderer.enable_segmentation_rendering()
+        try:
+            return self.renderer.render().copy()
+        finally:
+            self.renderer.disable_segmentation_rendering()
+
+    def bird_geoms(self) -> np.ndarray:
+        """Geom ids of the bird (every body below the torso)."""
+        mj = self._mj
+        torso = mj.mj_name2id(self.m, mj.mjtObj.mjOBJ_BODY, "torso")
+        return np.flatnonzero(self.m.body_rootid[self.m.geom_bodyid] == torso)
+
+    def wing_geoms(self) -> np.ndarray:
+        """Geom ids of the wings (bird geoms not on the torso)."""
+        mj = self._mj
+        torso = mj.mj_name2id(self.m, mj.mjtObj.mjOBJ_BODY, "torso")
+        g = self.bird_geoms()
+        return g[self.m.geom_bodyid[g] != torso]
+
+    def _get_font(self) -> Any:
+        if self._font is None:
+            self._font = font_for_height(self.options.height)
+        return self._font
+
+    def close(self) -> None:
+        self.renderer.close()
+
+    def __enter__(self) -> "Scene":
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+
+__all__ = ["Scene"]
