@@ -43,6 +43,8 @@ import numpy as np
 from birdsim.physics.bird import Bird
 from birdsim.errors import BirdsimError
 from birdsim.physics.kinematics import get_model
+from birdsim.mujoco.plumage import plumage_for
+from birdsim.mujoco.visual import add_body_dress, add_materials, add_panel_dress, add_visual_default
 
 #: Simulation steps per wingbeat: ``opt.timestep = bird.period / STEPS_PER_WINGBEAT``.
 STEPS_PER_WINGBEAT = 512
@@ -182,8 +184,12 @@ CAMERAS = {
 }
 
 
-def _add_bird(spec: mujoco.MjSpec, model_name: str, bird: Bird, body_pitch: float) -> None:
+def _add_bird(spec: mujoco.MjSpec, model_name: str, bird: Bird, body_pitch: float, visuals: bool = True) -> None:
     km = get_model(model_name)
+    plumage = plumage_for(bird.name)
+    if visuals:
+        add_visual_default(spec)
+        add_materials(spec, plumage)
     panels = bird.panels(model_name)
     # geometry of the two MuJoCo panels: m4 uses the bird's arm and hand; the
     # single-panel models draw their one panel split at the same wrist (kept straight)
@@ -213,13 +219,15 @@ def _add_bird(spec: mujoco.MjSpec, model_name: str, bird: Bird, body_pitch: floa
         name="tail", type=mujoco.mjtGeom.mjGEOM_BOX, size=[0.22 * s, 0.14 * s, 0.008 * s], pos=[-0.7 * s, 0, 0.02 * s], mass=0.0
     )
     torso.add_site(name="torso_cp", default=spec.find_default("cp"), pos=[0, 0, 0])
+    if visuals:
+        add_body_dress(spec, torso, s)
     for name, pos in CAMERAS.items():
         torso.add_camera(name=name, pos=pos * s, quat=_camera_quat(pos), mode=mujoco.mjtCamLight.mjCAMLIGHT_TRACKCOM)
 
     panel_cls = spec.find_default("panel")
     cp_cls = spec.find_default("cp")
 
-    def panel(body, name: str, span: float, chord: float, sign: float) -> None:
+    def panel(body, name: str, span: float, chord: float, sign: float, kind: str) -> None:
         """Box geom of span x chord along the body's y axis, with its mass and inertia."""
         size = np.array([chord / 2, span / 2, PANEL_THICKNESS * chord / 2])
         body.explicitinertial = True
@@ -230,19 +238,21 @@ def _add_bird(spec: mujoco.MjSpec, model_name: str, bird: Bird, body_pitch: floa
         # which the Bird allows) keeps its named geom as an invisible sliver
         drawn = np.array([size[0], max(size[1], ZERO_SPAN_HALF * chord), size[2]])
         body.add_geom(name=name, default=panel_cls, size=drawn, pos=[0.0, sign * span / 2, 0.0])
+        if visuals:  # the bird's planform over the panel: same span and area, no mass
+            add_panel_dress(spec, body, f"vis_{name.removesuffix('_panel')}", kind, span, chord, sign, plumage.wing_bars)
 
     for side in SIDES:
         sg = span_sign(side)
         arm = torso.add_body(name=f"{side}_arm")
         arm.add_joint(name=f"{side}_heave", type=mujoco.mjtJoint.mjJNT_SLIDE, axis=slide_axis(side, "z"))
         arm.add_joint(name=f"{side}_shoulder", type=mujoco.mjtJoint.mjJNT_BALL)
-        panel(arm, f"{side}_arm_panel", arm_span, arm_chord, sg)
+        panel(arm, f"{side}_arm_panel", arm_span, arm_chord, sg, "arm")
         arm.add_site(name=f"{side}_cp_wing", default=cp_cls, pos=[0.0, sg * bird.cp_span_fraction * s, 0.0])
         arm.add_site(name=f"{side}_cp_arm", default=cp_cls, pos=[0.0, sg * bird.cp_span_fraction * arm_span, 0.0])
         hand = arm.add_body(name=f"{side}_hand", pos=[0.0, sg * arm_span, 0.0])
         hand.add_joint(name=f"{side}_wrist_flap", type=mujoco.mjtJoint.mjJNT_HINGE, axis=hinge_axis(side, "x"))
         hand.add_joint(name=f"{side}_wrist_twist", type=mujoco.mjtJoint.mjJNT_HINGE, axis=hinge_axis(side, "y"))
-        panel(hand, f"{side}_hand_panel", hand_span, hand_chord, sg)
+        panel(hand, f"{side}_hand_panel", hand_span, hand_chord, sg, "hand")
         hand.add_site(name=f"{side}_cp_hand", default=cp_cls, pos=[0.0, sg * bird.cp_span_fraction * hand_span, 0.0])
 
     # hold the torso to the world where it was built (used by the cross-check)
@@ -291,21 +301,23 @@ def _add_key(spec: mujoco.MjSpec, m: mujoco.MjModel) -> None:
 
 
 def build_spec(
-    model_name: str = "m4", bird: Bird | None = None, *, scene: bool = True, body_pitch: float = 0.0
+    model_name: str = "m4", bird: Bird | None = None, *, scene: bool = True, body_pitch: float = 0.0, visuals: bool = True
 ) -> mujoco.MjSpec:
     """The MjSpec of the bird for kinematic ``model_name`` (base, m1..m4).
 
     ``scene`` adds the arena (floor, light, perch, overview camera).  ``body_pitch``
     (rad, nose up) is the torso's build pose: the weld ``hold`` keeps it there.
     Every model has the same joints (nq = 7 + 2 * 8, nv = 6 + 2 * 7); a kinematic model
-    only moves the ones it uses (see :mod:`birdsim.mujoco.driver`).
+    only moves the ones it uses (see :mod:`birdsim.mujoco.driver`).  ``visuals`` adds
+    the bird for the eye (:mod:`birdsim.mujoco.visual`: massless, contact-free geoms
+    in group 2; the dynamics are identical without them).
     """
     bird = bird or Bird()
     spec = mujoco.MjSpec()
     spec.modelname = f"birdsim_{get_model(model_name).name}"
     _add_options(spec, bird)
     _add_defaults(spec)
-    _add_bird(spec, model_name, bird, body_pitch)
+    _add_bird(spec, model_name, bird, body_pitch, visuals)
     if scene:
         _add_arena(spec, bird)
     m = spec.compile()
@@ -314,7 +326,7 @@ def build_spec(
 
 
 def build_model(
-    model_name: str = "m4", bird: Bird | None = None, *, scene: bool = True, body_pitch: float = 0.0
+    model_name: str = "m4", bird: Bird | None = None, *, scene: bool = True, body_pitch: float = 0.0, visuals: bool = True
 ) -> mujoco.MjModel:
     """Compiled MjModel of the bird (see :func:`build_spec`).
 
@@ -326,7 +338,7 @@ def build_model(
     """
     if not isinstance(body_pitch, (int, float)) or not math.isfinite(body_pitch):
         raise BirdsimError(f"body_pitch={body_pitch!r} is invalid; allowed: a finite angle in radians")
-    return build_spec(model_name, bird, scene=scene, body_pitch=body_pitch).compile()
+    return build_spec(model_name, bird, scene=scene, body_pitch=body_pitch, visuals=visuals).compile()
 
 
 SCENE_INCLUDE = '  <include file="bird.xml"/>\n'

@@ -66,6 +66,7 @@ class Scene:
                 flags[getattr(mujoco.mjtRndFlag, flag)] = 0
         self.camera = self._camera(options.camera)
         self.option = mujoco.MjvOption()
+        self.option.geomgroup[1] = 0  # the physical bird (panels as boxes): the visual bird (group 2) is drawn
         self.sites = [s.site for s in aero_sites(states.model, states.bird)]
         self.site_ids = [mujoco.mj_name2id(self.m, mujoco.mjtObj.mjOBJ_SITE, s) for s in self.sites]
         self.trails = self._trails() if options.trails else None
