@@ -137,7 +137,8 @@ def test_visual_geoms_change_no_dynamics(name):
     bird = Bird(gravity=9.81)
     with_vis, without = build_model(name, bird), build_model(name, bird, visuals=False)
     assert with_vis.ngeom > without.ngeom + 20  # the visual bird is there
-    vis = np.flatnonzero(with_vis.geom_group == VISUAL_GROUP)
+    torso = with_vis.body("torso").id
+    vis = np.flatnonzero((with_vis.geom_group == VISUAL_GROUP) & (with_vis.body_rootid[with_vis.geom_bodyid] == torso))
     assert len(vis) == with_vis.ngeom - without.ngeom
     assert np.all(with_vis.geom_contype[vis] == 0) and np.all(with_vis.geom_conaffinity[vis] == 0)
     for attr in ("body_mass", "body_inertia", "body_ipos", "body_iquat", "body_pos", "jnt_axis", "dof_armature", "site_pos"):

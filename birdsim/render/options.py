@@ -15,7 +15,34 @@ from pathlib import Path
 from birdsim.errors import BirdsimError
 from birdsim.flight.manoeuvre import Manoeuvre
 
-CAMERAS = ("track", "side", "top", "overview")
+CAMERAS = ("track", "chase", "side", "top", "overview")
+#: What each camera shows (``--camera list``).
+CAMERA_HELP = {
+    "track": "follows the bird from behind, beside and above (critically damped)",
+    "chase": "behind and above the bird, looking along its path (critically damped)",
+    "side": "beside the bird at its height, the flight path across the frame",
+    "top": "straight down on the bird",
+    "overview": "fixed, far to the side: keeps the whole manoeuvre in frame",
+}
+
+
+@dataclass(frozen=True)
+class Quality:
+    """Costly effects of one ``--quality`` level (their measured cost: docs/rendering.md)."""
+
+    name: str
+    shadowsize: int  # shadow map side in texels, 0 = no shadows
+    samples: int  # multisampling (anti-aliasing) samples, 0 = off
+    skybox: bool  # the sky gradient drawn by MuJoCo (else a flat colour behind the scene)
+    haze: bool  # the ground fades into the sky at the horizon
+    textures: bool  # checker ground, bark
+
+
+QUALITIES = {
+    "draft": Quality("draft", shadowsize=0, samples=0, skybox=False, haze=False, textures=True),
+    "good": Quality("good", shadowsize=1024, samples=0, skybox=True, haze=True, textures=True),
+    "best": Quality("best", shadowsize=2048, samples=4, skybox=True, haze=True, textures=True),
+}
 #: Largest frame side accepted (MuJoCo's offscreen buffer is enlarged to fit).
 MAX_SIDE = 4096
 MAX_SECONDS = 3600.0  # longest video (--seconds, or the whole manoeuvre at --beat-rate)
@@ -40,6 +67,8 @@ class RenderOptions:
     trail_beats: float = 1.0
     trail_substeps: int = 4
     overlay: bool = True
+    quality: str = "good"
+    forces: float | None = None  # force arrows: length per weight in semispans (None = no arrows)
     gl: str = "auto"
     crf: int = 23
     preset: str = "veryfast"
@@ -58,8 +87,17 @@ class RenderOptions:
             raise RenderError(f"--beat-rate {self.beats_per_second!r} is invalid; allowed: wingbeats per second in (0, 100]")
         if self.camera not in CAMERAS:
             raise RenderError(f"--camera {self.camera!r} is unknown; allowed: {', '.join(CAMERAS)}")
+        if self.quality not in QUALITIES:
+            raise RenderError(f"--quality {self.quality!r} is unknown; allowed: {', '.join(QUALITIES)}")
+        if self.forces is not None and not (isinstance(self.forces, (int, float)) and not isinstance(self.forces, bool) and math.isfinite(self.forces) and 0 < self.forces <= 1e6):
+            raise RenderError(f"--forces {self.forces!r} is invalid; allowed: a positive number (arrow length of one weight, in semispans)")
         if not (0 <= self.crf <= 51):
             raise RenderError(f"crf={self.crf!r} is invalid; allowed: 0..51")
+
+    @property
+    def look(self) -> Quality:
+        """The :class:`Quality` of ``quality``."""
+        return QUALITIES[self.quality]
 
     def duration(self, manoeuvre: Manoeuvre) -> float:
         """Seconds of video; one clear line when the whole manoeuvre would exceed an hour."""
@@ -104,4 +142,4 @@ class RenderResult:
         return self.video_seconds / self.wall_seconds if self.wall_seconds > 0 else float("inf")
 
 
-__all__ = ["CAMERAS", "MAX_SECONDS", "MAX_SIDE", "RenderError", "RenderOptions", "RenderResult", "parse_size"]
+__all__ = ["CAMERAS", "CAMERA_HELP", "MAX_SECONDS", "MAX_SIDE", "QUALITIES", "Quality", "RenderError", "RenderOptions", "RenderResult", "parse_size"]

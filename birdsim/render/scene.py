@@ -17,6 +17,7 @@ from typing import Any
 import numpy as np
 
 from birdsim.flight.playback import Playback
+from birdsim.render.camera import CameraPose, camera_path
 from birdsim.render.decor import add_polyline, add_trails, trail_window
 from birdsim.render.options import CAMERAS, RenderError, RenderOptions
 from birdsim.render.overlay import draw_overlay, fill_sky, font_for_height
@@ -53,33 +54,57 @@ class Scene:
         self.frames = states.frames
         self.m.vis.global_.offwidth = max(int(self.m.vis.global_.offwidth), options.width)
         self.m.vis.global_.offheight = max(int(self.m.vis.global_.offheight), options.height)
-        self.m.vis.quality.offsamples = 0
-        self.m.vis.quality.shadowsize = 0
+        look = options.look
+        self.m.vis.quality.offsamples = look.samples
+        self.m.vis.quality.shadowsize = look.shadowsize
+        if not look.textures:
+            self.m.geom_matid[:] = np.where(self.m.geom_group == 0, -1, self.m.geom_matid)  # arena plain
         floor = mujoco.mj_name2id(self.m, mujoco.mjtObj.mjOBJ_GEOM, "floor")
         if floor >= 0 and self.m.geom_type[floor] == mujoco.mjtGeom.mjGEOM_PLANE:
             self.m.geom_size[floor][:2] = 0.0  # drawn without edges (this copy only renders)
+        # shadow box of +-3 semispans around the bird (the scene's extent would blur it)
+        self._s = float(states.bird.semispan)
+        self.m.vis.map.shadowclip = 3.0 * self._s / float(self.m.stat.extent)
+        self._sun = mujoco.mj_name2id(self.m, mujoco.mjtObj.mjOBJ_LIGHT, "sun")
+        self._torso = mujoco.mj_name2id(self.m, mujoco.mjtObj.mjOBJ_BODY, "torso")
         self.d = mujoco.MjData(self.m)
         self.renderer = mujoco.Renderer(self.m, options.height, options.width, max_geom=4000)
         flags = self.renderer.scene.flags
-        for flag in ("mjRND_SHADOW", "mjRND_REFLECTION", "mjRND_SKYBOX", "mjRND_FOG", "mjRND_HAZE"):
-            if hasattr(mujoco.mjtRndFlag, flag):
-                flags[getattr(mujoco.mjtRndFlag, flag)] = 0
-        self.camera = self._camera(options.camera)
+        rnd = mujoco.mjtRndFlag
+        flags[rnd.mjRND_SHADOW] = int(look.shadowsize > 0)
+        flags[rnd.mjRND_SKYBOX] = int(look.skybox)
+        flags[rnd.mjRND_HAZE] = int(look.haze)
+        flags[rnd.mjRND_REFLECTION] = 0
+        flags[rnd.mjRND_FOG] = 0
+        self.camera = mujoco.MjvCamera()
+        self.camera.type = mujoco.mjtCamera.mjCAMERA_FREE
         self.option = mujoco.MjvOption()
         self.option.geomgroup[1] = 0  # the physical bird (panels as boxes): the visual bird (group 2) is drawn
         self.sites = [s.site for s in aero_sites(states.model, states.bird)]
         self.site_ids = [mujoco.mj_name2id(self.m, mujoco.mjtObj.mjOBJ_SITE, s) for s in self.sites]
-        self.trails = self._trails() if options.trails else None
+        self.paths, self.torso_path, self.heading = self._precompute()
+        self.trails = self.paths if options.trails else None
+        self.poses = self._camera_poses(options.camera)
         self._font = None
 
     # ---- set-up ----------------------------------------------------------------------
 
-    def _camera(self, name: str) -> Any:
+    def _camera_poses(self, name: str) -> list[CameraPose]:
+        """One camera pose per video frame (see :mod:`birdsim.render.camera`)."""
         mj = self._mj
-        cid = mj.mj_name2id(self.m, mj.mjtObj.mjOBJ_CAMERA, name)
-        if cid < 0:
-            raise RenderError(f"--camera {name!r} is not in the MuJoCo model; allowed: {', '.join(CAMERAS)}")
-        return cid
+        if name not in CAMERAS:
+            raise RenderError(f"--camera {name!r} is unknown; allowed: {', '.join(CAMERAS)}")
+        extra = []
+        sid = mj.mj_name2id(self.m, mj.mjtObj.mjOBJ_SITE, "perch_top")
+        if sid >= 0:
+            top = self.d.site_xpos[sid].copy()
+            extra += [top, top * np.array([1.0, 1.0, 0.0])]
+        if self.states.reference_path is not None:
+            extra += list(self.states.reference_path)
+        aspect = self.options.width / self.options.height
+        poses = camera_path(name, self.torso_path, self.heading, self.states.t_beats, 2.0 * self.states.bird.semispan,
+                            float(self.m.vis.global_.fovy), aspect, np.array(extra) if extra else None)
+        return [poses[self.instant(i)] for i in range(self.frames)]
 
     def pose_instant(self, k: int) -> None:
         """Pose the bird at instant ``k``: qpos/qvel, then only what drawing needs
@@ -90,14 +115,23 @@ class Scene:
         mj.mj_kinematics(self.m, self.d)
         mj.mj_comPos(self.m, self.d)
         mj.mj_camlight(self.m, self.d)
+        if self._sun >= 0:  # the sun's shadow box (directional light) centred on the bird
+            self.d.light_xpos[self._sun] = self.d.xpos[self._torso] - self.d.light_xdir[self._sun] * 4.0 * self._s
 
-    def _trails(self) -> np.ndarray:
-        """World positions of the CP sites at every instant, (instants, sites, 3)."""
-        out = np.empty((self.states.instants, len(self.site_ids), 3))
-        for k in range(self.states.instants):
+    def _precompute(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """One pass over every instant: CP site positions (instants, sites, 3), torso
+        position (instants, 3) and forward direction (instants, 3), world."""
+        n = self.states.instants
+        sites = np.empty((n, len(self.site_ids), 3))
+        torso = np.empty((n, 3))
+        heading = np.empty((n, 3))
+        tid = self._mj.mj_name2id(self.m, self._mj.mjtObj.mjOBJ_BODY, "torso")
+        for k in range(n):
             self.pose_instant(k)
-            out[k] = self.d.site_xpos[self.site_ids]
-        return out
+            sites[k] = self.d.site_xpos[self.site_ids]
+            torso[k] = self.d.xpos[tid]
+            heading[k] = self.d.xmat[tid].reshape(3, 3)[:, 0]
+        return sites, torso, heading
 
     # ---- per frame -------------------------------------------------------------------
 
@@ -108,6 +142,11 @@ class Scene:
     def update(self, i: int) -> None:
         """Pose frame ``i`` and build its scene (bird, camera, decorations)."""
         self.pose_instant(self.instant(i))
+        pose = self.poses[i]
+        self.camera.lookat[:] = pose.lookat
+        self.camera.distance = pose.distance
+        self.camera.azimuth = pose.azimuth
+        self.camera.elevation = pose.elevation
         self.renderer.update_scene(self.d, camera=self.camera, scene_option=self.option)
         scn = self.renderer.scene
         if self.states.reference_path is not None:
