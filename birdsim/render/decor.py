@@ -33,6 +33,21 @@ def add_segment(mj: Any, scn: Any, a: np.ndarray, b: np.ndarray, rgba: Sequence[
     return True
 
 
+def add_arrow(mj: Any, scn: Any, a: np.ndarray, b: np.ndarray, rgba: Sequence[float], width: float) -> bool:
+    """Append an arrow from ``a`` to ``b`` (world) of shaft radius ``width``; nothing for
+    a zero-length arrow; False when the scene is full."""
+    if scn.ngeom >= scn.maxgeom:
+        return False
+    if float(np.linalg.norm(np.asarray(b) - np.asarray(a))) < 1e-9 * max(width, 1e-300):
+        return True
+    g = scn.geoms[scn.ngeom]
+    mj.mjv_initGeom(g, mj.mjtGeom.mjGEOM_ARROW, np.zeros(3), np.zeros(3), np.eye(3).ravel(), np.asarray(rgba, dtype=np.float32))
+    mj.mjv_connector(g, mj.mjtGeom.mjGEOM_ARROW, float(width), np.asarray(a, dtype=float), np.asarray(b, dtype=float))
+    g.segid = -1
+    scn.ngeom += 1
+    return True
+
+
 def add_trails(mj: Any, scn: Any, points: np.ndarray, site_names: Sequence[str], width: float = 3.0) -> None:
     """Pathlines of each site through ``points`` (instants, sites, 3), oldest first,
     fading in from transparent."""
@@ -65,4 +80,4 @@ def trail_window(frame: int, instants_per_frame: int, keep: int) -> slice:
     return slice(max(0, end - keep), end)
 
 
-__all__ = ["add_polyline", "add_segment", "add_trails", "trail_window"]
+__all__ = ["add_arrow", "add_polyline", "add_segment", "add_trails", "trail_window"]

@@ -18,9 +18,10 @@ import numpy as np
 
 from birdsim.flight.playback import Playback
 from birdsim.render.camera import CameraPose, camera_path
-from birdsim.render.decor import add_polyline, add_trails, trail_window
+from birdsim.render.decor import add_arrow, add_polyline, add_trails, trail_window
+from birdsim.render.forces import ARM_RGBA, DRAG_RGBA, HAND_RGBA, dissertation_force, site_forces, weight, wingbeat_mean
 from birdsim.render.options import CAMERAS, RenderError, RenderOptions
-from birdsim.render.overlay import draw_overlay, fill_sky, font_for_height
+from birdsim.render.overlay import PlotStrip, draw_overlay, fill_sky, font_for_height, force_lines, legend_line
 from birdsim.render.states import StateSequence, states_from_playback
 
 
@@ -80,12 +81,14 @@ class Scene:
         self.camera.type = mujoco.mjtCamera.mjCAMERA_FREE
         self.option = mujoco.MjvOption()
         self.option.geomgroup[1] = 0  # the physical bird (panels as boxes): the visual bird (group 2) is drawn
-        self.sites = [s.site for s in aero_sites(states.model, states.bird)]
+        self.aero = aero_sites(states.model, states.bird)
+        self.sites = [s.site for s in self.aero]
         self.site_ids = [mujoco.mj_name2id(self.m, mujoco.mjtObj.mjOBJ_SITE, s) for s in self.sites]
         self.paths, self.torso_path, self.heading = self._precompute()
         self.trails = self.paths if options.trails else None
         self.poses = self._camera_poses(options.camera)
         self._font = None
+        self._strip: PlotStrip | None = None
 
     # ---- set-up ----------------------------------------------------------------------
 
@@ -120,18 +123,40 @@ class Scene:
 
     def _precompute(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """One pass over every instant: CP site positions (instants, sites, 3), torso
-        position (instants, 3) and forward direction (instants, 3), world."""
+        position (instants, 3) and forward direction (instants, 3), world; and the
+        aerodynamic forces (:attr:`cp_forces`, :attr:`drag`, :attr:`achieved`)."""
         n = self.states.instants
         sites = np.empty((n, len(self.site_ids), 3))
         torso = np.empty((n, 3))
         heading = np.empty((n, 3))
-        tid = self._mj.mj_name2id(self.m, self._mj.mjtObj.mjOBJ_BODY, "torso")
+        self.cp_forces = np.empty((n, len(self.site_ids), 3))
+        self.drag = np.empty((n, 3))
+        self.drag_at = np.empty((n, 3))
+        mj, bird = self._mj, self.states.bird
+        tsite = mj.mj_name2id(self.m, mj.mjtObj.mjOBJ_SITE, "torso_cp")
         for k in range(n):
             self.pose_instant(k)
             sites[k] = self.d.site_xpos[self.site_ids]
-            torso[k] = self.d.xpos[tid]
-            heading[k] = self.d.xmat[tid].reshape(3, 3)[:, 0]
+            torso[k] = self.d.xpos[self._torso]
+            heading[k] = self.d.xmat[self._torso].reshape(3, 3)[:, 0]
+            self.cp_forces[k], self.drag[k] = site_forces(mj, self.m, self.d, self.aero, self.site_ids, tsite, bird)
+            self.drag_at[k] = self.d.site_xpos[tsite]
+        #: the dissertation's force (right wing + body drag), seed axes, table units, wingbeat mean
+        self.achieved = wingbeat_mean(dissertation_force(self.cp_forces, self.drag, [a.side for a in self.aero], bird), self.states.t_beats)
+        w = weight(bird)
+        self.force_unit = w if w > 0 else max(float(np.linalg.norm(self.cp_forces, axis=-1).max()), float(np.linalg.norm(self.drag, axis=-1).max()), 1e-300)
+        self.force_unit_name = "the weight" if w > 0 else "the largest force"
         return sites, torso, heading
+
+    def _add_forces(self, k: int) -> None:
+        """Arrows of the CP forces and the body drag at instant ``k``: one ``force_unit``
+        is ``options.forces`` semispans long."""
+        per = self.options.forces * self._s / self.force_unit
+        scn, mj = self.renderer.scene, self._mj
+        width = 0.025 * self._s
+        for site, pos, f in zip(self.sites, self.paths[k], self.cp_forces[k]):
+            add_arrow(mj, scn, pos, pos + per * f, HAND_RGBA if "hand" in site else ARM_RGBA, width)
+        add_arrow(mj, scn, self.drag_at[k], self.drag_at[k] + per * self.drag[k], DRAG_RGBA, width)
 
     # ---- per frame -------------------------------------------------------------------
 
@@ -153,18 +178,45 @@ class Scene:
             add_polyline(self._mj, scn, self.states.reference_path)
         if self.trails is not None:
             self._add_trails(i)
+        if self.options.forces is not None:
+            self._add_forces(self.instant(i))
 
     def _add_trails(self, i: int) -> None:
         dt_beats = float(np.median(np.diff(self.states.t_beats))) if self.states.instants > 1 else 1.0
         keep = max(2, int(round(self.options.trail_beats / max(dt_beats, 1e-12))))
         add_trails(self._mj, self.renderer.scene, self.trails[trail_window(i, self.sub, keep)], self.sites)
 
+    def overlay_lines(self, k: int) -> list:
+        """The overlay of instant ``k``: the states' own lines, the demanded and achieved
+        force, and the arrows' legend when they are drawn."""
+        dem = self.states.demanded_force
+        lines = list(self.states.overlay_at(k))
+        lines[1:1] = force_lines(None if dem is None else dem[k], self.achieved[k])
+        if self.options.forces is not None:
+            lines.append(legend_line("1 weight" if self.force_unit_name == "the weight" else "largest force", self.options.forces))
+        return lines
+
     def finish(self, img: np.ndarray, i: int) -> np.ndarray:
-        """Sky and overlay of frame ``i`` drawn into the rendered pixels (in place)."""
+        """Sky, overlay and plot strip of frame ``i`` drawn into the rendered pixels
+        (in place)."""
         fill_sky(img)
         if self.options.overlay:
-            draw_overlay(img, self.states.overlay_at(self.instant(i)), self._get_font())
+            k = self.instant(i)
+            draw_overlay(img, self.overlay_lines(k), self._get_font())
+            self._get_strip().draw(img, float(self.states.t_beats[k]))
         return img
+
+    def _get_strip(self) -> PlotStrip:
+        if self._strip is None:
+            t, dem = self.states.t_beats, self.states.demanded_force
+            series = []
+            if dem is not None:
+                series += [("Fz demanded", dem[:, 2], (120, 170, 255)), ("Fx demanded", dem[:, 0], (120, 220, 120))]
+            series += [("Fz achieved", self.achieved[:, 2], (255, 200, 60)), ("Fx achieved", self.achieved[:, 0], (255, 110, 110)), ("(wingbeat mean)", self.achieved[:1, 0][:0], (200, 200, 200))]
+            from birdsim.render.overlay import font_for_height
+
+            self._strip = PlotStrip(self.options.width, self.options.height, t, series, font_for_height(int(self.options.height * 0.8)))
+        return self._strip
 
     def rgb(self, i: int) -> np.ndarray:
         """Frame ``i`` as (H, W, 3) uint8, overlay included."""

@@ -5,7 +5,7 @@ simulation...).
 Stable API (other stages build these; keep it backward compatible):
 
 ``StateSequence(model, bird, t_beats, qpos, qvel, overlay=None, reference_path=None,
-instants_per_frame=1, title="", clip_note="")``
+instants_per_frame=1, title="", clip_note="", demanded_force=None)``
 
 * ``model``: kinematic model name (base, m1..m4); with ``bird`` it names the MJCF
   :func:`birdsim.mujoco.model.build_model` builds, whose ``nq``/``nv`` the states use.
@@ -20,6 +20,9 @@ instants_per_frame=1, title="", clip_note="")``
   the instants in between only make the control-point pathlines smoother.
 * ``title``: a short name for progress bars; ``clip_note``: one line printed before
   rendering (e.g. what was clipped), "" when nothing.
+* ``demanded_force`` (F, 3): the dissertation's force demanded at each instant (right
+  wing + body drag, seed earth axes, Fz < 0 up, table force units), shown beside the
+  achieved one (which the renderer measures from the states) and in the plot strip.
 
 :func:`states_from_playback` adapts today's :class:`~birdsim.flight.playback.Playback`;
 :func:`birdsim.render.renderer.render_states` renders any sequence to MP4.
@@ -58,6 +61,7 @@ class StateSequence:
     instants_per_frame: int = 1
     title: str = ""
     clip_note: str = ""
+    demanded_force: np.ndarray | None = None
 
     def __post_init__(self) -> None:
         t = np.asarray(self.t_beats, dtype=float)
@@ -82,6 +86,11 @@ class StateSequence:
         object.__setattr__(self, "qpos", qpos)
         object.__setattr__(self, "qvel", qvel)
         object.__setattr__(self, "reference_path", path)
+        if self.demanded_force is not None:
+            dem = np.asarray(self.demanded_force, dtype=float)
+            if dem.shape != (len(t), 3) or not np.all(np.isfinite(dem)):
+                raise BirdsimError(f"demanded_force has shape {dem.shape}; allowed: ({len(t)}, 3) finite values")
+            object.__setattr__(self, "demanded_force", dem)
 
     @property
     def instants(self) -> int:
@@ -126,6 +135,7 @@ def states_from_playback(pb: Playback, instants_per_frame: int = 1, *, m: Any | 
         instants_per_frame=instants_per_frame,
         title=pb.manoeuvre.name,
         clip_note=pb.clip_note,
+        demanded_force=np.column_stack([pb.demand_used["Fx"], np.zeros(pb.frames), pb.demand_used["Fz"]]),
     )
 
 
