@@ -56,7 +56,7 @@ def small_table(model: str = "m4") -> LookupTable:
 
 
 def options(**kw) -> RenderOptions:
-    base = dict(width=W, height=H, fps=FPS, seconds=SECONDS, beats_per_second=2.0, progress=False)
+    base = dict(width=W, height=H, fps=FPS, seconds=SECONDS, beats_per_second=2.0, progress=False, quality="draft")
     base.update(kw)
     return RenderOptions(**base)
 
@@ -188,6 +188,17 @@ def test_cli_renders_and_refuses_to_overwrite(tmp_path, capsys):
         (["hover", "--table", "/nonexistent/t.npz"], "does not exist"),
         (["hover", "--seconds", "3601"], "--seconds 3601.0 is invalid"),
         (["hover", "--beat-rate", "0.001"], "= 6000 s of video at --beat-rate 0.001; allowed: at most 3600 s"),
+        (["hover", "--quality", "ultra"], "--quality 'ultra' is unknown; allowed: draft, good, best"),
+        (["hover", "--camera", "drone"], "--camera 'drone' is unknown; allowed: track, chase, side, top, overview"),
+        (["hover", "--forces", "0"], "--forces '0' is not a positive number"),
+        (["hover", "--forces", "-2"], "--forces '-2' is not a positive number"),
+        (["hover", "--forces", "big"], "--forces 'big' is not a positive number"),
+        (["hover", "--forces", "inf"], "--forces 'inf' is not a positive number"),
+        (["hover", "--still", "s.png", "--at", "6.5"], "--at '6.5' is outside the clip; allowed: a time in wingbeats in [0, 6]"),
+        (["hover", "--still", "s.png", "--at", "-0.1"], "--at '-0.1' is outside the clip"),
+        (["hover", "--still", "s.png", "--at", "nan"], "--at 'nan' is outside the clip"),
+        (["hover", "--at", "1"], "--at '1' needs --still"),
+        (["hover", "--still", "s.jpg"], "--still 's.jpg' does not end in .png"),
     ],
 )
 def test_bad_input_one_line(tmp_path, capsys, monkeypatch, args, words):
@@ -195,7 +206,7 @@ def test_bad_input_one_line(tmp_path, capsys, monkeypatch, args, words):
     assert main(["render", *args]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and words in err[0], err
-    assert not any(p.suffix == ".mp4" or "partial" in p.name for p in tmp_path.rglob("*"))
+    assert not any(p.suffix in (".mp4", ".png") or "partial" in p.name for p in tmp_path.rglob("*"))
 
 
 def test_table_for_another_model(tmp_path, capsys):
@@ -247,3 +258,27 @@ def test_setup_gl_is_quiet_and_idempotent_when_osmesa_is_installed():
     script = Path(__file__).resolve().parents[1] / "scripts" / "setup_gl.sh"
     res = subprocess.run(["sh", str(script)], capture_output=True, text=True, timeout=60)
     assert res.returncode == 0 and res.stdout == "" and res.stderr == ""
+
+
+def test_camera_list(capsys):
+    assert main(["render", "hover", "--camera", "list"]) == 0
+    out = capsys.readouterr().out.splitlines()
+    assert [line.split()[0] for line in out] == ["track", "chase", "side", "top", "overview"]
+
+
+@needs_gl
+@pytest.mark.render
+def test_still_writes_one_png_and_nothing_else(tmp_path, capsys):
+    table = small_table()
+    table.save(tmp_path / "t")
+    still = tmp_path / "s.png"
+    argv = ["render", "cruise", "--table", str(tmp_path / "t.npz"), "--still", str(still), "--at", "1.25", "--size", "160x128",
+            "--seconds", "1", "--quality", "draft", "--forces", "2", "--camera", "chase"]
+    assert main(argv) == 0
+    from PIL import Image
+
+    img = np.asarray(Image.open(still))
+    assert img.shape == (128, 160, 3) and img.std() > 10
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["s.png", "t.json", "t.npz"]
+    assert main(argv) == 2  # exists, no --force
+    assert "exists" in capsys.readouterr().err

@@ -27,7 +27,12 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--fps", default="30", metavar="N", help="frames per second (default 30)")
     p.add_argument("--seconds", metavar="S", help="video length (default: the whole manoeuvre); longer holds the last demands")
     p.add_argument("--beat-rate", default="2", metavar="HZ", help="wingbeats shown per second of video (default 2)")
-    p.add_argument("--camera", default="track", help="track (follows the bird), side, top or overview (default track)")
+    p.add_argument("--camera", default="track", help="track, chase, side, top or overview (default track); `--camera list` describes them")
+    p.add_argument("--quality", default="good", help="draft, good or best (default good): shadows, sky, anti-aliasing; costs in docs/rendering.md")
+    p.add_argument("--forces", nargs="?", const="1.5", metavar="SCALE",
+                   help="draw each control point's force and the body drag as arrows; SCALE = semispans per weight (default 1.5)")
+    p.add_argument("--still", metavar="FILE.png", help="write one frame as PNG instead of the video (see --at)")
+    p.add_argument("--at", metavar="BEATS", help="time of the --still frame in wingbeats from the start (default: the middle)")
     p.add_argument("--no-trails", action="store_true", help="no control-point pathlines")
     p.add_argument("--no-overlay", action="store_true", help="no text overlay")
     p.add_argument("--gl", default="auto", help="auto (OSMesa if installed, else EGL), osmesa or egl")
@@ -59,6 +64,12 @@ def run(args: argparse.Namespace) -> int:
     from birdsim.flight.manoeuvre import get_manoeuvre
     from birdsim.render.renderer import RenderOptions, parse_size
 
+    if args.camera == "list":
+        from birdsim.render.options import CAMERA_HELP
+
+        for name, text in CAMERA_HELP.items():
+            print(f"{name:9s} {text}")
+        return 0
     manoeuvre = get_manoeuvre(args.manoeuvre)
     model = get_model(args.model).name
     if args.gl not in GL_CHOICES:
@@ -71,17 +82,29 @@ def run(args: argparse.Namespace) -> int:
         seconds=_number("--seconds", args.seconds),
         beats_per_second=_number("--beat-rate", args.beat_rate),  # type: ignore[arg-type]
         camera=args.camera,
+        quality=args.quality,
+        forces=_forces_scale(args.forces),
         trails=not args.no_trails,
         overlay=not args.no_overlay,
         gl=args.gl,
         progress=not args.quiet,
     )
-    options.duration(manoeuvre)  # a manoeuvre longer than the longest video -> one line
-    out = Path(args.out) if args.out else Path("renders") / f"{_slug(manoeuvre.name)}-{model}.mp4"
-    if out.suffix.lower() != ".mp4":
-        raise BirdsimError(f"--out {str(out)!r} does not end in .mp4; allowed: a .mp4 path")
-    check_writable(out, args.force)
+    seconds = options.duration(manoeuvre)  # a manoeuvre longer than the longest video -> one line
+    if args.at is not None and not args.still:
+        raise BirdsimError(f"--at {args.at!r} needs --still FILE.png; allowed: --at with --still")
+    if args.still:
+        at = _at_beats(args.at, seconds * options.beats_per_second)
+        if Path(args.still).suffix.lower() != ".png":
+            raise BirdsimError(f"--still {args.still!r} does not end in .png; allowed: a .png path")
+        check_writable(Path(args.still), args.force, "--still")
+    else:
+        out = Path(args.out) if args.out else Path("renders") / f"{_slug(manoeuvre.name)}-{model}.mp4"
+        if out.suffix.lower() != ".mp4":
+            raise BirdsimError(f"--out {str(out)!r} does not end in .mp4; allowed: a .mp4 path")
+        check_writable(out, args.force)
     if args.sheet:
+        if args.still:
+            raise BirdsimError("--sheet needs a video; allowed: --sheet without --still")
         if Path(args.sheet).suffix.lower() != ".png":
             raise BirdsimError(f"--sheet {args.sheet!r} does not end in .png; allowed: a .png path")
         check_writable(Path(args.sheet), args.force, "--sheet")
@@ -90,6 +113,12 @@ def run(args: argparse.Namespace) -> int:
     table = _load_table(table_path, model, explicit=bool(args.table))
     bird = bird_from_args(args) if (args.bird or args.set) else None
 
+    if args.still:
+        from birdsim.render.renderer import render_still
+
+        path = render_still(manoeuvre, table, args.still, at, options, bird=bird, model=model, force=args.force)
+        print(f"wrote {path} (frame at {at:g} beats, {options.width}x{options.height}, camera {options.camera}, quality {options.quality})")
+        return 0
     from birdsim.render.renderer import render_manoeuvre
 
     result = render_manoeuvre(manoeuvre, table, out, options, bird=bird, model=model, force=args.force)
@@ -102,6 +131,32 @@ def run(args: argparse.Namespace) -> int:
 
         print(f"wrote {contact_sheet(result.path, args.sheet)} (contact sheet)")
     return 0
+
+
+def _forces_scale(raw: str | None) -> float | None:
+    """``--forces SCALE`` as a positive finite number (None when not given)."""
+    if raw is None:
+        return None
+    try:
+        value = float(raw)
+    except ValueError:
+        value = float("nan")
+    if not (value > 0 and value <= 1e6):
+        raise BirdsimError(f"--forces {raw!r} is not a positive number; allowed: semispans per weight in (0, 1e6], e.g. --forces 1.5")
+    return value
+
+
+def _at_beats(raw: str | None, clip_beats: float) -> float:
+    """``--at BEATS`` inside the clip [0, clip_beats] (default: the middle)."""
+    if raw is None:
+        return 0.5 * clip_beats
+    try:
+        value = float(raw)
+    except ValueError:
+        value = float("nan")
+    if not (0.0 <= value <= clip_beats):
+        raise BirdsimError(f"--at {raw!r} is outside the clip; allowed: a time in wingbeats in [0, {clip_beats:g}]")
+    return value
 
 
 def check_writable(out: Path, force: bool, arg: str = "--out") -> None:

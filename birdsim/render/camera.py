@@ -6,7 +6,7 @@ filter (two cascaded first-order lags of time constant ``tau``: a double real po
 run forward and then backward over the whole clip.  Run both ways it has no lag (a
 bird at constant velocity stays in the middle of the frame) and it attenuates the
 wingbeat's bobbing by ``(1 + (2 pi tau)^2)^-2`` per beat-frequency component (about
-1/1700 at tau = 1 beat): no jitter at the wingbeat frequency.  The ends are padded
+1/120 at tau = 0.5 beat, the default): no jitter at the wingbeat frequency.  The ends are padded
 with the trend of the first/last beat so the filter starts and ends on the path.
 
 Distances scale with the wingspan and the narrower field of view of the frame, so the
@@ -21,9 +21,10 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+from scipy.signal import lfilter
 
 #: Smoothing time constant of the moving cameras, in wingbeats.
-TAU_BEATS = 1.0
+TAU_BEATS = 0.5
 #: Part of the narrower frame side the wingspan should cover (track/chase/side/top).
 SPAN_FRACTION = 0.45
 
@@ -31,7 +32,7 @@ SPAN_FRACTION = 0.45
 def smooth_critically_damped(x: np.ndarray, t: np.ndarray, tau: float) -> np.ndarray:
     """Zero-phase critically damped smoothing of ``x`` (N, ...) sampled at times ``t``
     (N,): two first-order lags of time constant ``tau``, forward then backward, on the
-    series padded at both ends by linear extrapolation over ``5 tau``."""
+    series padded at both ends by linear extrapolation over ``10 tau``."""
     x = np.asarray(x, dtype=float)
     t = np.asarray(t, dtype=float)
     n = len(t)
@@ -40,30 +41,32 @@ def smooth_critically_damped(x: np.ndarray, t: np.ndarray, tau: float) -> np.nda
     dt = float(np.median(np.diff(t)))
     if dt <= 0:
         return x.copy()
-    pad = int(math.ceil(5.0 * tau / dt))
-    fit = max(2, min(n, int(round(1.0 / dt)) + 1))  # one wingbeat (or what there is) for the end trends
+    pad = int(math.ceil(10.0 * tau / dt))  # the start-up transients decay to ~1e-4
+    w = max(1, int(round(1.0 / dt)))  # samples per wingbeat
     k = np.arange(1, pad + 1)[:, None]
 
     def trend(seg: np.ndarray, tt: np.ndarray) -> tuple[np.ndarray, np.ndarray, float]:
-        """Least-squares line through ``seg``: slope, value at the mean time, mean time."""
+        """Line through ``seg``: slope, value at time ``centre``, centre.  From the means
+        of two whole wingbeats when there are two (a periodic bob cancels exactly),
+        else a least-squares line."""
+        flat = seg.reshape(len(seg), -1)
+        if len(seg) >= 2 * w:
+            ca, cb = float(tt[:w].mean()), float(tt[w : 2 * w].mean())
+            ma, mb = flat[:w].mean(axis=0), flat[w : 2 * w].mean(axis=0)
+            return (mb - ma) / (cb - ca), ma, ca
         centre = float(tt.mean())
-        slope, mean = np.polyfit(tt - centre, seg.reshape(len(seg), -1), 1)
+        slope, mean = np.polyfit(tt - centre, flat, 1)
         return slope, mean, centre
 
-    s0, m0, c0 = trend(x[:fit], t[:fit])
-    s1, m1, c1 = trend(x[-fit:], t[-fit:])
+    s0, m0, c0 = trend(x[: 2 * w], t[: 2 * w])
+    s1, m1, c1 = trend(x[::-1][: 2 * w], t[::-1][: 2 * w])
     head = (m0 + s0 * ((t[0] - k * dt) - c0)).reshape((pad,) + x.shape[1:])[::-1]
     tail = (m1 + s1 * ((t[-1] + k * dt) - c1)).reshape((pad,) + x.shape[1:])
     y = np.concatenate([head, x, tail])
     a = math.exp(-dt / tau)
 
-    def lag(z: np.ndarray) -> np.ndarray:
-        out = np.empty_like(z)
-        acc = z[0]
-        for i in range(len(z)):
-            acc = a * acc + (1 - a) * z[i]
-            out[i] = acc
-        return out
+    def lag(z: np.ndarray) -> np.ndarray:  # y[i] = a y[i-1] + (1 - a) z[i], starting at rest on z[0]
+        return lfilter([1.0 - a], [1.0, -a], z, axis=0, zi=(a * z[:1]))[0]
 
     y = lag(lag(y))
     y = lag(lag(y[::-1]))[::-1]
@@ -135,7 +138,8 @@ def camera_path(name: str, position: np.ndarray, heading: np.ndarray, t_beats: n
     dist = fit_distance(span, fovy_deg, aspect, SPAN_FRACTION)
     if name == "track":
         offset = np.array([-0.6, -0.65, 0.3])
-    elif name == "side":
+    elif name == "side":  # seen from the side the bird is shorter than its span: closer
+        dist *= 0.85
         offset = np.array([0.0, -1.0, 0.0])
     elif name == "top":
         offset = np.array([0.0, -0.02, 1.0])

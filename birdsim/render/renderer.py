@@ -98,8 +98,55 @@ def render_manoeuvre(
     return render_states(states, out, options, force=force, log=log)
 
 
+def render_still(
+    manoeuvre: Manoeuvre,
+    table: TableLike,
+    out: str | Path,
+    at_beats: float,
+    options: RenderOptions = RenderOptions(),
+    *,
+    bird: Bird | None = None,
+    model: str | None = None,
+    force: bool = False,
+) -> Path:
+    """One frame of ``manoeuvre`` at ``at_beats`` wingbeats, as a PNG at ``out``.
+
+    The whole clip is played (the cameras' smoothing and the wingbeat-mean force need
+    it); the frame nearest to ``at_beats`` is drawn.
+
+    Raises:
+        RenderError: ``at_beats`` outside the clip, ``out`` not a writable .png.
+    """
+    out = check_output(Path(out), force, "--still")
+    if out.suffix.lower() != ".png":
+        raise RenderError(f"--still {str(out)!r} does not end in .png; allowed: a .png path")
+    clip_beats = options.duration(manoeuvre) * options.beats_per_second
+    if not (0.0 <= at_beats <= clip_beats):
+        raise RenderError(f"--at {at_beats!r} is outside the clip; allowed: a time in wingbeats in [0, {clip_beats:g}]")
+    select_gl(options.gl)
+    pb = play_for_video(manoeuvre, table, options, bird=bird, model=model)
+    states = states_from_playback(pb, max(1, int(options.trail_substeps)))
+    with Scene(states, options) as scene:
+        frame = min(scene.frames - 1, int(round(at_beats * options.fps / options.beats_per_second)))
+        return write_png(out, scene.rgb(frame))
+
+
+def write_png(out: Path, img: np.ndarray) -> Path:
+    """``img`` (H, W, 3 uint8) as an optimised PNG, written atomically."""
+    import io
+
+    from PIL import Image
+
+    from birdsim.io import write_atomic
+
+    buf = io.BytesIO()
+    Image.fromarray(np.ascontiguousarray(img)).save(buf, format="PNG", optimize=True)
+    write_atomic(Path(out), buf.getvalue())
+    return Path(out)
+
+
 __all__ = [
     "CAMERAS", "MAX_SECONDS", "MAX_SIDE", "RenderError", "RenderOptions", "RenderResult", "SKY_RGB", "Scene", "StateSequence",
     "contact_sheet", "draw_overlay", "fill_sky", "mp4_writer", "overlay_lines", "parse_size", "perch_seed_position",
-    "play_for_video", "render_manoeuvre", "render_states", "states_from_playback", "video_info",
+    "play_for_video", "render_manoeuvre", "render_states", "render_still", "states_from_playback", "video_info", "write_png",
 ]
