@@ -1,6 +1,8 @@
-"""Rendering speed: frames per second of MuJoCo's offscreen renderer alone and of the
-whole ``birdsim render`` command, at 640x480 and 1280x720, OSMesa beside EGL; seconds
-of animation per wall second; the four-preset ``make demo`` against its 60 s target.
+"""Rendering speed: frames per second of MuJoCo's offscreen renderer alone per
+``--quality`` level (draft, good, best) and of the whole ``birdsim render`` command, at
+640x480 and 1280x720, OSMesa beside EGL; seconds of animation per wall second; the
+four-preset ``make demo`` (default quality) against its 60 s target and the four
+presets at ``--quality best`` 1280x720 against 3 minutes.
 
 Each measurement runs in a fresh process: the GL back-end is fixed when mujoco is first
 imported, and the command's figure should include its start-up like a user's run.
@@ -27,17 +29,17 @@ gl.select_gl(sys.argv[1])
 from birdsim.flight.manoeuvre import PRESETS
 from birdsim.render.renderer import RenderOptions, Scene, play_for_video
 from birdsim.tables.lookup import load_table
-w, h, table = int(sys.argv[2]), int(sys.argv[3]), load_table(sys.argv[4])
-opts = RenderOptions(width=w, height=h, fps=30, seconds=3.0, progress=False)
+w, h, table, quality = int(sys.argv[2]), int(sys.argv[3]), load_table(sys.argv[4]), sys.argv[5]
+opts = RenderOptions(width=w, height=h, fps=30, seconds=3.0, progress=False, quality=quality)
 pb = play_for_video(PRESETS["cruise"], table, opts)
 with Scene(pb, opts) as scene:
     scene.update(0); scene.renderer.render()  # warm-up (context, shaders)
-    t0 = time.perf_counter()
+    t0, c0 = time.perf_counter(), time.process_time()
     for i in range(scene.frames):
         scene.update(i)
         scene.renderer.render()
-    dt = time.perf_counter() - t0
-print(json.dumps({"frames": scene.frames, "seconds": dt}))
+    dt, cpu = time.perf_counter() - t0, time.process_time() - c0
+print(json.dumps({"frames": scene.frames, "seconds": dt, "cpu": cpu}))
 """
 
 
@@ -56,18 +58,23 @@ def _python() -> str:
     return str(ROOT / ".venv" / "bin" / "python") if (ROOT / ".venv" / "bin" / "python").exists() else sys.executable
 
 
-def render_only(backend: str, w: int, h: int, table: str) -> float:
-    out = subprocess.run([_python(), "-c", _RENDER_ONLY, backend, str(w), str(h), table], capture_output=True, text=True, cwd=ROOT)
+QUALITIES = ("draft", "good", "best")
+
+
+def render_only(backend: str, w: int, h: int, table: str, quality: str = "good") -> tuple[float, float]:
+    """(frames per wall second, CPU milliseconds per frame) of the renderer alone."""
+    out = subprocess.run([_python(), "-c", _RENDER_ONLY, backend, str(w), str(h), table, quality], capture_output=True, text=True, cwd=ROOT)
     if out.returncode:
         raise RuntimeError(out.stderr.strip().splitlines()[-1])
     r = json.loads(out.stdout.strip().splitlines()[-1])
-    return r["frames"] / r["seconds"]
+    return r["frames"] / r["seconds"], 1000.0 * r["cpu"] / r["frames"]
 
 
-def command(backend: str, w: int, h: int, table: str, tmp: Path, preset: str = "cruise", seconds: str | None = "3") -> tuple[float, float, int]:
+def command(backend: str, w: int, h: int, table: str, tmp: Path, preset: str = "cruise", seconds: str | None = "3", quality: str = "good") -> tuple[float, float, int]:
     """(wall seconds, video seconds, frames) of one ``birdsim render`` process."""
     out = tmp / f"{preset}-{backend}-{w}.mp4"
-    argv = [_python(), "-m", "birdsim.cli", "render", preset, "--table", table, "--out", str(out), "--size", f"{w}x{h}", "--gl", backend, "--force", "--quiet"]
+    argv = [_python(), "-m", "birdsim.cli", "render", preset, "--table", table, "--out", str(out), "--size", f"{w}x{h}", "--gl", backend,
+            "--force", "--quiet", "--quality", quality]
     if seconds:
         argv += ["--seconds", seconds]
     t0 = time.perf_counter()
@@ -92,31 +99,46 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as d:
         tmp = Path(d)
         table, what = _table_path(tmp)
-        print(f"table: {what}; clip: cruise, 3 s of video at 30 fps (90 frames), trails and overlay on")
+        print(f"table: {what}; clip: cruise, 3 s of video at 30 fps (90 frames), trails and overlay on; machine load {_load()}")
+        b = backends[0]
+        for w, h in SIZES:
+            for q in QUALITIES:
+                fps_render, cpu_ms = render_only(b, w, h, table, q)
+                print(f"{w}x{h} {b:6s} --quality {q:5s}: renderer alone {fps_render:6.1f} frames/s ({cpu_ms:5.1f} CPU ms/frame)")
         rates: dict[tuple[str, int], float] = {}
         for w, h in SIZES:
             for b in backends:
-                fps_render = render_only(b, w, h, table)
+                fps_render, _ = render_only(b, w, h, table)
                 wall, video, frames = command(b, w, h, table, tmp)
                 rates[(b, w)] = fps_render
                 print(
-                    f"{w}x{h} {b:6s}: renderer alone {fps_render:6.1f} frames/s | whole command {frames / wall:5.1f} frames/s "
+                    f"{w}x{h} {b:6s} good: renderer alone {fps_render:6.1f} frames/s | whole command {frames / wall:5.1f} frames/s "
                     f"({wall:.2f} s wall incl. start-up) | {video / wall:4.2f} s of animation per wall second"
                 )
         if len(backends) == 2:
             for w, _ in SIZES:
                 print(f"ratio renderer alone EGL/OSMesa at {w} wide: {rates[('egl', w)] / rates[('osmesa', w)]:.2f}")
         b = backends[0]
-        t0 = time.perf_counter()
-        video_total = 0.0
-        for preset in PRESETS:
-            _, video, _ = command(b, 640, 480, table, tmp, preset, seconds=None)
-            video_total += video
-        total = time.perf_counter() - t0
-        print(
-            f"make demo equivalent (4 presets, m4, 640x480, {b}, sequential): {total:.1f} s wall for {video_total:.1f} s of video "
-            f"(target < 60 s: {'met' if total < 60 else 'NOT met'})"
-        )
+        for (w, h), quality, target in (((640, 480), "good", 60.0), ((1280, 720), "best", 180.0)):
+            t0 = time.perf_counter()
+            video_total = 0.0
+            for preset in PRESETS:
+                _, video, _ = command(b, w, h, table, tmp, preset, seconds=None, quality=quality)
+                video_total += video
+            total = time.perf_counter() - t0
+            print(
+                f"4 presets (m4, {w}x{h}, --quality {quality}, {b}, sequential): {total:.1f} s wall for {video_total:.1f} s of video "
+                f"(target < {target:g} s: {'met' if total < target else 'NOT met'}; load {_load()})"
+            )
+
+
+def _load() -> str:
+    try:
+        import os
+
+        return f"{os.getloadavg()[0]:.1f} on {os.cpu_count()} cores"
+    except OSError:
+        return "unknown"
 
 
 if __name__ == "__main__":

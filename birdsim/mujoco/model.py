@@ -296,8 +296,8 @@ def _add_arena(spec: mujoco.MjSpec, bird: Bird) -> None:
                      rgb1=[0.55, 0.66, 0.42], rgb2=[0.47, 0.59, 0.36], mark=mujoco.mjtMark.mjMARK_EDGE,
                      markrgb=[0.40, 0.50, 0.30], width=256, height=256)
     spec.add_texture(name="bark", type=tex.mjTEXTURE_2D, builtin=mujoco.mjtBuiltin.mjBUILTIN_FLAT,
-                     rgb1=[0.42, 0.31, 0.21], rgb2=[0.42, 0.31, 0.21], mark=mujoco.mjtMark.mjMARK_RANDOM,
-                     markrgb=[0.25, 0.18, 0.12], random=0.25, width=64, height=64)
+                     rgb1=[1.0, 0.95, 0.9], rgb2=[1.0, 0.95, 0.9], mark=mujoco.mjtMark.mjMARK_RANDOM,
+                     markrgb=[0.6, 0.55, 0.5], random=0.3, width=64, height=64)
     ground = spec.add_material(name="ground", texuniform=True, texrepeat=[1.0 / (2.0 * GROUND_SPACING * s)] * 2, specular=0.05, shininess=0.05)
     ground.textures[mujoco.mjtTextureRole.mjTEXROLE_RGB] = "ground"
     bark = spec.add_material(name="bark", texrepeat=[2.0, 2.0], specular=0.05, shininess=0.05)
@@ -310,13 +310,13 @@ def _add_arena(spec: mujoco.MjSpec, bird: Bird) -> None:
                     diffuse=[0.65, 0.63, 0.58], specular=[0.2, 0.2, 0.2], castshadow=True)
     world.add_geom(name="floor", default=arena, type=mujoco.mjtGeom.mjGEOM_PLANE, size=[50 * s, 50 * s, 0.1], rgba=[1, 1, 1, 1], material="ground")
     perch = world.add_body(name="perch", pos=[6.0 * s, 0.0, 0.0], childclass="arena")
-    perch.add_geom(name="perch_post", type=mujoco.mjtGeom.mjGEOM_CYLINDER, size=[0.05 * s, 0.75 * s, 0], pos=[0, 0, 0.75 * s], rgba=[0.4, 0.3, 0.2, 1], material="bark")
+    perch.add_geom(name="perch_post", type=mujoco.mjtGeom.mjGEOM_CYLINDER, size=[0.05 * s, 0.75 * s, 0], pos=[0, 0, 0.75 * s], rgba=[0.5, 0.38, 0.26, 1], material="bark")
     perch.add_geom(
         name="perch_bar", type=mujoco.mjtGeom.mjGEOM_CAPSULE, size=[0.04 * s, 0.6 * s, 0],
-        pos=[0, 0, 1.5 * s], quat=[math.sqrt(0.5), math.sqrt(0.5), 0, 0], rgba=[0.4, 0.3, 0.2, 1], material="bark",
+        pos=[0, 0, 1.5 * s], quat=[math.sqrt(0.5), math.sqrt(0.5), 0, 0], rgba=[0.5, 0.38, 0.26, 1], material="bark",
     )
     # for the eye only: a flared foot, a knot and twigs off the branch (no contacts, no mass)
-    decor = dict(contype=0, conaffinity=0, group=2, mass=0.0, material="bark", rgba=[0.4, 0.3, 0.2, 1])
+    decor = dict(contype=0, conaffinity=0, group=2, mass=0.0, material="bark", rgba=[0.5, 0.38, 0.26, 1])
     perch.add_geom(name="perch_foot", type=mujoco.mjtGeom.mjGEOM_ELLIPSOID, size=[0.11 * s, 0.11 * s, 0.08 * s], pos=[0, 0, 0], **decor)
     perch.add_geom(name="perch_knot", type=mujoco.mjtGeom.mjGEOM_SPHERE, size=[0.065 * s, 0, 0], pos=[0, 0, 1.5 * s], **decor)
     for k, (y, angle, length) in enumerate(((0.45, 0.7, 0.28), (-0.35, 2.3, 0.22), (0.1, 1.2, 0.18))):

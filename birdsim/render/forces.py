@@ -87,8 +87,8 @@ def dissertation_force(forces_world: np.ndarray, drag_world: np.ndarray, sides: 
 
 
 def wingbeat_mean(x: np.ndarray, t_beats: np.ndarray) -> np.ndarray:
-    """Centred moving average of ``x`` (N, ...) over one wingbeat (fewer samples at the
-    ends of the clip)."""
+    """Centred moving average of ``x`` (N, ...) over exactly one wingbeat (within half a
+    beat of the clip's ends: the first/last whole wingbeat's mean)."""
     x = np.asarray(x, dtype=float)
     n = len(x)
     if n < 2:
@@ -100,11 +100,12 @@ def wingbeat_mean(x: np.ndarray, t_beats: np.ndarray) -> np.ndarray:
     if w % 2 == 0:  # w + 1 samples, the two ends at half weight: exactly one beat
         weights[0] = weights[-1] = 0.5
     flat = x.reshape(n, -1)
-    pad = np.concatenate([np.zeros((half, flat.shape[1])), flat, np.zeros((half, flat.shape[1]))])
-    mask = np.concatenate([np.zeros(half), np.ones(n), np.zeros(half)])
-    num = np.stack([np.convolve(pad[:, j], weights, mode="valid") for j in range(flat.shape[1])], axis=1)
-    den = np.convolve(mask, weights, mode="valid")
-    return (num / den[:, None]).reshape(x.shape)
+    if n < 2 * half + 1:  # shorter than a wingbeat: the mean of all
+        return np.broadcast_to(flat.mean(axis=0), flat.shape).reshape(x.shape).copy()
+    full = np.stack([np.convolve(flat[:, j], weights, mode="valid") for j in range(flat.shape[1])], axis=1) / weights.sum()
+    # near the clip's ends: the nearest whole wingbeat (a partial one would show the wingbeat's ripple)
+    out = np.concatenate([np.repeat(full[:1], half, axis=0), full, np.repeat(full[-1:], half, axis=0)])
+    return out.reshape(x.shape)
 
 
 def weight(bird: Bird) -> float:
