@@ -282,3 +282,25 @@ def test_still_writes_one_png_and_nothing_else(tmp_path, capsys):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["s.png", "t.json", "t.npz"]
     assert main(argv) == 2  # exists, no --force
     assert "exists" in capsys.readouterr().err
+
+
+@needs_gl
+@pytest.mark.render
+def test_quality_levels_switch_the_effects():
+    import mujoco
+
+    from birdsim.render.options import QUALITIES
+
+    rnd = mujoco.mjtRndFlag
+    pb = play_for_video(PRESETS["cruise"], small_table(), options(seconds=0.25))
+    seen = {}
+    for q in ("draft", "good", "best"):
+        o = options(seconds=0.25, quality=q, width=64, height=48)
+        with Scene(pb, o) as scene:
+            flags = scene.renderer.scene.flags
+            look = QUALITIES[q]
+            assert flags[rnd.mjRND_SHADOW] == (look.shadowsize > 0) and flags[rnd.mjRND_SKYBOX] == look.skybox
+            assert scene.m.vis.quality.offsamples == look.samples and scene.m.vis.quality.shadowsize == look.shadowsize
+            seen[q] = scene.rgb(1)
+    assert seen["draft"].std() > 10 and seen["best"].std() > 10
+    assert np.abs(seen["draft"].astype(int) - seen["good"].astype(int)).mean() > 1  # the sky and shadows show
