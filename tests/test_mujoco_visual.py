@@ -18,6 +18,17 @@ def test_planform_has_the_panels_span_and_area(kind, span, chord, bars):
     pieces = panel_planform(kind, span, chord, bars)
     area = sum(polygon_area(p.polygon) for p in pieces)
     assert area == pytest.approx(span * chord, rel=1e-12)
+    # the planform sits on its panel: area centroid within 5 % of the chord of the twist
+    # axis (x = 0, where the control point is), the arm's at half span like its CP
+    moments = []
+    for p in pieces:
+        x, y = p.polygon[:, 0], p.polygon[:, 1]
+        cross = x * np.roll(y, -1) - np.roll(x, -1) * y
+        moments.append([((x + np.roll(x, -1)) * cross).sum() / 6, ((y + np.roll(y, -1)) * cross).sum() / 6, cross.sum() / 2])
+    mu, mx, a = np.abs(np.sum(moments, axis=0)) * np.sign(np.sum(moments, axis=0)[2])
+    assert abs(mx / a) < 0.05 * chord
+    if kind == "arm":
+        assert mu / a == pytest.approx(span / 2, rel=1e-9)
     u = np.vstack([p.polygon for p in pieces])[:, 0]
     assert u.min() == pytest.approx(0.0, abs=1e-12) and u.max() == pytest.approx(span, rel=1e-9)
     # pieces do not overlap: rasterised union area == summed area (to the grid's resolution)
