@@ -1,13 +1,16 @@
 """The posed MuJoCo bird and its offscreen renderer: :class:`Scene` draws any
 :class:`~birdsim.render.states.StateSequence` (a Playback is adapted on the way in).
 
-Pipeline per frame: state ``qpos``/``qvel`` -> kinematics -> ``mujoco.Renderer.
-update_scene`` (camera ``track``, ``side``, ``top`` or ``overview`` of the MJCF) ->
-decorations (CP pathlines, reference path) -> render -> sky and overlay in the pixels.
+Set-up: the MJCF of the states' model and bird (the visual bird drawn, the physical
+group 1 hidden), the effects of ``options.quality`` (shadows, sky, haze,
+multisampling), one pass over every instant (CP sites, torso, forces), the camera
+path (:mod:`birdsim.render.camera`).  Per frame: state ``qpos``/``qvel`` ->
+kinematics -> ``mujoco.Renderer.update_scene`` with the frame's free camera ->
+decorations (reference path, CP pathlines, force arrows) -> render -> sky, overlay and
+plot strip in the pixels.
 
-Shadows, reflections, skybox and multisampling are off: on the CPU they cost several
-times the frame rate.  :mod:`birdsim.render.gl` rules: the GL back-end is chosen before
-:mod:`mujoco` is imported, so this module imports mujoco lazily.
+:mod:`birdsim.render.gl` rules: the GL back-end is chosen before :mod:`mujoco` is
+imported, so this module imports mujoco lazily.
 """
 
 from __future__ import annotations
@@ -31,8 +34,8 @@ class Scene:
     ``Scene(states, options)``: ``states`` a :class:`StateSequence` (or a
     :class:`Playback` from :func:`~birdsim.render.states.play_for_video`, adapted with
     ``options.trail_substeps`` instants per frame).  It builds the MJCF of the states'
-    model and bird, enlarges the offscreen buffer when needed, turns the costly effects
-    off and precomputes the CP pathlines.  ``rgb(i)`` renders video frame ``i``
+    model and bird, enlarges the offscreen buffer when needed, sets the quality's
+    effects and precomputes pathlines, forces and the camera path.  ``rgb(i)`` renders video frame ``i``
     (overlay included), ``segmentation(i)`` the (object id, object type) image of the
     same view.
     """
@@ -60,6 +63,7 @@ class Scene:
         self.m.vis.quality.shadowsize = look.shadowsize
         if not look.textures:
             self.m.geom_matid[:] = np.where(self.m.geom_group == 0, -1, self.m.geom_matid)  # arena plain
+            self.m.geom_rgba[self.m.geom_group == 0] = (0.45, 0.56, 0.38, 1.0)
         floor = mujoco.mj_name2id(self.m, mujoco.mjtObj.mjOBJ_GEOM, "floor")
         if floor >= 0 and self.m.geom_type[floor] == mujoco.mjtGeom.mjGEOM_PLANE:
             self.m.geom_size[floor][:2] = 0.0  # drawn without edges (this copy only renders)
