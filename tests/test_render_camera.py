@@ -92,3 +92,29 @@ def test_the_bird_fills_a_sensible_part_of_the_frame(camera, size):
             assert len(rows), f"frame {i}: no bird"
             extent = max((rows[-1] - rows[0] + 1) / h, (cols[-1] - cols[0] + 1) / w)
             assert 0.15 < extent <= 1.0 and mask.mean() < 0.6, (i, extent, mask.mean())
+
+
+@needs_gl
+@pytest.mark.render
+def test_shadows_only_where_the_shadow_is_in_view():
+    """The shadow pass costs as much as the picture: it runs only in frames where the
+    sun's ray through the bird meets the ground inside the frame."""
+    from birdsim.render.camera import project
+
+    table = small_table()
+    for preset, camera, expect in (("cruise", "track", "none"), ("cruise", "overview", "all"), ("take-off", "track", "some")):
+        o = RenderOptions(width=64, height=48, fps=4, camera=camera, quality="good", progress=False, trails=False, overlay=False)
+        with Scene(play_for_video(PRESETS[preset], table, o), o) as scene:
+            on = scene.shadows
+            assert {"none": not on.any(), "all": on.all(), "some": on.any()}[expect], (preset, camera, on)
+            d = scene.m.light_dir[0] / np.linalg.norm(scene.m.light_dir[0])
+            for i in range(scene.frames):  # off-frame shadow points really are outside the frame
+                p = scene.torso_path[scene.instant(i)]
+                uv = project((p + d * (p[2] / -d[2]))[None, :], scene.poses[i], float(scene.m.vis.global_.fovy), o.width / o.height)[0]
+                if np.all(np.abs(uv) < 1.0):
+                    assert on[i]
+            scene.update(0)
+            assert scene.renderer.scene.flags[__import__("mujoco").mjtRndFlag.mjRND_SHADOW] == on[0]
+    o = RenderOptions(width=64, height=48, fps=4, camera="overview", quality="draft", progress=False)
+    with Scene(play_for_video(PRESETS["cruise"], table, o), o) as scene:
+        assert not scene.shadows.any()

@@ -130,6 +130,8 @@ class PlotStrip:
             draw.text((x, 2), label, fill=(*rgb, 255), font=font)
             x += int(draw.textlength(label + "   ", font=font))
         self.layer = layer
+        self._rgb: np.ndarray | None = None
+        self._alpha: np.ndarray | None = None
 
     def _x(self, t):
         return ((np.asarray(t) - self.t0) / max(self.t1 - self.t0, 1e-12) * (self.w - 1)).tolist()
@@ -138,16 +140,17 @@ class PlotStrip:
         return ((self.hi - np.asarray(v)) / (self.hi - self.lo) * (self.h - 1)).tolist()
 
     def draw(self, img: np.ndarray, t_now: float) -> None:
-        """Composite the strip and a cursor at ``t_now`` into the bottom of ``img``."""
-        from PIL import Image, ImageDraw
-
+        """Composite the strip and a cursor at ``t_now`` into the bottom of ``img``
+        (numpy on the cached layer: well under a millisecond at 640x480)."""
+        if self._rgb is None:
+            layer = np.asarray(self.layer, dtype=np.float32)
+            self._alpha = layer[..., 3:4] / 255.0
+            self._rgb = layer[..., :3] * self._alpha
         band = img[-self.h :]
-        band[:] = (band.astype(np.uint16) * 2 // 5).astype(np.uint8)
-        pil = Image.fromarray(band).convert("RGBA")
-        pil.alpha_composite(self.layer)
-        x = self._x(t_now)
-        ImageDraw.Draw(pil).line([(x, 0), (x, self.h)], fill=(255, 255, 255, 255), width=1)
-        img[-self.h :] = np.asarray(pil.convert("RGB"))
+        dark = band.astype(np.float32) * 0.4
+        band[:] = (dark * (1.0 - self._alpha) + self._rgb).astype(np.uint8)
+        x = int(round(self._x(t_now)))
+        band[:, max(0, min(self.w - 1, x))] = 255
 
 
 __all__ = ["OverlayLine", "PlotStrip", "SKY_RGB", "draw_overlay", "fill_sky", "font_for_height", "force_lines", "legend_line", "overlay_lines"]

@@ -20,7 +20,7 @@ from typing import Any
 import numpy as np
 
 from birdsim.flight.playback import Playback
-from birdsim.render.camera import CameraPose, camera_path
+from birdsim.render.camera import CameraPose, camera_path, project
 from birdsim.render.decor import add_arrow, add_polyline, add_trails, trail_window
 from birdsim.render.forces import ARM_RGBA, DRAG_RGBA, HAND_RGBA, dissertation_force, site_forces, weight, wingbeat_mean
 from birdsim.render.options import CAMERAS, RenderError, RenderOptions
@@ -91,6 +91,7 @@ class Scene:
         self.paths, self.torso_path, self.heading = self._precompute()
         self.trails = self.paths if options.trails else None
         self.poses = self._camera_poses(options.camera)
+        self.shadows = self._shadow_frames(look.shadowsize > 0)
         self._font = None
         self._strip: PlotStrip | None = None
 
@@ -112,6 +113,25 @@ class Scene:
         poses = camera_path(name, self.torso_path, self.heading, self.states.t_beats, 2.0 * self.states.bird.semispan,
                             float(self.m.vis.global_.fovy), aspect, np.array(extra) if extra else None)
         return [poses[self.instant(i)] for i in range(self.frames)]
+
+    def _shadow_frames(self, wanted: bool) -> np.ndarray:
+        """Per frame: draw shadows?  Only where the bird's shadow can be seen: the point
+        where the sun's ray through the bird meets the ground projects into the frame
+        (a shadow off-screen costs a second render pass for nothing)."""
+        if not wanted or self._sun < 0:
+            return np.zeros(self.frames, dtype=bool)
+        d = self.m.light_dir[self._sun] / np.linalg.norm(self.m.light_dir[self._sun])
+        if d[2] >= -1e-6:  # the sun does not shine down: no ground shadow
+            return np.zeros(self.frames, dtype=bool)
+        fovy, aspect = float(self.m.vis.global_.fovy), self.options.width / self.options.height
+        out = np.zeros(self.frames, dtype=bool)
+        for i in range(self.frames):
+            p = self.torso_path[self.instant(i)]
+            ground = p + d * (p[2] / -d[2])  # where the sun's ray through the bird meets z = 0
+            margin = 2.0 * self._s  # the wings' shadow reaches a semispan or two beyond
+            pts = ground + np.array([[0, 0, 0], [margin, 0, 0], [-margin, 0, 0], [0, margin, 0], [0, -margin, 0]])
+            out[i] = bool(np.any(np.all(np.abs(project(pts, self.poses[i], fovy, aspect)) <= 1.0, axis=1)))
+        return out
 
     def pose_instant(self, k: int) -> None:
         """Pose the bird at instant ``k``: qpos/qvel, then only what drawing needs
@@ -178,6 +198,7 @@ class Scene:
         self.camera.elevation = pose.elevation
         self.renderer.update_scene(self.d, camera=self.camera, scene_option=self.option)
         scn = self.renderer.scene
+        scn.flags[self._mj.mjtRndFlag.mjRND_SHADOW] = int(self.shadows[i])
         if self.states.reference_path is not None:
             add_polyline(self._mj, scn, self.states.reference_path)
         if self.trails is not None:
