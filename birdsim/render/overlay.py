@@ -51,8 +51,11 @@ def overlay_lines(pb: Playback, i: int) -> list[OverlayLine]:
 def force_lines(demanded: np.ndarray | None, achieved: np.ndarray) -> list[OverlayLine]:
     """Demanded and achieved force (the dissertation's: right wing + body drag, seed
     axes, Fz < 0 is up; achieved = wingbeat mean of the drawn state), table units."""
-    ach = [("achieved ", GREY), (f"Fx {achieved[0]:+.2f} Fz {achieved[2]:+.2f}", ACHIEVED)]
-    dem = [] if demanded is None else [("demanded ", GREY), (f"Fx {demanded[0]:+.2f} Fz {demanded[2]:+.2f}   ", DEMANDED)]
+    def f(v: float) -> str:
+        return f"{round(float(v), 2) + 0.0:+.2f}"  # + 0.0: no "-0.00"
+
+    ach = [("achieved ", GREY), (f"Fx {f(achieved[0])} Fz {f(achieved[2])}", ACHIEVED)]
+    dem = [] if demanded is None else [("demanded ", GREY), (f"Fx {f(demanded[0])} Fz {f(demanded[2])}   ", DEMANDED)]
     return [dem + ach + [("  (R wing+drag)", GREY)]]
 
 
@@ -75,7 +78,7 @@ def font_for_height(height: int) -> Any:
 def draw_overlay(img: np.ndarray, lines: Sequence[OverlayLine], font: Any) -> None:
     """Draw ``lines`` top-left on a darkened band of ``img`` (in place); a line is a
     ``str``, a ``(text, colour)`` pair or a list of such pairs drawn side by side."""
-    from PIL import Image, ImageDraw
+    from PIL import Image
 
     if not lines:
         return
@@ -86,14 +89,36 @@ def draw_overlay(img: np.ndarray, lines: Sequence[OverlayLine], font: Any) -> No
     band = img[:band_h]
     band[:] = (band.astype(np.uint16) * 2 // 5).astype(np.uint8)
     pil = Image.fromarray(band)
-    draw = ImageDraw.Draw(pil)
     for k, line in enumerate(lines):
         parts = [(line, WHITE)] if isinstance(line, str) else (line if isinstance(line, list) else [line])
         x = 6
         for text, colour in parts:
-            draw.text((x, 3 + k * step), text, fill=tuple(colour), font=font)
-            x += int(draw.textlength(text, font=font))
+            sprite = _text_sprite(text, tuple(colour), font)
+            pil.paste(sprite, (x, 3 + k * step), sprite)
+            x += sprite.width
     img[:band_h] = np.asarray(pil)
+
+
+_SPRITES: dict = {}
+
+
+def _text_sprite(text: str, colour: tuple, font: Any) -> Any:
+    """``text`` rendered once in ``colour`` on a transparent image (cached: most of an
+    overlay's words and numbers repeat from frame to frame)."""
+    from PIL import Image, ImageDraw
+
+    key = (text, colour, id(font))
+    sprite = _SPRITES.get(key)
+    if sprite is None:
+        if len(_SPRITES) > 4096:
+            _SPRITES.clear()
+        probe = ImageDraw.Draw(Image.new("RGBA", (1, 1)))
+        width = max(1, int(probe.textlength(text, font=font)))
+        size = getattr(font, "size", 11)
+        sprite = Image.new("RGBA", (width, int(size * 1.3) + 2), (0, 0, 0, 0))
+        ImageDraw.Draw(sprite).text((0, 0), text, fill=colour, font=font)
+        _SPRITES[key] = sprite
+    return sprite
 
 
 class PlotStrip:

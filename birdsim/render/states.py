@@ -114,7 +114,7 @@ def playback_state(pb: Playback, m: Any | None = None) -> tuple[np.ndarray, np.n
     from birdsim.mujoco.driver import set_root, wing_arrays
     from birdsim.mujoco.model import build_model
 
-    m = m if m is not None else build_model(pb.model.name, pb.bird)
+    m = m if m is not None else build_model(pb.model.name, pb.bird, visuals=False)  # joints only
     qpos, qvel, _ = wing_arrays(m, pb.angles, pb.rates, samples=pb.frames)
     set_root(m, qpos, qvel, pitch=pb.pitch, position_seed=pb.position_seed, velocity_seed=pb.velocity_seed, pitch_rate=pb.pitch_rate)
     return qpos, qvel
@@ -158,7 +158,7 @@ def perch_seed_position(model_name: str, bird: Bird) -> tuple[float, float]:
 
     from birdsim.mujoco.model import build_model
 
-    m = build_model(model_name, bird)
+    m = build_model(model_name, bird, visuals=False)  # sites and the physical torso only
     d = mujoco.MjData(m)
     mujoco.mj_kinematics(m, d)
     sid = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_SITE, "perch_top")
