@@ -9,7 +9,8 @@ instants_per_frame=1, title="", clip_note="", demanded_force=None)``
 
 * ``model``: kinematic model name (base, m1..m4); with ``bird`` it names the MJCF
   :func:`birdsim.mujoco.model.build_model` builds, whose ``nq``/``nv`` the states use.
-* ``t_beats`` (F,): time of each instant in wingbeats.
+* ``t_beats`` (F,): time of each instant in wingbeats, evenly spaced (the wingbeat
+  mean of the achieved force and the cameras' smoothing use the median step).
 * ``qpos`` (F, nq), ``qvel`` (F, nv): MuJoCo world (x forward, y left, z up), the bird's
   length units; qvel per unit of the bird's time.
 * ``overlay``: text per instant, ``callable(k) -> list of lines`` or a sequence of
@@ -22,7 +23,11 @@ instants_per_frame=1, title="", clip_note="", demanded_force=None)``
   rendering (e.g. what was clipped), "" when nothing.
 * ``demanded_force`` (F, 3): the dissertation's force demanded at each instant (right
   wing + body drag, seed earth axes, Fz < 0 up, table force units), shown beside the
-  achieved one (which the renderer measures from the states) and in the plot strip.
+  achieved one (which the renderer measures from the states, in still air) and in the
+  plot strip.
+
+Added after the first release, with defaults, so older callers keep working:
+``demanded_force``.
 
 :func:`states_from_playback` adapts today's :class:`~birdsim.flight.playback.Playback`;
 :func:`birdsim.render.renderer.render_states` renders any sequence to MP4.
