@@ -73,7 +73,7 @@ def write_csv(frames: FrameSequence, out: str | Path) -> Path:
     """
     cols = columns(frames)
     names = list(cols)
-    data = np.column_stack([np.asarray(cols[k], dtype=float) for k in names])
+    data = np.column_stack([np.asarray(cols[k], dtype=float) for k in names]) + 0.0  # no '-0'
     buf = io.StringIO()
     buf.write(",".join(names) + "\n")
     fmt = ["%d"] + ["%.10g"] * (len(names) - 1)

@@ -61,6 +61,8 @@ def build_stage(frames: FrameSequence, assets_dir: Path):  # -> pxr.Usd.Stage
     work = tempfile.mkdtemp(prefix="birdsim-usd-")
     try:
         exp = USDExporter(m, height=16, width=16, output_directory="pkg", output_directory_root=work, verbose=False)
+        # textures are referenced beside the output file, not in the exporter's frames/ layout
+        exp.texture_files = [f"{assets_dir.name}/{Path(f).name}" for f in exp.texture_files]
         for k in range(frames.frames):
             d.qpos[:] = frames.qpos[k]
             mujoco.mj_kinematics(m, d)
