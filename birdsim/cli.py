@@ -18,6 +18,8 @@ COMMAND_MODULES = (
     "birdsim.commands.render",
     "birdsim.commands.crosscheck",
     "birdsim.commands.export",
+    "birdsim.commands.bird",
+    "birdsim.commands.params",
 )
 
 
