@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed-stamp
 PYTEST := $(BIN)/python -m pytest
 
-.PHONY: setup demo test test-slow test-all bench tables report clean
+.PHONY: setup demo test test-slow test-all bench tables report clean test-blender
 
 $(STAMP): pyproject.toml
 	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -31,6 +31,18 @@ test-slow: setup
 
 test-all: setup
 	$(PYTEST) -n 2 -q
+
+# Optional, not part of `make test`: import the USD and BVH exports into Blender (bpy 4.5 LTS,
+# Python 3.11, its own .venv-blender; the bpy wheel is ~370 MB) and check frames, rate,
+# the body's position and the wingbeat (scripts/blender_check.py).
+PYTHON311 ?= python3.11
+BLENDER_VENV := .venv-blender
+test-blender: setup
+	@test -x $(BLENDER_VENV)/bin/python || $(PYTHON311) -m venv $(BLENDER_VENV)
+	@$(BLENDER_VENV)/bin/python -c "import bpy" 2>/dev/null || $(BLENDER_VENV)/bin/python -m pip install -q 'bpy>=4.5,<4.6'
+	@mkdir -p .blender-check
+	$(BIN)/python scripts/blender_check.py prepare .blender-check
+	$(BLENDER_VENV)/bin/python scripts/blender_check.py check .blender-check
 
 bench: setup
 	$(BIN)/python benchmarks/run.py
