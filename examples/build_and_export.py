@@ -9,6 +9,7 @@ as `birdsim render` flies it); free flight (`birdsim fly`) writes a log that
 `birdsim.export.flightlog` reads into the same frames.
 """
 
+import importlib.util
 import sys
 from pathlib import Path
 
@@ -35,11 +36,9 @@ frames = from_playback(manoeuvre, load_table("tables/m4.npz"), model="m4", fps=3
 print(f"{frames.frames} frames at {frames.fps:g} fps from {frames.source}")
 
 formats = ["csv", "bvh"]
-try:
-    import pxr  # noqa: F401
-
+if importlib.util.find_spec("pxr") is not None:
     formats.append("usd")
-except ImportError:
+else:
     print("usd-core is not installed: skipping USD (pip install 'birdsim[usd]')")
 for fmt in formats:
     path = write(frames, fmt, out / f"{manoeuvre.name}.{fmt}")

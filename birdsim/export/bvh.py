@@ -92,8 +92,10 @@ def local_transforms(frames: FrameSequence) -> tuple[list[str], dict[str, np.nda
 
 def require_bvh() -> None:
     """One line naming the extra when pybvh is missing."""
+    import importlib
+
     try:
-        import pybvh  # noqa: F401
+        importlib.import_module("pybvh")
     except ImportError:
         raise ExportError("--format bvh needs pybvh, which is not installed; allowed: pip install 'birdsim[bvh]' (or --format usd/csv)") from None
 

@@ -39,9 +39,11 @@ class UsdMissingError(ExportError):
 
 def require_usd() -> None:
     """One line naming the extra when usd-core (pxr) or mujoco.usd is missing."""
+    import importlib
+
     try:
-        import pxr  # noqa: F401
-        from mujoco.usd import exporter  # noqa: F401
+        importlib.import_module("pxr")
+        importlib.import_module("mujoco.usd.exporter")
     except ImportError:
         raise UsdMissingError(
             "--format usd needs usd-core, which is not installed; allowed: pip install 'birdsim[usd]' (or --format bvh/csv)"
