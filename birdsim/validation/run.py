@@ -1,0 +1,134 @@
+"""One validation run: bird file -> trimmed sweep -> scorecard -> the JSON object."""
+
+from __future__ import annotations
+
+import sys
+import time
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+from birdsim.errors import BirdConfigError, BirdsimError
+from birdsim.physics.aero import POLARS, polar_from_dict
+from birdsim.physics.bird import Bird
+from birdsim.validation.measurements import Measurement, load_measurements
+from birdsim.validation.scorecard import Row, score, sweep_speeds
+from birdsim.validation.trim import TrimSweep, trim_sweep
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # pragma: no cover
+    import tomli as tomllib
+
+#: The shipped pigeon (SI), relative to the repository root.
+DEFAULT_BIRD = Path(__file__).resolve().parents[2] / "models" / "pigeon.toml"
+
+
+@dataclass(frozen=True)
+class Validation:
+    """Everything one run computed: the JSON object and what the page draws."""
+
+    obj: dict
+    rows: tuple[Row, ...]
+    sweep: TrimSweep
+    variants: dict[str, TrimSweep]
+
+
+def load_flying_bird(path: str | Path | None, polar: str | None = None) -> Bird:
+    """A bird file that states its mass and gravity (a real bird in consistent units).
+
+    Raises:
+        BirdConfigError: no such file, invalid TOML, missing ``mass`` or ``gravity`` (or
+            gravity 0), an unknown polar.
+    """
+    p = Path(path) if path is not None else DEFAULT_BIRD
+    if path is None and not p.exists():
+        raise BirdConfigError(f"--bird: the default pigeon {str(p)!r} is missing; allowed: --bird FILE.toml with mass and gravity")
+    try:
+        data = tomllib.loads(p.read_text())
+    except FileNotFoundError:
+        raise BirdConfigError(f"--bird {str(p)!r} does not exist; allowed: a readable TOML file") from None
+    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
+        raise BirdConfigError(f"--bird {str(p)!r} is not valid TOML: {exc}") from None
+    for key in ("mass", "gravity"):
+        if key not in data:
+            raise BirdConfigError(f"--bird {str(p)!r} has no {key}; allowed: a bird file with mass and gravity > 0 (validation flies the bird's weight)")
+    bird = Bird.from_dict(data)
+    if not bird.gravity > 0:
+        raise BirdConfigError(f"--bird {str(p)!r}: gravity={bird.gravity!r} is invalid; allowed: a number > 0")
+    if polar is not None:
+        if polar not in POLARS:
+            raise BirdConfigError(f"--polar {polar!r} is unknown; allowed: {', '.join(POLARS)}")
+        if polar != bird.polar.kind:
+            bird = replace(bird, polar=polar_from_dict({"kind": polar}))
+    return bird
+
+
+def validate(
+    bird: Bird,
+    model: str = "m3",
+    measurements: tuple[Measurement, ...] | None = None,
+    *,
+    bird_file: str = "",
+    variants: bool = True,
+    progress: bool = False,
+) -> Validation:
+    """Trim the bird over the speeds, score every measurement, build the JSON object."""
+    t0 = time.perf_counter()
+    ms = measurements if measurements is not None else load_measurements()
+    speeds = sweep_speeds(ms)
+    bar = None
+    if progress:
+        from tqdm import tqdm
+
+        bar = tqdm(total=len(speeds), unit="speed", desc=f"validate {model}", leave=False)
+    try:
+        sweep = trim_sweep(model, bird, speeds, progress=bar)
+    finally:
+        if bar is not None:
+            bar.close()
+    rows, vsweeps = score(ms, sweep, bird, variants=variants)
+    mp = sweep.min_power()
+    rng = sweep.trim_range()
+    hover = any(p.trimmed for p in sweep.points if p.speed == 0.0)
+    obj = {
+        "model": sweep.model,
+        "bird": bird.name,
+        "bird_file": bird_file,
+        "polar": bird.polar.kind,
+        "induced_velocity": bird.induced_velocity,
+        "units": {"speed": "m/s", "power": "W (whole bird, both wings, mechanical)", "params": "rad (table names)"},
+        "rows": [r.to_dict() for r in rows],
+        "power_curve": [p.to_dict() for p in sweep.points],
+        "min_power_speed": None if mp is None else mp[0],
+        "min_power": None if mp is None else mp[1],
+        "trim_range": None if rng is None else list(rng),
+        "hover": hover,
+        "variants": {k: [p.to_dict() for p in v.points] for k, v in vsweeps.items()},
+        "seconds": time.perf_counter() - t0,
+    }
+    return Validation(obj, rows, sweep, vsweeps)
+
+
+def scorecard_text(v: Validation) -> str:
+    """The scorecard as a plain-text table (the command's default output)."""
+    lines = [
+        f"birdsim validate: {v.obj['bird']}, model {v.obj['model']}, {v.obj['polar']} polar"
+        + (", induced velocity on" if v.obj["induced_velocity"] else ""),
+        f"{'quantity':60s} {'measured':32s} {'birdsim':20s} {'ratio':>6s}  verdict   [source]",
+    ]
+    for r in v.rows:
+        m = r.measurement
+        ratio = "" if r.ratio is None else f"{r.ratio:.2f}"
+        lines.append(f"{m.quantity[:60]:60s} {m.measured_text()[:32]:32s} {r.birdsim_text:20s} {ratio:>6s}  {r.verdict}   [{m.source}]")
+        for k, val in r.variants.items():
+            lines.append(f"{'':60s} {'':32s}   with {k}: {'cannot trim' if val is None else f'{val:.3g}'}")
+    mp, rng, pmin = v.obj["min_power_speed"], v.obj["trim_range"], v.obj["min_power"]
+    lines.append(
+        f"minimum-power speed {'none' if mp is None else f'{mp:.2f} m/s ({pmin:.2f} W)'}; "
+        f"trimmed {'none' if rng is None else f'{rng[0]:g}-{rng[1]:g} m/s'}; hover {'trims' if v.obj['hover'] else 'does not trim'}; "
+        f"{v.obj['seconds']:.1f} s"
+    )
+    return "\n".join(lines)
+
+
+__all__ = ["DEFAULT_BIRD", "Validation", "load_flying_bird", "scorecard_text", "validate"]
