@@ -7,7 +7,7 @@ import time
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-from birdsim.errors import BirdConfigError, BirdsimError
+from birdsim.errors import BirdConfigError
 from birdsim.physics.aero import POLARS, polar_from_dict
 from birdsim.physics.bird import Bird
 from birdsim.validation.measurements import Measurement, load_measurements
