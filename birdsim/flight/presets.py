@@ -15,7 +15,18 @@ table cells whose corners are all reachable.
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from birdsim.flight.path import PERCH_Z, FlightPath, PathKeyframe
+from birdsim.physics.bird import Bird
+
+#: The demo model: it hovers with the demo bird (m4 cannot: its flap is bounded to pi/4)
+#: and its table reaches every preset (docs/flight.md, "Envelope of each model").
+DEMO_MODEL = "m3"
+#: The shipped bird files (repository ``models/``).
+MODELS_FOLDER = Path(__file__).resolve().parents[2] / "models"
+SEED_BIRD_FILE = MODELS_FOLDER / "seed-bird.toml"
+PIGEON_FILE = MODELS_FOLDER / "pigeon.toml"
 
 #: Height of hover and cruise (semispans above the floor).
 CRUISE_HEIGHT = 6.0
@@ -63,7 +74,15 @@ def _presets() -> dict[str, FlightPath]:
     return {p.name: p for p in (hover, cruise, take_off, landing)}
 
 
+def demo_bird() -> Bird:
+    """The seed bird that flies: ``models/seed-bird.toml`` (mass ratio 30, reduced gravity
+    0.012, weight 0.36 table units); the same values when the file is not installed."""
+    if SEED_BIRD_FILE.is_file():
+        return Bird.from_toml(SEED_BIRD_FILE)
+    return Bird(mass=30.0, gravity=0.012)
+
+
 #: The presets by name (same names as the force-keyframe presets of manoeuvre.py).
 PATH_PRESETS: dict[str, FlightPath] = _presets()
 
-__all__ = ["CRUISE_HEIGHT", "CRUISE_SPEED", "PATH_PRESETS"]
+__all__ = ["CRUISE_HEIGHT", "CRUISE_SPEED", "DEMO_MODEL", "PATH_PRESETS", "PIGEON_FILE", "SEED_BIRD_FILE", "demo_bird"]
