@@ -17,6 +17,7 @@ COMMAND_MODULES = (
     "birdsim.commands.report",
     "birdsim.commands.render",
     "birdsim.commands.crosscheck",
+    "birdsim.commands.envelope",
     "birdsim.commands.validate",
 )
 
