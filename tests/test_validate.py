@@ -1,6 +1,7 @@
 """Validation against measured pigeons: data file, trimmed level flight, scorecard, CLI.
 
-The pigeon here is written inline (the values of models/pigeon.toml's sources): mass and
+The scorecard pin uses the shipped models/pigeon.toml. The other tests use a pigeon
+written inline (the values of models/pigeon.toml's sources): mass and
 span from Usherwood et al. 2005 Table 2 (0.483 kg, 0.660 m), wingbeat 8.02 Hz (same
 table), mean chord 0.13 m = mass / wing loading 5.65 kg m^-2 (Spedding et al. 1984 via
 Hedrick et al. 2002) / span, sea-level air 1.225 kg m^-3, body drag area s*c (the seed
@@ -46,8 +47,11 @@ def pigeon(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 @pytest.fixture(scope="module")
-def result(pigeon: Path):  # noqa: ANN201
-    return validate(load_flying_bird(pigeon), "m3", variants=False)
+def result():  # noqa: ANN201
+    """The shipped pigeon's scorecard (no variants: the pin is of the base physics)."""
+    if not DEFAULT_BIRD.exists():
+        pytest.skip("models/pigeon.toml not in this checkout")
+    return validate(load_flying_bird(None), "m3", variants=False)
 
 
 # ---- data file ----------------------------------------------------------------------
@@ -154,24 +158,25 @@ def test_gravityless_bird_is_refused() -> None:
         trim_sweep("m3", Bird(), [1.0])
 
 
-# ---- the pinned scorecard of the test pigeon (m3, seed polar) -----------------------
+# ---- the pinned scorecard of the shipped pigeon (models/pigeon.toml, m3, seed polar) --
 
-#: id -> (birdsim value, relative tolerance). A physics change that moves a row fails here.
+#: id -> (birdsim value, relative tolerance). A physics change that moves a row fails here;
+#: 2 % on optimiser outputs (SLSQP end points move ~1e-4 with BLAS / scipy versions).
 PINNED = {
-    "P68b_vmp": (9.42, 0.02),
-    "U05_wing_power": (14.25, 0.02),
-    "P68b_pcont_3": (13.66, 0.02),
-    "P68b_pcont_16": (14.88, 0.02),
-    "P68b_LD": (6.92, 0.02),
-    "P68b_psprint": (13.38, 0.02),
+    "P68b_vmp": (9.826, 0.02),
+    "U05_wing_power": (14.12, 0.02),
+    "P68b_pcont_3": (14.10, 0.02),
+    "P68b_pcont_16": (13.97, 0.02),
+    "P68b_LD": (6.843, 0.02),
+    "P68b_psprint": (14.07, 0.02),
     "TD96_speed_max": (22.0, 1e-9),
     "U05_wing_ws": (100.0, 1e-3),
-    "CT11_aoa_down": (37.6, 0.02),
-    "CT11_aoa_up": (24.4, 0.03),
-    "U05_strokeplane": (21.6, 0.05),
-    "B10_amplitude_trend": (-4.47, 0.05),
-    "TD96_body_angle_trend": (-1.29, 0.05),
-    "TD96_strokeplane_trend": (2.62, 0.05),
+    "CT11_aoa_down": (39.95, 0.02),
+    "CT11_aoa_up": (31.02, 0.03),
+    "U05_strokeplane": (15.31, 0.05),
+    "B10_amplitude_trend": (-4.506, 0.05),
+    "TD96_body_angle_trend": (-1.883, 0.05),
+    "TD96_strokeplane_trend": (3.208, 0.05),
     "PA15_hover": (1.0, 0),
 }
 VERDICTS = {
@@ -189,12 +194,12 @@ def test_pinned_scorecard(result) -> None:  # noqa: ANN001
     assert result.obj["hover"] is True and result.obj["trim_range"] == [0.0, 22.0]
 
 
-def test_json_object_lets_a_reader_recompute_a_point(result, pigeon: Path) -> None:  # noqa: ANN001
+def test_json_object_lets_a_reader_recompute_a_point(result) -> None:  # noqa: ANN001
     obj = json.loads(json.dumps(result.obj))
     assert {"model", "rows", "power_curve", "min_power_speed"} <= set(obj)
     assert {"quantity", "measured", "source", "birdsim", "ratio", "verdict"} <= set(obj["rows"][0])
     pt = next(p for p in obj["power_curve"] if p["speed"] == 4.46)
-    bird = load_flying_bird(pigeon)
+    bird = load_flying_bird(None)
     whole = evaluate_cycle(obj["model"], pt["params"], pt["speed"], bird=bird, n=64, check_bounds=False).whole_bird_mean
     assert float(whole.P) == pytest.approx(pt["power"], rel=1e-9)
     assert min(p["power"] for p in obj["power_curve"] if p["trimmed"]) <= obj["min_power"] + 0.5
@@ -227,7 +232,7 @@ def test_cli_json_and_page(tmp_path: Path, pigeon: Path, capsys: pytest.CaptureF
     assert main(["validate", "--bird", str(pigeon), "--data", str(data), "--json", "--out", str(out)]) == 0
     obj = json.loads(capsys.readouterr().out)
     assert [r["id"] for r in obj["rows"]] == ["P68b_vmp", "U05_wing_power", "TD96_speed_max"]
-    assert obj["min_power_speed"] == pytest.approx(9.42, rel=0.02)
+    assert obj["min_power_speed"] == pytest.approx(9.42, rel=0.02)  # the inline pigeon (chord 0.13, drag area s c)
     assert {f.name for f in out.iterdir()} == {"index.html", "power_curve.png", "kinematics.png", "scorecard.json"}
     assert "Usherwood" in (out / "index.html").read_text()
     before = (out / "index.html").stat().st_mtime_ns
