@@ -288,3 +288,19 @@ def test_shipped_pigeon_trims_level_flight() -> None:
     bird = load_flying_bird(None)
     sweep = trim_sweep("m3", bird, [4.46, 10.0])
     assert all(p.trimmed and math.isfinite(p.power) and p.power > 0 for p in sweep.points)
+
+
+def test_angle_of_attack_is_the_analytic_one_for_the_base_model() -> None:
+    """base model at mid-downstroke: element velocity in body axes (V cos th, V sin th + r w Phi)
+    (z down), twisted leading edge down by Theta: alpha = atan2(V sin th + r w Phi, V cos th) - Theta;
+    at mid-upstroke the heave velocity reverses and the twist is +Theta."""
+    from birdsim.validation.trim import TrimPoint, angle_of_attack_deg
+
+    bird = Bird(semispan=0.33, chord=0.12, omega=50.0, gravity=9.81)
+    th, phi, tw, v = 0.2, 0.6, 0.3, 7.0
+    pt = TrimPoint(v, 0.0, {"pitch": th, "flap_amp": phi, "twist_amp": tw}, True, 0.0, 0.0, 0.0, 1.0)
+    r_omega_phi = 0.5 * 0.33 * 50.0 * phi
+    down = math.degrees(math.atan2(v * math.sin(th) + r_omega_phi, v * math.cos(th)) - tw)
+    up = math.degrees(math.atan2(v * math.sin(th) - r_omega_phi, v * math.cos(th)) + tw)
+    assert angle_of_attack_deg("base", bird, pt, 0.0) == pytest.approx(down, abs=1e-9)
+    assert angle_of_attack_deg("base", bird, pt, math.pi) == pytest.approx(up, abs=1e-9)
