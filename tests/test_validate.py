@@ -205,6 +205,18 @@ def test_json_object_lets_a_reader_recompute_a_point(result) -> None:  # noqa: A
     assert min(p["power"] for p in obj["power_curve"] if p["trimmed"]) <= obj["min_power"] + 0.5
 
 
+def test_shipped_table_agrees_with_the_direct_solve(result) -> None:  # noqa: ANN001
+    """The table's interpolated level-flight power is within 12 % of the direct solve where
+    its grid reaches (the branch change near 7-9 m/s is the worst), and the direct solve
+    is never worse than the table by more than 2 % (it starts from the table's answer)."""
+    assert result.obj["table"] == "pigeon-m3.npz"
+    pairs = [(p["power"], p["table_power"]) for p in result.obj["power_curve"] if p["table_power"] is not None]
+    assert len(pairs) >= 15
+    for direct, table in pairs:
+        assert abs(table - direct) <= 0.12 * direct
+        assert direct <= 1.02 * table
+
+
 def test_off_row_gets_the_other_physics(pigeon: Path) -> None:
     bird = load_flying_bird(pigeon)
     ms = tuple(m for m in load_measurements() if m.id == "CT11_aoa_up")
@@ -304,3 +316,16 @@ def test_angle_of_attack_is_the_analytic_one_for_the_base_model() -> None:
     up = math.degrees(math.atan2(v * math.sin(th) - r_omega_phi, v * math.cos(th)) + tw)
     assert angle_of_attack_deg("base", bird, pt, 0.0) == pytest.approx(down, abs=1e-9)
     assert angle_of_attack_deg("base", bird, pt, math.pi) == pytest.approx(up, abs=1e-9)
+
+
+def test_diagnosis_says_which_physics_closes_the_gap() -> None:
+    from birdsim.validation.page import diagnose
+    from birdsim.validation.scorecard import Row
+
+    ms = {m.id: m for m in load_measurements()}
+    far = diagnose(Row(ms["CT11_aoa_up"], 31.0, 0.47, "off", {"robofly polar": 24.4, "induced velocity on": 20.7}))
+    assert far.count("(further)") == 2 and "Neither" in far
+    near = diagnose(Row(ms["U05_wing_power"], 10.0, 0.39, "off", {"robofly polar": 60.0, "induced velocity on": 20.0}))
+    assert near.endswith("induced velocity on closes the gap.") and near.count("(closer)") == 2  # 60 W: closer, still > x2
+    trend = diagnose(Row(ms["TD96_strokeplane_trend"], 3.2, None, "opposite", {"robofly polar": 5.9, "induced velocity on": -0.3}))
+    assert "still the wrong sign" in trend and "induced velocity on closes" in trend

@@ -12,6 +12,7 @@ from birdsim.physics.aero import POLARS, polar_from_dict
 from birdsim.physics.bird import Bird
 from birdsim.validation.measurements import Measurement, load_measurements
 from birdsim.validation.scorecard import Row, score, sweep_speeds
+from birdsim.validation.tablecheck import find_table, level_flight_from_table
 from birdsim.validation.trim import TrimSweep, trim_sweep
 
 if sys.version_info >= (3, 11):
@@ -63,6 +64,13 @@ def load_flying_bird(path: str | Path | None, polar: str | None = None) -> Bird:
     return bird
 
 
+def table_label(bird: Bird, model: str) -> str:
+    """The shipped table's file name for the bird and model (for the JSON and the page)."""
+    from birdsim.tables.shipped import shipped_table
+
+    return shipped_table(bird, model).name
+
+
 def validate(
     bird: Bird,
     model: str = "m3",
@@ -70,19 +78,27 @@ def validate(
     *,
     bird_file: str = "",
     variants: bool = True,
+    use_table: bool = True,
     progress: bool = False,
 ) -> Validation:
-    """Trim the bird over the speeds, score every measurement, build the JSON object."""
+    """Trim the bird over the speeds, score every measurement, build the JSON object.
+
+    With ``use_table`` the shipped table for the bird and model (if one fits) adds a start
+    at each speed in its grid and its interpolated power is reported beside the solve's
+    (``power_curve[i].table_power``).
+    """
     t0 = time.perf_counter()
     ms = measurements if measurements is not None else load_measurements()
     speeds = sweep_speeds(ms)
+    table = find_table(bird, model) if use_table else None
+    tab = level_flight_from_table(table, bird, speeds) if table is not None else None
     bar = None
     if progress:
         from tqdm import tqdm
 
         bar = tqdm(total=len(speeds), unit="speed", desc=f"validate {model}", leave=False)
     try:
-        sweep = trim_sweep(model, bird, speeds, progress=bar)
+        sweep = trim_sweep(model, bird, speeds, extra_starts=tab.starts if tab else None, progress=bar)
     finally:
         if bar is not None:
             bar.close()
@@ -98,7 +114,10 @@ def validate(
         "induced_velocity": bird.induced_velocity,
         "units": {"speed": "m/s", "power": "W (whole bird, both wings, mechanical)", "params": "rad (table names)"},
         "rows": [r.to_dict() for r in rows],
-        "power_curve": [p.to_dict() for p in sweep.points],
+        "power_curve": [
+            {**p.to_dict(), "table_power": None if tab is None else tab.power[i]} for i, p in enumerate(sweep.points)
+        ],
+        "table": None if table is None else table_label(bird, model),
         "min_power_speed": None if mp is None else mp[0],
         "min_power": None if mp is None else mp[1],
         "trim_range": None if rng is None else list(rng),
@@ -126,7 +145,7 @@ def scorecard_text(v: Validation) -> str:
     lines.append(
         f"minimum-power speed {'none' if mp is None else f'{mp:.2f} m/s ({pmin:.2f} W)'}; "
         f"trimmed {'none' if rng is None else f'{rng[0]:g}-{rng[1]:g} m/s'}; hover {'trims' if v.obj['hover'] else 'does not trim'}; "
-        f"{v.obj['seconds']:.1f} s"
+        f"table {v.obj['table'] or 'none'}; {v.obj['seconds']:.1f} s"
     )
     return "\n".join(lines)
 

@@ -187,6 +187,7 @@ def trim_sweep(
     starts: int = 4,
     first_starts: int = 16,
     start_from: Sequence[np.ndarray] | None = None,
+    extra_starts: Sequence[np.ndarray | None] | None = None,
     label: str = "seed polar",
     backward: bool = True,
     progress: object | None = None,
@@ -198,7 +199,9 @@ def trim_sweep(
     each speed re-solved from its faster neighbour's optimum, kept if cheaper (a branch
     found late reaches back; ``backward=False`` skips it).  ``start_from`` (one parameter
     row per speed, e.g. another sweep's optimum) is then the only start at each speed
-    (the variants' cheap mode: one SLSQP per speed).  Deterministic (Sobol seed 0).
+    (the variants' cheap mode: one SLSQP per speed).  ``extra_starts`` (one row or None
+    per speed, e.g. the shipped table's lookup) are added to the starts.  Deterministic
+    (Sobol seed 0).
 
     Returns:
         TrimSweep with one TrimPoint per speed, in the given order.
@@ -223,6 +226,8 @@ def trim_sweep(
             cands.extend(box_corners(prob))
         elif start_from is None:
             cands.extend(random_starts(prob, starts, seed=k))
+        if extra_starts is not None and extra_starts[k] is not None:
+            cands.append(np.asarray(extra_starts[k], dtype=float))
         best = min((slsqp(prob, x0) for x0 in cands), key=lambda s: s.cost)
         sols.append(best)
         if progress is not None:
