@@ -132,6 +132,11 @@ def diagnose(row: Row) -> str:
         if v is None:
             parts.append(f"with {label} the bird cannot trim there")
             continue
+        if m.kind == "yesno":
+            parts.append(f"with {label}: {row.value_text(v)}")
+            if (v >= 0.5) == (m.value >= 0.5):
+                closing.append(label)
+            continue
         if m.kind == "trend":
             fixed = (v < 0) == (m.value < 0) and v != 0
             parts.append(f"with {label} the slope is {v:+.3g} ({'right' if fixed else 'still the wrong'} sign)")
@@ -161,7 +166,7 @@ def render_html(obj: dict, rows: Sequence[Row], title: str) -> str:
     for r in rows:
         m = r.measurement
         cls = r.verdict.split(" ")[0]
-        variants = "; ".join(f"{k}: {'cannot trim' if v is None else f'{v:.3g}'}" for k, v in r.variants.items())
+        variants = "; ".join(f"{k}: {r.value_text(v)}" for k, v in r.variants.items())
         src = f'<a href="{esc(m.url)}">{esc(m.source)}</a>' if m.url else esc(m.source)
         trs.append(
             f"<tr class='{esc(cls)}'><td>{esc(m.quantity)}</td><td>{esc(m.measured_text())}"

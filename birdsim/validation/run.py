@@ -140,7 +140,7 @@ def scorecard_text(v: Validation) -> str:
         ratio = "" if r.ratio is None else f"{r.ratio:.2f}"
         lines.append(f"{m.quantity[:60]:60s} {m.measured_text()[:32]:32s} {r.birdsim_text:20s} {ratio:>6s}  {r.verdict}   [{m.source}]")
         for k, val in r.variants.items():
-            lines.append(f"{'':60s} {'':32s}   with {k}: {'cannot trim' if val is None else f'{val:.3g}'}")
+            lines.append(f"{'':60s} {'':32s}   with {k}: {r.value_text(val)}")
     mp, rng, pmin = v.obj["min_power_speed"], v.obj["trim_range"], v.obj["min_power"]
     lines.append(
         f"minimum-power speed {'none' if mp is None else f'{mp:.2f} m/s ({pmin:.2f} W)'}; "

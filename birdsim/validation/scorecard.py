@@ -48,14 +48,18 @@ class Row:
 
     @property
     def birdsim_text(self) -> str:
+        return self.value_text(self.birdsim)
+
+    def value_text(self, value: float | None) -> str:
+        """A birdsim value of this row (its own or a variant's) as printed."""
         m = self.measurement
-        if self.birdsim is None:
+        if value is None:
             return "cannot trim"
         if m.kind == "trend":
-            return f"{self.birdsim:+.3g} {_slope_unit(m.compare)}"
+            return f"{value:+.3g} {_slope_unit(m.compare)}"
         if m.kind == "yesno":
-            return "yes" if self.birdsim else "no"
-        return f"{self.birdsim:.3g} {m.unit}"
+            return "yes" if value else "no"
+        return f"{value:.3g} {m.unit}"
 
     def to_dict(self) -> dict[str, object]:
         m = self.measurement
