@@ -56,7 +56,9 @@ def body_drag_earth(bird: Bird, V: Any, climb: Any, pitch: Any) -> tuple[np.ndar
     return -mag * V, mag * climb
 
 
-def demand_from_acceleration(ax_up: Any, az_up: Any, vx: Any, vz: Any, bird: Bird, pitch: Any) -> tuple[np.ndarray, np.ndarray]:
+def demand_from_acceleration(
+    ax_up: Any, az_up: Any, vx: Any, vz: Any, bird: Bird, pitch: Any
+) -> tuple[np.ndarray, np.ndarray]:
     """The table force (one wing + body drag, seed axes) that gives the bird an acceleration.
 
     Args:
@@ -139,8 +141,16 @@ def path_schedule(path: FlightPath, bird: Bird, table: Any, *, per_beat: int = 4
     keyframes, last = [], None
     for i, t in enumerate(tb):
         label = path.regime(float(t))
-        keyframes.append(Keyframe(float(t), float(d["Fx"][i]), float(d["Fz"][i]), max(float(d["V"][i]), 0.0),
-                                  float(d["z"][i]) + dz, label if label != last else ""))
+        keyframes.append(
+            Keyframe(
+                float(t),
+                float(d["Fx"][i]),
+                float(d["Fz"][i]),
+                max(float(d["V"][i]), 0.0),
+                float(d["z"][i]) + dz,
+                label if label != last else "",
+            )
+        )
         last = label
     return Manoeuvre(path.name, tuple(keyframes), path.duration_beats, path.description, perch)
 
