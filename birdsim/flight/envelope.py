@@ -249,4 +249,29 @@ def envelope(table: LookupTable, bird: Bird) -> Envelope:
     )
 
 
-__all__ = ["Envelope", "envelope", "reachable", "trim_drag"]
+def path_reach(
+    path: Any, bird: Bird, table: LookupTable, samples_per_beat: int = 32
+) -> dict[str, np.ndarray]:
+    """The feed-forward demands of a flight path and whether each is reachable.
+
+    Args:
+        path: a :class:`birdsim.flight.path.FlightPath`.
+        bird: the bird flying it (reduced internally).
+        table: the table flying it.
+        samples_per_beat: samples per wingbeat over ``[0, duration]``.
+
+    Returns:
+        :func:`birdsim.flight.demand.path_demands` at the samples, plus ``t`` (reduced
+        time), ``t_beats`` and ``ok`` (bool: the demand lies in a cell whose corners are
+        all ok, negative speeds are not).
+    """
+    from birdsim.flight.demand import path_demands
+
+    n = int(math.ceil(path.duration_beats * samples_per_beat)) + 1
+    t_beats = np.linspace(0.0, path.duration_beats, n)
+    d = path_demands(path, bird, table, t_beats * 2.0 * math.pi)
+    ok = reachable(table, d["Fx"], d["Fz"], d["V"]) & (d["V"] >= -1e-12)
+    return {**d, "t": t_beats * 2.0 * math.pi, "t_beats": t_beats, "ok": ok}
+
+
+__all__ = ["Envelope", "envelope", "path_reach", "reachable", "trim_drag"]
