@@ -214,7 +214,17 @@ mechanical (aerodynamic) power, both wings. Every measured value and its citatio
 
 
 def write_page(out: Path, obj: dict, rows: Sequence[Row], sweep: TrimSweep, variants: dict[str, TrimSweep], *, force: bool) -> Path:
-    """Write the page into ``out`` (created); every file atomically. Returns index.html's path."""
+    """Write the page into ``out`` (created); every file atomically.
+
+    Args:
+        out: output folder; ``obj`` the JSON object of :func:`birdsim.validation.run.validate`,
+            ``rows``, ``sweep`` and ``variants`` what it computed.
+        force: overwrite a page already in ``out``.
+    Returns:
+        The path of ``index.html``.
+    Raises:
+        BirdsimError: ``out`` is a file, or holds a page and ``force`` is not given.
+    """
     out = Path(out)
     check_page_folder(out, force)
     title = f"birdsim against measured pigeons: {obj['bird']}, model {obj['model']}, {obj['polar']} polar"

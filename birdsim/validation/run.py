@@ -86,6 +86,19 @@ def validate(
     With ``use_table`` the shipped table for the bird and model (if one fits) adds a start
     at each speed in its grid and its interpolated power is reported beside the solve's
     (``power_curve[i].table_power``).
+
+    Args:
+        bird: a bird with mass and gravity, in consistent units (SI: m/s and W out).
+        model: kinematic model name.
+        measurements: rows to score (default: the shipped pigeon file).
+        bird_file: recorded in the JSON object.
+        variants: recompute off rows with the other polar and induced velocity toggled.
+        use_table: use the shipped table as a start and cross-check.
+        progress: a tqdm bar over the speeds on stderr.
+    Returns:
+        Validation (the JSON object, rows, sweep and variant sweeps).
+    Raises:
+        BirdsimError: bird without gravity, unknown model, malformed measurements.
     """
     t0 = time.perf_counter()
     ms = measurements if measurements is not None else load_measurements()

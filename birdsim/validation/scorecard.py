@@ -101,7 +101,13 @@ def verdict_for(m: Measurement, value: float | None) -> tuple[float | None, str]
 
 
 def model_value(m: Measurement, sweep: TrimSweep, bird: Bird) -> float | None:
-    """birdsim's value of the quantity ``m.compare`` from ``sweep`` (None: not trimmed)."""
+    """birdsim's value of the quantity ``m.compare`` from ``sweep``, in ``m.unit``.
+
+    Returns:
+        The value, or None where the bird cannot trim (or a trend has < 2 trimmed speeds).
+    Raises:
+        BirdsimError: the row's speed is not in the sweep, or an unknown compare key.
+    """
     key = m.compare
     if key == "min_power_speed":
         mp = sweep.min_power()
@@ -170,8 +176,18 @@ def score(
 ) -> tuple[tuple[Row, ...], dict[str, TrimSweep]]:
     """Score every measurement against ``sweep``; rows that are off get variant values.
 
+    Args:
+        measurements: the rows of the data file.
+        sweep: the bird's trimmed sweep; must contain every speed a row names
+            (:func:`sweep_speeds`).
+        bird: the bird of the sweep (its polar and induced velocity are toggled for the
+            variants).
+        variants: recompute off rows with the other physics.
+        progress: called with each variant's label before its sweep.
     Returns:
         (rows, variant sweeps by label) -- the variant sweeps cover only what off rows need.
+    Raises:
+        BirdsimError: a row names a speed that is not in the sweep.
     """
     rows = []
     for m in measurements:
