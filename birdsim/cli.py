@@ -20,6 +20,8 @@ COMMAND_MODULES = (
     "birdsim.commands.export",
     "birdsim.commands.bird",
     "birdsim.commands.params",
+    "birdsim.commands.envelope",
+    "birdsim.commands.validate",
 )
 
 
