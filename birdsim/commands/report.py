@@ -28,7 +28,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 def run(args: argparse.Namespace) -> int:
     from birdsim.report.report import build_report
 
-    sections = build_report(Path(args.out), quick=args.quick, force=args.force, bird=bird_from_args(args), only=args.only)
+    sections = build_report(Path(args.out), quick=args.quick, force=args.force, bird=bird_from_args(args), only=args.only, progress=None)
     figures = sum(len(s.entries) for s in sections)
     print(f"report: {figures} figures in {args.out}/ (open {args.out}/index.html)")
     for s in sections:

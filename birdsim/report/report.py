@@ -18,6 +18,9 @@ of families and the run).
 
 from __future__ import annotations
 
+import os
+import shutil
+import tempfile
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
@@ -85,34 +88,65 @@ def build_report(
     force: bool = False,
     bird: Bird | None = None,
     only: Sequence[str] | None = None,
-    progress: bool = True,
+    progress: bool | None = True,
 ) -> list[Section]:
     """Regenerate every figure into ``out`` (PNGs) and write ``out/index.html``.
 
-    Refuses an existing ``index.html`` without ``force``.  ``only`` restricts the run to
-    some family keys (:data:`FAMILIES`).
+    The figures are drawn into a temporary folder inside ``out`` and moved into place
+    with the page at the end: an interrupted or failed run leaves ``out`` as it was.
+
+    Args:
+        out: the report folder (made if missing).
+        quick: coarse grids (:data:`QUICK`) instead of :data:`FULL`.
+        force: replace an existing report in ``out``.
+        bird: the bird of every figure (default: the seed bird).
+        only: family keys (:data:`FAMILIES`) to build; default all.
+        progress: a tqdm bar per family (None: only on a terminal).
+
+    Returns:
+        One :class:`Section` per family built, with its entries and seconds.
+
+    Raises:
+        BirdsimError: one line for an existing report without ``force``, an ``out``
+            that is a file or cannot be made, an unknown ``only`` key, or matplotlib
+            missing.
     """
     out = Path(out)
     plots.pyplot()  # fail early with the install hint when matplotlib is missing
     index = out / "index.html"
     if index.exists() and not force:
-        raise BirdsimError(f"--out {str(out)!r} already holds a report; allowed: a new folder, or --force to overwrite")
+        raise BirdsimError(f"out={str(out)!r} already holds a report; allowed: a new folder, or force=True (--force on the command line) to overwrite")
     if out.exists() and not out.is_dir():
-        raise BirdsimError(f"--out {str(out)!r} is a file; allowed: a folder")
+        raise BirdsimError(f"out={str(out)!r} is a file; allowed: a folder")
     keys = [f.key for f in FAMILIES]
     for k in only or ():
         if k not in keys:
-            raise BirdsimError(f"--only {k!r} is unknown; allowed: {', '.join(keys)}")
+            raise BirdsimError(f"only={k!r} is unknown; allowed: {', '.join(keys)}")
+    created = not out.exists()
     try:
         out.mkdir(parents=True, exist_ok=True)
+        staging = Path(tempfile.mkdtemp(prefix=".report-", dir=out))
     except OSError as exc:
-        raise BirdsimError(f"--out {str(out)!r} cannot be created: {exc.strerror}") from None
-    ctx = Context(out, QUICK if quick else FULL, bird or Bird())
-    families = [f for f in FAMILIES if not only or f.key in only]
+        raise BirdsimError(f"out={str(out)!r} cannot be created: {exc.strerror}") from None
+    try:
+        ctx = Context(staging, QUICK if quick else FULL, bird or Bird())
+        sections = _build_sections(ctx, [f for f in FAMILIES if not only or f.key in only], progress)
+        page = render_html(sections, ctx).encode()
+        for png in sorted(staging.iterdir()):
+            os.replace(png, out / png.name)
+        write_atomic(index, page)
+    except BaseException:
+        shutil.rmtree(out if created else staging, ignore_errors=True)
+        raise
+    shutil.rmtree(staging, ignore_errors=True)
+    return sections
+
+
+def _build_sections(ctx: Context, families: list[Family], progress: bool | None) -> list[Section]:
     from tqdm import tqdm
 
     sections = []
-    bar = tqdm(families, desc="report", unit="family", disable=not progress)
+    bar = tqdm(families, desc="report", unit="family", disable=None if progress is None else not progress)
     for fam in bar:
         bar.set_postfix_str(fam.key)
         t0 = time.perf_counter()
@@ -123,6 +157,4 @@ def build_report(
             sec.error = f"not built: needs {exc.name or exc} (not available in this checkout)"
         sec.seconds = time.perf_counter() - t0
         sections.append(sec)
-    write_atomic(index, render_html(sections, ctx).encode())
     return sections
-

@@ -151,7 +151,7 @@ class LookupTable:
                 out = (arr < lo - 1e-12) | (arr > hi + 1e-12)
                 if np.any(out):
                     bad = float(arr[out].flat[0]) if arr.ndim else float(arr)
-                    raise TableError(f"{a}={bad:g} is outside the table grid; allowed: [{lo:g}, {hi:g}] (or clip=True / --clip)")
+                    raise TableError(f"{a}={bad:g} is outside the table grid; allowed: [{lo:g}, {hi:g}] (or clip=True)")
                 arr = np.clip(arr, lo, hi)
             arrays[a] = arr
         b = np.broadcast_arrays(*(arrays[a] for a in AXES))
