@@ -96,6 +96,9 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("forces/bird-negative", [*FORCES, *HOVER, "--bird", "{w}/bird_negative.toml"], "--bird '{w}/bird_negative.toml': bird.semispan=-1.0 is invalid"),
     ("forces/bird-nan", [*FORCES, *HOVER, "--bird", "{w}/bird_nan.toml"], "--bird '{w}/bird_nan.toml': bird.chord=nan is invalid"),
     ("forces/bird-wrong-type", [*FORCES, *HOVER, "--bird", "{w}/bird_type.toml"], "--bird '{w}/bird_type.toml': bird.semispan='long' is invalid"),
+    ("forces/bird-bool", [*FORCES, *HOVER, "--bird", "{w}/bird_bool.toml"], "--bird '{w}/bird_bool.toml': bird.semispan=True is invalid"),
+    ("forces/bird-unknown-polar", [*FORCES, *HOVER, "--bird", "{w}/bird_polar.toml"], "--bird '{w}/bird_polar.toml': polar.kind='magic' is unknown"),
+    ("forces/bird-empty", [*FORCES, *HOVER, "--bird", ""], "--bird '' is empty"),
     ("forces/set-unknown-field", [*FORCES, *HOVER, "--set", "wingspan=2"], "--set wingspan=2 names no bird field"),
     ("forces/set-not-integer", [*FORCES, *HOVER, "--set", "strips=x"], "--set strips='x' is not an integer"),
     ("forces/set-out-of-bounds", [*FORCES, *HOVER, "--set", "strips=0"], "--set strips=0 is invalid"),
@@ -148,6 +151,7 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("crosscheck/samples-huge", ["crosscheck", "--model", "base", "--samples", "1000000000"], "--samples 1000000000 is invalid"),
     ("crosscheck/random-negative", ["crosscheck", "--model", "base", "--random", "-1"], "--random -1 is invalid"),
     ("crosscheck/random-huge", ["crosscheck", "--model", "base", "--random", "1000000000"], "--random 1000000000 is invalid"),
+    ("crosscheck/seed-negative", ["crosscheck", "--model", "base", "--seed", "-1", "--random", "1"], "--seed -1 is invalid"),
     ("crosscheck/forward-unknown", ["crosscheck", "--forward", "sideways"], "--forward: invalid choice: 'sideways'"),
     ("crosscheck/figure-suffix", ["crosscheck", "--model", "base", "--figure", "{w}/f.txt"], "--figure '{w}/f.txt' has an unknown suffix"),
     ("crosscheck/figure-exists", ["crosscheck", "--model", "base", "--figure", "{w}/exists.png"], "--figure '{w}/exists.png' exists"),
@@ -185,6 +189,8 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("report/only-unknown", ["report", "--out", "{w}/r", "--only", "nonsense"], "--only 'nonsense' is unknown"),
     ("report/out-exists", ["report", "--out", "{w}/done", "--only", "thrust"], "--out '{w}/done' already holds a report"),
     ("report/out-is-a-file", ["report", "--out", "{w}/malformed.toml", "--only", "thrust"], "--out '{w}/malformed.toml' is a file"),
+    ("report/out-empty", ["report", "--out", "", "--only", "thrust"], "--out '' is empty"),
+    ("report/out-parent-is-a-file", ["report", "--out", "{w}/malformed.toml/r", "--only", "thrust"], "--out '{w}/malformed.toml/r' cannot be created"),
     ("report/out-unwritable", ["report", "--out", "/proc/birdsim-report", "--only", "thrust"], "--out '/proc/birdsim-report' cannot be created"),
     ("report/bird-malformed", ["report", "--out", "{w}/r", "--bird", "{w}/malformed.toml"], "--bird '{w}/malformed.toml' is not valid TOML"),
     ("report/set-unknown", ["report", "--out", "{w}/r", "--set", "wingspan=2"], "--set wingspan=2 names no bird field"),
@@ -223,6 +229,7 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("py/Bird-nan", lambda w: Bird(chord=float("nan")), "bird.chord=nan is invalid"),
     ("py/Bird-strips-huge", lambda w: Bird(strips=10**9), "bird.strips=1000000000 is invalid"),
     ("py/Bird-fraction", lambda w: Bird(hand_span_fraction=2.0), "bird.hand_span_fraction=2.0 is invalid"),
+    ("py/Bird-bool", lambda w: Bird(mass=True), "bird.mass=True is invalid"),
     ("py/Bird.from_toml-missing", lambda w: Bird.from_toml(w / "nope.toml"), "path='"),
     ("py/Bird.from_toml-malformed", lambda w: Bird.from_toml(w / "malformed.toml"), "is not valid TOML"),
     ("py/Bird.from_toml-folder", lambda w: Bird.from_toml(w / "folder"), "is a folder"),
@@ -281,6 +288,8 @@ def template(tmp_path_factory: pytest.TempPathFactory) -> Path:
     (w / "bird_negative.toml").write_text("semispan = -1.0\n")
     (w / "bird_nan.toml").write_text("chord = nan\n")
     (w / "bird_type.toml").write_text('semispan = "long"\n')
+    (w / "bird_bool.toml").write_text("semispan = true\n")
+    (w / "bird_polar.toml").write_text('[polar]\nkind = "magic"\n')
     (w / "man_unknown_key.toml").write_text("speed = 2\n[[keyframe]]\nt = 0\nFx = 0\nFz = -0.3\nV = 0\n")
     (w / "man_negative_v.toml").write_text("[[keyframe]]\nt = 0\nFx = 0\nFz = -0.3\nV = -1\n")
     (w / "man_nan.toml").write_text("[[keyframe]]\nt = 0\nFx = 0\nFz = nan\nV = 0\n")

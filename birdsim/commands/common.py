@@ -59,7 +59,7 @@ def flag_names(starts: Mapping[str, str], hints: Mapping[str, str] | None = None
 def bird_from_args(args: argparse.Namespace) -> Bird:
     """The bird of ``--bird FILE.toml`` (default: the seed bird) with ``--set`` applied."""
     with flag_names({"path=": "--bird "}):
-        bird = Bird.from_toml(args.bird) if getattr(args, "bird", None) else Bird()
+        bird = Bird.from_toml(args.bird) if getattr(args, "bird", None) is not None else Bird()
     overrides = parse_pairs(getattr(args, "set", None), "--set")
     with flag_names({"overrides: ": "--set "}):
         return bird.with_overrides(overrides) if overrides else bird

@@ -63,6 +63,8 @@ def run(args: argparse.Namespace) -> int:
         raise BirdsimError(f"--samples {args.samples} is invalid; allowed: an integer in [2, {MAX_SAMPLES}]")
     if not 0 <= args.random <= MAX_RANDOM:
         raise BirdsimError(f"--random {args.random} is invalid; allowed: an integer in [0, {MAX_RANDOM}]")
+    if args.seed < 0:
+        raise BirdsimError(f"--seed {args.seed} is invalid; allowed: an integer >= 0")
     if args.figure and Path(args.figure).suffix.lower() not in FIGURE_SUFFIXES:
         raise BirdsimError(f"--figure {args.figure!r} has an unknown suffix; allowed: a path ending in {', '.join(FIGURE_SUFFIXES)}")
     figure = check_output(Path(args.figure), args.force, "--figure") if args.figure else None

@@ -73,16 +73,16 @@ class Bird:
         positive = ("semispan", "chord", "hand_chord", "rho", "omega", "disc_area", "mass")
         for name in positive:
             v = getattr(self, name)
-            if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+            if not (_is_number(v) and math.isfinite(v) and v > 0):
                 raise BirdConfigError(f"bird.{name}={v!r} is invalid; allowed: a finite number > 0")
         fractions = ("hand_span_fraction", "cp_span_fraction")
         for name in fractions:
             v = getattr(self, name)
-            if not (isinstance(v, (int, float)) and 0.0 <= v <= 1.0):
+            if not (_is_number(v) and 0.0 <= v <= 1.0):
                 raise BirdConfigError(f"bird.{name}={v!r} is invalid; allowed: a number in [0, 1]")
         for name in ("wrist_twist_ratio", "body_drag_area", "gravity"):
             v = getattr(self, name)
-            if not (isinstance(v, (int, float)) and math.isfinite(v) and v >= 0):
+            if not (_is_number(v) and math.isfinite(v) and v >= 0):
                 raise BirdConfigError(f"bird.{name}={v!r} is invalid; allowed: a finite number >= 0")
         if not (isinstance(self.strips, int) and not isinstance(self.strips, bool) and 1 <= self.strips <= 10_000):
             raise BirdConfigError(f"bird.strips={self.strips!r} is invalid; allowed: an integer in [1, 10000]")
@@ -137,6 +137,8 @@ class Bird:
             BirdConfigError: one line starting ``path='...'`` when the file is missing,
                 a folder, unreadable, not TOML, or holds an unknown or invalid field.
         """
+        if not str(path).strip():
+            raise BirdConfigError(f"path={str(path)!r} is empty; allowed: a readable TOML file")
         p = Path(path)
         arg = f"path={str(p)!r}"
         try:
@@ -195,6 +197,11 @@ class Bird:
             return replace(self, **top)
         except BirdConfigError as exc:  # "bird.strips=0 is invalid" -> "overrides: strips=0 is invalid"
             raise BirdConfigError(f"overrides: {str(exc).removeprefix('bird.')}") from None
+
+
+def _is_number(v: Any) -> bool:
+    """An int or float, not a bool (TOML's ``true`` is no length)."""
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
 
 
 def _parse_number(key: str, raw: str) -> float:

@@ -111,6 +111,8 @@ def build_report(
             that is a file or cannot be made, an unknown ``only`` key, or matplotlib
             missing.
     """
+    if not str(out).strip():
+        raise BirdsimError(f"out={str(out)!r} is empty; allowed: a folder path")
     out = Path(out)
     plots.pyplot()  # fail early with the install hint when matplotlib is missing
     index = out / "index.html"
