@@ -9,13 +9,14 @@ from pathlib import Path
 from birdsim.errors import BirdsimError
 
 
-def check_output(path: Path, force: bool, arg: str = "--out") -> Path:
+def check_output(path: Path, force: bool, arg: str = "path") -> Path:
     """Check that ``path`` can be written, before any work.
 
     Args:
         path: the output file.
         force: whether an existing file may be overwritten.
-        arg: how the message names the output (the caller's argument or flag).
+        arg: how the message names the output: the caller's Python argument (the CLI
+            passes its flag, or maps the name to it).
 
     Returns:
         ``path`` as a :class:`Path`; its folder exists afterwards.
@@ -27,7 +28,7 @@ def check_output(path: Path, force: bool, arg: str = "--out") -> Path:
     """
     path = Path(path)
     if path.exists() and not force:
-        raise BirdsimError(f"{arg} {str(path)!r} exists; allowed: a new path, or --force to overwrite")
+        raise BirdsimError(f"{arg} {str(path)!r} exists; allowed: a new path, or force=True to overwrite")
     if path.exists() and path.is_dir():
         raise BirdsimError(f"{arg} {str(path)!r} is a directory; allowed: a file path")
     try:

@@ -217,6 +217,7 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("py/lookup-nan", lambda w: _lookup(w, float("nan"), -0.3, 0.0), "Fx=nan is not finite"),
     ("py/lookup-outside", lambda w: _lookup(w, 0.0, -0.3, 5.0), "V=5 is outside the table grid; allowed: [0, 0.9] (or clip=True)"),
     ("py/lookup-not-a-number", lambda w: _lookup(w, "a", -0.3, 0.0), "Fx='a' is not a number"),
+    ("py/LookupTable.save-exists", lambda w: load_table(w / "table.npz").save(w / "table.npz"), "exists; allowed: a new path, or force=True"),
     ("py/build_table-unknown-model", lambda w: build_table(BuildConfig("m9", TINY)), "model 'm9' is unknown"),
     ("py/build_table-checkpoint-dir-is-a-file", lambda w: build_table(BuildConfig("base", TINY), jobs=1, checkpoint_dir=w / "malformed.toml"), "checkpoint_dir"),
     ("py/BuildSettings-screen-zero", lambda w: BuildSettings(screen=0), "screen=0 is invalid"),

@@ -202,7 +202,7 @@ class LookupTable:
         """Write ``<stem>.npz`` and ``<stem>.json`` atomically; refuse to overwrite without ``force``."""
         npz_path, json_path = table_paths(path)
         check_output(npz_path, force)
-        check_output(json_path, force, arg="--out (json)")
+        check_output(json_path, force, arg="path (json)")
         buf = io.BytesIO()
         np.savez_compressed(
             buf,
