@@ -41,12 +41,14 @@ from birdsim.flight.manoeuvre import get_manoeuvre, load_manoeuvre
 from birdsim.physics.kinematics import get_model
 from birdsim.tables.build import BuildConfig, BuildSettings, Grid, build_table
 
+# fmt: off
 HOVER = ["--param", "pitch=1.5", "--param", "flap_amp=1.5", "--param", "twist_amp=0.7"]
 FORCES = ["forces", "--model", "m1", "--speed", "0"]
 HOVER_PARAMS = dict(pitch=1.5, flap_amp=1.5, twist_amp=0.7)
 BUILD = ["tables", "build", "--model", "base", "--grid", "Fx=0|0.2,Fz=-0.5|-0.2,V=0|0.9", "--jobs", "1", "--quiet"]
 RENDER = ["render", "hover", "--model", "base", "--table", "{w}/table.npz", "--quiet"]
 TINY = Grid.parse("Fx=0|0.2,Fz=-0.5|-0.2,V=0|0.9")
+# fmt: on
 
 
 @dataclass(frozen=True)
@@ -255,9 +257,16 @@ def _table(model: str) -> LookupTable:
     shape = tuple(len(a) for a in (TINY.Fx, TINY.Fz, TINY.V))
     mid = np.array([(p.lower + p.upper) / 2 for p in m.params])
     return LookupTable(
-        model=model, bird=Bird(), param_names=m.param_names, axes={"Fx": TINY.Fx, "Fz": TINY.Fz, "V": TINY.V},
-        params=np.broadcast_to(mid, shape + (len(mid),)).copy(), cost=np.zeros(shape), cost_fractions=np.zeros(shape + (4,)),
-        achieved=np.zeros(shape + (3,)), status_code=np.zeros(shape, dtype=np.uint8), evaluations=np.ones(shape, dtype=np.int64),
+        model=model,
+        bird=Bird(),
+        param_names=m.param_names,
+        axes={"Fx": TINY.Fx, "Fz": TINY.Fz, "V": TINY.V},
+        params=np.broadcast_to(mid, shape + (len(mid),)).copy(),
+        cost=np.zeros(shape),
+        cost_fractions=np.zeros(shape + (4,)),
+        achieved=np.zeros(shape + (3,)),
+        status_code=np.zeros(shape, dtype=np.uint8),
+        evaluations=np.ones(shape, dtype=np.int64),
     )
 
 
@@ -291,10 +300,14 @@ def template(tmp_path_factory: pytest.TempPathFactory) -> Path:
     (w / "bird_type.toml").write_text('semispan = "long"\n')
     (w / "bird_bool.toml").write_text("semispan = true\n")
     (w / "bird_polar.toml").write_text('[polar]\nkind = "magic"\n')
-    (w / "man_unknown_key.toml").write_text("speed = 2\n[[keyframe]]\nt = 0\nFx = 0\nFz = -0.3\nV = 0\n")
+    (w / "man_unknown_key.toml").write_text(
+        "speed = 2\n[[keyframe]]\nt = 0\nFx = 0\nFz = -0.3\nV = 0\n"
+    )
     (w / "man_negative_v.toml").write_text("[[keyframe]]\nt = 0\nFx = 0\nFz = -0.3\nV = -1\n")
     (w / "man_nan.toml").write_text("[[keyframe]]\nt = 0\nFx = 0\nFz = nan\nV = 0\n")
-    (w / "man_huge_t.toml").write_text("[[keyframe]]\nt = 0\nFx = 0\nFz = -0.3\nV = 0\n[[keyframe]]\nt = 1e12\nFx = 0\nFz = -0.3\nV = 0\n")
+    (w / "man_huge_t.toml").write_text(
+        "[[keyframe]]\nt = 0\nFx = 0\nFz = -0.3\nV = 0\n[[keyframe]]\nt = 1e12\nFx = 0\nFz = -0.3\nV = 0\n"
+    )
     (w / "man_empty.toml").write_text('name = "empty"\n')
     (w / "exists.png").write_bytes(b"\x89PNG old figure")
     (w / "exists.mp4").write_bytes(b"old video")
@@ -333,7 +346,12 @@ def _snapshot(root: Path) -> dict[str, tuple]:
             p = Path(dirpath) / name
             st = p.lstat()
             digest = hashlib.sha256(p.read_bytes()).hexdigest() if p.is_file() else "dir"
-            out[str(p.relative_to(root))] = (digest, st.st_size if p.is_file() else 0, st.st_mtime_ns, st.st_mode)
+            out[str(p.relative_to(root))] = (
+                digest,
+                st.st_size if p.is_file() else 0,
+                st.st_mtime_ns,
+                st.st_mode,
+            )
     return out
 
 
@@ -384,8 +402,13 @@ def _ids(cases: list) -> list:
 
 @pytest.mark.parametrize("case_id, call, text", _ids(CASES))
 def test_bad_input(
-    case_id: str, call: Any, text: str, template: Path, tmp_path: Path,
-    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture,
+    case_id: str,
+    call: Any,
+    text: str,
+    template: Path,
+    tmp_path: Path,
+    monkeypatch: pytest.MonkeyPatch,
+    capsys: pytest.CaptureFixture,
 ) -> None:
     w = tmp_path / "w"
     shutil.copytree(template, w, symlinks=True)
@@ -424,8 +447,26 @@ def test_the_matrix_covers_every_subcommand_and_function() -> None:
     ids = [c.values[0] if hasattr(c, "marks") else c[0] for c in CASES]
     assert len(ids) == len(set(ids)) and len(ids) >= 60
     prefixes = {i.split("/")[0] for i in ids}
-    for part in ("forces", "examples", "build", "info", "lookup", "crosscheck", "render", "report", "py"):
+    for part in (
+        "forces",
+        "examples",
+        "build",
+        "info",
+        "lookup",
+        "crosscheck",
+        "render",
+        "report",
+        "py",
+    ):
         assert part in prefixes, part
-    for fn in ("evaluate_cycle", "load_table", "lookup", "Bird", "Bird.from_toml", "get_manoeuvre", "load_manoeuvre", "build_table"):
+    for fn in (
+        "evaluate_cycle",
+        "load_table",
+        "lookup",
+        "Bird",
+        "Bird.from_toml",
+        "get_manoeuvre",
+        "load_manoeuvre",
+        "build_table",
+    ):
         assert any(i.startswith(f"py/{fn}-") for i in ids), fn
-

@@ -18,7 +18,10 @@ from birdsim.report.sweep_claims import SWEEP, sweep_claims
 
 
 def _cycles(n: int = 32) -> dict:
-    return {ex.equation: evaluate_cycle(ex.model, ex.params, ex.speed, n=n, check_bounds=False) for ex in EXAMPLES}
+    return {
+        ex.equation: evaluate_cycle(ex.model, ex.params, ex.speed, n=n, check_bounds=False)
+        for ex in EXAMPLES
+    }
 
 
 def test_every_example_has_one_registered_check() -> None:
@@ -46,7 +49,11 @@ def test_claims_follow_the_numbers() -> None:
     c = cyc[57]
     _, claims = history_claims(57, c, cyc)
     by = {cl.statement: cl.holds for cl in claims}
-    assert by == {"Fz is negative (upward) over the whole cycle": True, "net upward force": True, "no net Fx": True}
+    assert by == {
+        "Fz is negative (upward) over the whole cycle": True,
+        "net upward force": True,
+        "no net Fx": True,
+    }
     shifted = replace(c, body_drag_x=np.asarray(c.body_drag_x) + 0.01)
     _, claims2 = history_claims(57, shifted, cyc)
     assert float(shifted.mean.Fx) == pytest.approx(float(c.mean.Fx) + 0.01, abs=1e-12)
@@ -65,14 +72,24 @@ def test_sweep_checks_by_model() -> None:
     names = ("pitch", "flap_amp", "twist_amp")
     params = np.array([[1.2, 1.5, 0.785], [0.6, 1.0, 0.4], [0.1, 0.8, 0.05]])
     fwd = fd.SpeedSweep(
-        model="base", direction="forward", speeds=speeds, param_names=names, params=params,
-        cost=np.zeros(3), fractions=np.zeros((3, 4)), achieved=np.zeros((3, 2)),
+        model="base",
+        direction="forward",
+        speeds=speeds,
+        param_names=names,
+        params=params,
+        cost=np.zeros(3),
+        fractions=np.zeros((3, 4)),
+        achieved=np.zeros((3, 2)),
     )
     said, claims = sweep_claims("base", fwd, replace(fwd, direction="backward"), None)
     assert said.startswith("Figs 35/38")
     by = {c.statement: c.holds for c in claims}
     assert by["pitch falls with speed"] and by["almost no twist at V = 1"]
     assert by["forward and backward passes agree at V = 0 and V = 1"]
-    _, claims = sweep_claims("base", fwd, replace(fwd, params=params + 0.1, direction="backward"), None)
-    assert not {c.statement: c.holds for c in claims}["forward and backward passes agree at V = 0 and V = 1"]
+    _, claims = sweep_claims(
+        "base", fwd, replace(fwd, params=params + 0.1, direction="backward"), None
+    )
+    assert not {c.statement: c.holds for c in claims}[
+        "forward and backward passes agree at V = 0 and V = 1"
+    ]
     assert sweep_claims("m2", fwd, fwd, None) == ("", [])

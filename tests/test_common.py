@@ -14,9 +14,9 @@ def test_translate_maps_the_leading_name_once_and_the_hints_everywhere() -> None
     assert translate("model 'm9' is unknown", starts) == "--model 'm9' is unknown"
     # only the start: a name inside the message is the library's own wording
     assert translate("a speed=1 example", starts) == "a speed=1 example"
-    assert translate("V=5 is outside; allowed: [0, 1] (or clip=True)", {"V=": "--V="}, {"clip=True": "--clip"}) == (
-        "--V=5 is outside; allowed: [0, 1] (or --clip)"
-    )
+    assert translate(
+        "V=5 is outside; allowed: [0, 1] (or clip=True)", {"V=": "--V="}, {"clip=True": "--clip"}
+    ) == ("--V=5 is outside; allowed: [0, 1] (or --clip)")
 
 
 def test_flag_names_rewrites_the_error_and_keeps_its_type() -> None:

@@ -66,10 +66,18 @@ FAMILIES: tuple[Family, ...] = (
     Family("wrist", "3. Wrist lag and bias (Figs 26-27)", fig_wrist),
     Family("landscapes", "4a. Optimisation spaces of the base model (Figs 33-34)", fig_landscapes),
     Family("activity", "4b. Wrist activity coefficient K (Figs 49-51)", fig_wrist_activity),
-    Family("sweeps", "5. Solutions over speed and cost fractions (Figs 35-38, 44, 45, 52)", fig_sweeps),
-    Family("tables", "6. Lookup-table slices at V = 0, 0.5, 0.9 (Fig 40, appendices 6-8)", fig_tables),
+    Family(
+        "sweeps", "5. Solutions over speed and cost fractions (Figs 35-38, 44, 45, 52)", fig_sweeps
+    ),
+    Family(
+        "tables", "6. Lookup-table slices at V = 0, 0.5, 0.9 (Fig 40, appendices 6-8)", fig_tables
+    ),
     Family("paths", "7. Control-point paths and chord lines (Figs 41-43, 46-48, 53-55)", fig_paths),
-    Family("optimisers", "8. Optimiser comparison and table-build time (Figs 28-31, Table 3, Fig 63)", fig_optimisers),
+    Family(
+        "optimisers",
+        "8. Optimiser comparison and table-build time (Figs 28-31, Table 3, Fig 63)",
+        fig_optimisers,
+    ),
 )
 
 
@@ -117,7 +125,10 @@ def build_report(
     plots.pyplot()  # fail early with the install hint when matplotlib is missing
     index = out / "index.html"
     if index.exists() and not force:
-        raise BirdsimError(f"out={str(out)!r} already holds a report; allowed: a new folder, or force=True (--force on the command line) to overwrite")
+        raise BirdsimError(
+            f"out={str(out)!r} already holds a report; allowed: a new folder, or force=True "
+            "(--force on the command line) to overwrite"
+        )
     if out.exists() and not out.is_dir():
         raise BirdsimError(f"out={str(out)!r} is a file; allowed: a folder")
     keys = [f.key for f in FAMILIES]
@@ -132,7 +143,9 @@ def build_report(
         raise BirdsimError(f"out={str(out)!r} cannot be created: {exc.strerror}") from None
     try:
         ctx = Context(staging, QUICK if quick else FULL, bird or Bird())
-        sections = _build_sections(ctx, [f for f in FAMILIES if not only or f.key in only], progress)
+        sections = _build_sections(
+            ctx, [f for f in FAMILIES if not only or f.key in only], progress
+        )
         page = render_html(sections, ctx).encode()
         for png in sorted(staging.iterdir()):
             os.replace(png, out / png.name)
@@ -148,7 +161,9 @@ def _build_sections(ctx: Context, families: list[Family], progress: bool | None)
     from tqdm import tqdm
 
     sections = []
-    bar = tqdm(families, desc="report", unit="family", disable=None if progress is None else not progress)
+    bar = tqdm(
+        families, desc="report", unit="family", disable=None if progress is None else not progress
+    )
     for fam in bar:
         bar.set_postfix_str(fam.key)
         t0 = time.perf_counter()
