@@ -10,6 +10,8 @@ from birdsim.errors import BirdsimError
 from birdsim.physics.kinematics import get_model
 from birdsim.commands.common import add_bird_arguments, bird_from_args, parse_pairs
 
+#: Most samples per wingbeat ``--samples`` accepts (the histories are N long per strip).
+MAX_SAMPLES = 100_000
 FORCE_NOTE = "right wing + body drag (the dissertation's flapcost force); whole_bird = 2 wings + body"
 
 
@@ -45,8 +47,8 @@ def run(args: argparse.Namespace) -> int:
     regime = "hover" if speed == 0 else "cruise"
     filled = {n: v for n, v in model.guess(regime).items() if n not in params}
     params.update(filled)
-    if not args.appendix_grid and args.samples < 2:
-        raise BirdsimError(f"--samples {args.samples} is invalid; allowed: an integer >= 2")
+    if not args.appendix_grid and not 2 <= args.samples <= MAX_SAMPLES:
+        raise BirdsimError(f"--samples {args.samples} is invalid; allowed: an integer >= 2 and <= {MAX_SAMPLES}")
     n, endpoint = (11, True) if args.appendix_grid else (args.samples, False)
     cyc = evaluate_cycle(model, params, speed, bird=bird, n=n, endpoint=endpoint)
     out = {
