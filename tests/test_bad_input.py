@@ -75,7 +75,6 @@ CASES: list[tuple[str, Any, str] | Any] = [
     # ---- birdsim forces ---------------------------------------------------------------
     ("forces/unknown-model", ["forces", "--model", "m9", "--speed", "0", *HOVER], "--model 'm9' is unknown"),
     ("forces/unknown-param", [*FORCES, *HOVER, "--param", "sweep=0.1"], "--param 'sweep' is unknown"),
-    ("forces/missing-param", [*FORCES, "--param", "pitch=0.1"], "--param flap_amp is missing"),
     ("forces/param-out-of-bounds", [*FORCES, *HOVER[:-1], "twist_amp=2"], "--param twist_amp=2"),
     ("forces/param-nan", [*FORCES, *HOVER[:-1], "twist_amp=nan"], "--param twist_amp=nan is not finite"),
     ("forces/param-inf", [*FORCES, *HOVER[:-1], "twist_amp=-inf"], "--param twist_amp=-inf is not finite"),
