@@ -267,7 +267,7 @@ def evaluate_cycle(
     n: int = 64,
     endpoint: bool = False,
     check_bounds: bool = True,
-    backend: str = "numpy",
+    backend: str = "kernel",
 ) -> Cycle:
     """Force and power histories of one wingbeat and their means.
 
@@ -282,7 +282,10 @@ def evaluate_cycle(
         bird: the bird (default: the seed bird).
         n: samples per wingbeat; ``endpoint=True, n=11`` is the appendix grid.
         check_bounds: refuse parameters outside the model's bounds.
-        backend: ``"numpy"`` (the readable reference).
+        backend: ``"kernel"`` (default: the fused, compiled kernel of
+            :mod:`birdsim.physics.kernel` computes the means; histories, when read, come
+            from the numpy path) or ``"numpy"`` (the readable reference, everything
+            numpy).  Without a working JIT the kernel falls back to numpy (one warning).
 
     Returns:
         A :class:`Cycle`.
@@ -338,8 +341,15 @@ def evaluate_cycle(
             shaped(hist.cp_position), shaped(hist.cp_velocity),
         )
 
-    if backend != "numpy":
-        raise BirdsimError(f"backend={backend!r} is unknown; allowed: numpy")
+    if backend not in BACKENDS:
+        raise BirdsimError(f"backend={backend!r} is unknown; allowed: {', '.join(BACKENDS)}")
+    means = None
+    if backend == "kernel":
+        means = _kernel_means(m, flat, v_flat, climb_flat, climbing, bird, phases)
+        if means is not None:
+            means = PanelMeans(
+                shaped(means.force_earth), shaped(means.power), {g: shaped(a) for g, a in means.joint_power.items()}
+            )
     dx, dz = body_drag(v_flat, climb_flat, flat["pitch"], bird.rho, bird.body_drag_area)
     cyc = Cycle(
         model=m.name,
@@ -352,9 +362,49 @@ def evaluate_cycle(
         climb=shaped(climb_flat),
         body_drag_z=shaped(dz),
         histories=histories,
+        panel_means=means,
     )
-    cyc._hist  # the numpy path computes its histories now (errors surface here)
+    if means is None:
+        cyc._hist  # the numpy path computes its histories now (errors surface here)
     return cyc
+
+
+BACKENDS = ("kernel", "numpy")
+
+
+def _kernel_means(
+    m: KinematicModel,
+    flat: dict[str, np.ndarray],
+    v: np.ndarray,
+    climb: np.ndarray,
+    climbing: bool,
+    bird: Bird,
+    phases: np.ndarray,
+) -> PanelMeans | None:
+    """Panel means from the fused kernel (flat batch), the induced-velocity coupling
+    iterated exactly as the numpy path does; None where the kernel cannot run."""
+    from birdsim.physics import kernel
+
+    air = np.zeros(v.shape + (3,))
+    out = kernel.means(m, flat, v, climb, air, bird, phases)
+    if out is None:
+        return None
+    if bird.induced_velocity:
+        for _ in range(INDUCED_MAX_ITERATIONS):
+            f = 2.0 * out[0].sum(axis=1)  # two wings, B x 3
+            f[:, 1] = 0.0
+            vi = induced_velocity(f, v, bird.rho, bird.disc_area, climb=climb if climbing else None)
+            norm = np.linalg.norm(f, axis=-1, keepdims=True)
+            f_hat = np.divide(f, norm, out=np.zeros_like(f), where=norm > 0)
+            target = -vi[:, None] * f_hat
+            if np.max(np.abs(target - air), initial=0.0) < INDUCED_TOL:
+                break
+            air = 0.5 * air + 0.5 * target
+            out = kernel.means(m, flat, v, climb, air, bird, phases)
+            if out is None:
+                return None
+    groups = kernel.setup(m, bird).groups
+    return PanelMeans(out[0], out[1], {g: out[2][:, i] for i, g in enumerate(groups)})
 
 
 def _check_climb(climb: object) -> np.ndarray:
