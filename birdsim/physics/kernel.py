@@ -18,6 +18,7 @@ line) and callers use the numpy path.  Compiled code is cached on disk (``cache=
 
 from __future__ import annotations
 
+import functools
 import math
 import multiprocessing
 import os
@@ -108,6 +109,7 @@ def supported(bird: Bird) -> bool:
     return type(bird.polar) in (SeedPolar, RoboflyPolar)
 
 
+@functools.lru_cache(maxsize=64)
 def setup(m: KinematicModel, bird: Bird) -> Setup:
     """Encode the chains of ``m`` for ``bird`` (geometry, strips, polar) as arrays."""
     panels = m.chain_with_geometry(bird)
@@ -159,6 +161,7 @@ def joint_coefficients(m: KinematicModel, flat: dict[str, np.ndarray], bird: Bir
     return amp, phase, bias, const
 
 
+@functools.lru_cache(maxsize=64)
 def joint_derivatives(m: KinematicModel, bird: Bird) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """d(amp, phase, bias)/d(param), J x d: every joint's sinusoid is affine in the parameters."""
     names = m.param_names
