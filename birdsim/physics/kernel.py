@@ -59,6 +59,15 @@ def threads() -> int:
 _POOL: dict[int, ThreadPoolExecutor] = {}
 
 
+def _half(phases: np.ndarray) -> int:
+    """N/2 when the samples are an even periodic grid (phase t + N/2 is phase t + pi),
+    else 0 (the appendix grid with both end points)."""
+    n = len(phases)
+    if n % 2 or n < 2 or not np.isclose(phases[n // 2] - phases[0], np.pi, rtol=0, atol=1e-12):
+        return 0
+    return n // 2
+
+
 def _run(kernel, B: int, args: tuple) -> bool:
     """Run ``kernel(lo, hi, *args)`` over rows [0, B) on :func:`threads` threads; False
     (after one warning line) if the JIT fails."""
@@ -218,7 +227,7 @@ def means(
     F, P, JP = np.zeros((B, K, 3)), np.zeros((B, K)), np.zeros((B, 2))
     args = (
         c(flat["pitch"], dtype=float), c(speed, dtype=float), c(climb, dtype=float), c(air_earth, dtype=float),
-        amp, phase, bias, const, c(phases, dtype=float), float(bird.omega), float(bird.rho),
+        amp, phase, bias, const, c(phases, dtype=float), _half(phases), float(bird.omega), float(bird.rho),
         st.kind, st.joint, st.axis, st.group, st.span, st.length, st.radius, st.area, st.strips, st.polar, st.coeffs,
         F, P, JP,
     )
@@ -312,7 +321,7 @@ def _rot(axis, c, s, x, y, z):
 
 @_jit
 def _means_kernel(
-    lo, hi, pitch, speed, climb, air_earth, amp, phase, bias, const, phases, omega, rho,
+    lo, hi, pitch, speed, climb, air_earth, amp, phase, bias, const, phases, half, omega, rho,
     kind, joint, axis, group, span, length, radius, area, strips, polar, coeffs, F, P, JP,
 ):
     J, N, K = amp.shape[1], phases.shape[0], kind.shape[0]
@@ -335,16 +344,28 @@ def _means_kernel(
         fxs, fys, fzs = np.zeros(K), np.zeros(K), np.zeros(K)
         ps = np.zeros(K)
         j0, j1 = 0.0, 0.0
+        # joint states at every sample; a joint without bias is odd over half a period
+        # (q(t + pi) = -q(t)), so on an even periodic grid its second half is free
+        TQ, TD, TC, TS = np.empty((N, J)), np.empty((N, J)), np.empty((N, J)), np.empty((N, J))
+        for j in range(J):
+            if const[j]:
+                continue
+            odd = half > 0 and bias[b, j] == 0.0
+            for t in range(half if odd else N):
+                # sin and cos of (omega t + phase) by the addition theorem
+                sarg = stt[t] * cph[j] + ct[t] * sph[j]
+                carg = ct[t] * cph[j] - stt[t] * sph[j]
+                q = amp[b, j] * sarg + bias[b, j]
+                TQ[t, j], TD[t, j] = q, (amp[b, j] * omega) * carg
+                TC[t, j], TS[t, j] = math.cos(q), math.sin(q)
+            if odd:
+                for t in range(half):
+                    TQ[t + half, j], TD[t + half, j] = -TQ[t, j], -TD[t, j]
+                    TC[t + half, j], TS[t + half, j] = TC[t, j], -TS[t, j]
         for t in range(N):
             for j in range(J):
                 if not const[j]:
-                    # sin and cos of (omega t + phase) by the addition theorem
-                    sarg = stt[t] * cph[j] + ct[t] * sph[j]
-                    carg = ct[t] * cph[j] - stt[t] * sph[j]
-                    q = amp[b, j] * sarg + bias[b, j]
-                    qv[j] = q
-                    qd[j] = (amp[b, j] * omega) * carg
-                    cq[j], sq[j] = math.cos(q), math.sin(q)
+                    qv[j], qd[j], cq[j], sq[j] = TQ[t, j], TD[t, j], TC[t, j], TS[t, j]
             for k in range(K):
                 L = length[k]
                 for e in range(strips[k]):
