@@ -10,6 +10,7 @@ force in wind axes ``(-Cd, 0, -Cl) q S`` (DESIGN.md section 2).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import ClassVar
 
@@ -129,6 +130,8 @@ def body_drag_magnitude(speed_total: np.ndarray | float, attack: np.ndarray | fl
     """``rho/2 Vt^2 |sin(attack)| area``: the body drag's magnitude for a body meeting
     the air at speed ``Vt`` and angle of attack ``attack = theta - gamma`` (the angle
     from the body's x axis to its velocity relative to the air, in the pitch plane)."""
+    if isinstance(speed_total, float) and isinstance(attack, float):  # MuJoCo's per-step call
+        return 0.5 * rho * (speed_total * speed_total) * abs(math.sin(attack)) * area
     return 0.5 * rho * np.square(speed_total) * np.abs(np.sin(attack)) * area
 
 
