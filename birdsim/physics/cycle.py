@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from functools import cached_property
+from functools import cached_property, lru_cache
 
 import numpy as np
 
@@ -191,7 +191,14 @@ def sample_phases(n: int, endpoint: bool) -> np.ndarray:
     with the end point included (the appendix grid, n = 11)."""
     if not isinstance(n, (int, np.integer)) or isinstance(n, bool) or n < 2:
         raise BirdsimError(f"n={n!r} is invalid; allowed: an integer >= 2 samples per wingbeat")
-    return np.linspace(0.0, 2.0 * np.pi, int(n), endpoint=endpoint)
+    return _phases(int(n), bool(endpoint))
+
+
+@lru_cache(maxsize=32)
+def _phases(n: int, endpoint: bool) -> np.ndarray:
+    out = np.linspace(0.0, 2.0 * np.pi, n, endpoint=endpoint)
+    out.setflags(write=False)  # shared between calls
+    return out
 
 
 @dataclass(frozen=True)

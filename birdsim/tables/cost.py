@@ -229,6 +229,9 @@ def _kernel_forces(
     if out is None:
         return None
     f, p = out[0].sum(axis=-2), out[1].sum(axis=-1)
+    if not vc.any():  # level flight: eq. 7, the same operations as aero.body_drag
+        dx = -0.5 * bird.rho * np.square(v) * np.sin(flat["pitch"]) * bird.body_drag_area
+        return f[:, 0] + dx, f[:, 2] + np.zeros_like(dx), p
     dx, dz = body_drag(v, vc, flat["pitch"], bird.rho, bird.body_drag_area)
     return f[:, 0] + dx, f[:, 2] + dz, p
 
