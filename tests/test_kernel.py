@@ -25,6 +25,7 @@ OPTIONS = {
     "induced": (Bird(induced_velocity=True), 0.0),
     "robofly": (Bird(polar=RoboflyPolar()), 0.0),
     "climb": (Bird(), 0.3),
+    "induced-climb": (Bird(induced_velocity=True, strips=2), 0.2),
     "descent-strips-robofly": (Bird(strips=3, polar=RoboflyPolar()), -0.4),
     "other-bird": (OTHER, 2.0),
 }
