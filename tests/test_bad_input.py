@@ -208,8 +208,7 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("py/evaluate_cycle-speed-negative", lambda w: evaluate_cycle("base", HOVER_PARAMS, -1e300), "speed=-1e+300 is invalid"),
     ("py/evaluate_cycle-n-one", lambda w: evaluate_cycle("base", HOVER_PARAMS, 0.0, n=1), "n=1 is invalid"),
     ("py/evaluate_cycle-no-broadcast", lambda w: evaluate_cycle("base", {**HOVER_PARAMS, "pitch": np.zeros(2), "flap_amp": np.ones(3)}, 0.0), "do not broadcast"),
-    pytest.param("py/evaluate_cycle-bird-not-a-bird", lambda w: evaluate_cycle("base", HOVER_PARAMS, 0.0, bird="pigeon"), "bird='pigeon'",
-                 marks=_owned("core", "evaluate_cycle(bird='pigeon') raises AttributeError (physics/cycle.py)")),
+    ("py/evaluate_cycle-bird-not-a-bird", lambda w: evaluate_cycle("base", HOVER_PARAMS, 0.0, bird="pigeon"), "bird='pigeon'"),
     # ---- Python: tables ---------------------------------------------------------------
     ("py/load_table-missing", lambda w: load_table(w / "nope.npz"), "table file"),
     ("py/load_table-folder", lambda w: load_table(w / "folder.npz"), "does not exist"),

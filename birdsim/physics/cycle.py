@@ -156,7 +156,9 @@ def evaluate_cycle(
         BirdsimError: bad speed, climb, parameters or shapes (one line).
     """
     m = model if isinstance(model, KinematicModel) else get_model(model)
-    bird = bird or Bird()
+    bird = Bird() if bird is None else bird
+    if not isinstance(bird, Bird):
+        raise BirdsimError(f"bird={bird!r} is invalid; allowed: a birdsim.Bird (Bird.from_toml(path) reads a bird file) or None")
     p = validate_params(m, params, check_bounds=check_bounds)
     try:
         v = np.asarray(speed, dtype=float)
