@@ -66,13 +66,33 @@ def _positive_int(name: str, value: int | None) -> None:
         raise BirdsimError(f"{name} {value} is invalid; allowed: an integer >= 1")
 
 
+def _check_build_options(args: argparse.Namespace) -> None:
+    """Every build option checked here, so that a message names the flag the user typed
+    (the settings' own checks name internal fields such as ``screen=0``)."""
+    check_finite("--relax", args.relax)
+    if not 0.0 < args.relax <= 1.0:
+        raise BirdsimError(f"--relax {args.relax:g} is invalid; allowed: 0 < D <= 1 (1 = off)")
+    for flag, value in (("--distance", args.distance), ("--power-weight", args.power_weight)):
+        check_finite(flag, value)
+        if value < 0:
+            raise BirdsimError(f"{flag} {value:g} is invalid; allowed: a finite number >= 0")
+    check_finite("--reach-tol", args.reach_tol)
+    if not args.reach_tol > 0:
+        raise BirdsimError(f"--reach-tol {args.reach_tol:g} is invalid; allowed: a number > 0")
+    if args.screen < 2:
+        raise BirdsimError(f"--screen {args.screen} is invalid; allowed: an integer >= 2")
+    if args.starts < 0:
+        raise BirdsimError(f"--starts {args.starts} is invalid; allowed: an integer >= 0")
+
+
 def run_build(args: argparse.Namespace) -> int:
+    import sys
+
     model = get_model(args.model)
     _positive_int("--jobs", args.jobs)
     grid = Grid.parse(args.grid, args.size)
     bird = bird_from_args(args)
-    for name in ("relax", "distance", "power_weight", "reach_tol"):
-        check_finite(f"--{name.replace('_', '-')}", getattr(args, name))
+    _check_build_options(args)
     weights = CostWeights(power=args.power_weight, distance=args.distance)
     settings = BuildSettings(
         screen=args.screen, starts=args.starts, relax=args.relax, reach_tol=args.reach_tol, v_passes=not args.no_v_passes
@@ -88,13 +108,14 @@ def run_build(args: argparse.Namespace) -> int:
         shutil.rmtree(ckpt)
     cfg = BuildConfig(model.name, grid, bird, weights, settings)
     try:
-        table = build_table(cfg, jobs=args.jobs, checkpoint_dir=ckpt, progress=not args.quiet)
+        # the table is written (existence checked above) before the checkpoints go
+        table = build_table(
+            cfg, jobs=args.jobs, checkpoint_dir=ckpt, progress=not args.quiet, out=npz_path, force=True,
+            notify=lambda line: print(f"birdsim tables: {line}", file=sys.stderr),
+        )
     except KeyboardInterrupt:
-        import sys
-
         print(f"birdsim tables: finished parts kept in {ckpt}; run the same command again to resume", file=sys.stderr)
         raise
-    table.save(npz_path, force=True)  # existence was checked before the build
     m = table.meta
     print(
         f"wrote {npz_path} and {json_path.name}: model {model.name}, grid {'x'.join(map(str, table.shape))}, "

@@ -38,9 +38,11 @@ class Batcher:
         self.pending: dict[int, tuple[np.ndarray, float]] = {}
         self.results: dict[int, Any] = {}
         self.calls = 0
+        self.rank: dict[int, int] = {}  # thread ident -> job index (a fixed row order)
 
     def _flush(self) -> None:
-        items = list(self.pending.items())
+        # rows in job order, not arrival order: the batch is then the same on every run
+        items = sorted(self.pending.items(), key=lambda item: self.rank.get(item[0], 0))
         self.pending.clear()
         X = np.concatenate([x for _, (x, _) in items])
         V = np.concatenate([np.full(len(x), v) for _, (x, v) in items])
@@ -92,11 +94,13 @@ def run_lockstep(
         return [jobs[0](lambda X, v: forces(model, X, v, bird, n))]
     batcher = Batcher(model, bird, n, len(jobs))
 
-    def wrap(job: Callable[..., T]) -> T:
+    def wrap(k: int) -> T:
+        with batcher.cond:
+            batcher.rank[threading.get_ident()] = k
         try:
-            return job(batcher.evaluate)
+            return jobs[k](batcher.evaluate)
         finally:
             batcher.leave()
 
     with ThreadPoolExecutor(max_workers=len(jobs)) as pool:
-        return list(pool.map(wrap, jobs))
+        return list(pool.map(wrap, range(len(jobs))))
