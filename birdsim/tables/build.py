@@ -42,6 +42,7 @@ import time
 from collections.abc import Callable
 from concurrent.futures import Executor, ProcessPoolExecutor
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -49,7 +50,9 @@ from birdsim.physics.kinematics import get_model
 from birdsim.tables.checkpoints import Checkpoints
 from birdsim.tables.finish import final_check, finish_table, write_table
 from birdsim.tables.grid import MAX_CELLS, MAX_NODES, BuildConfig, BuildSettings, Grid, config_from_meta, sub_grid
-from birdsim.tables.lookup import LookupTable
+from birdsim.tables.cost import forces
+from birdsim.tables.lookup import AXES, LookupTable
+from birdsim.tables.regularise import smooth_cells, zigzag_cells
 from birdsim.tables.runner import _InlineExecutor, _ignore_sigint, _run, _stop_workers
 from birdsim.tables.sweeps import IDLE_WRIST, canonical_params, solve_slice, solve_v_line
 
@@ -109,7 +112,9 @@ def build_table(
         executor = _InlineExecutor() if jobs == 1 else ProcessPoolExecutor(max_workers=jobs, initializer=_ignore_sigint)
     assert executor is not None
     try:
-        X, evals, conv = _sweep(cfg, executor, ckpt, tick)
+        X, cost, evals, conv = _sweep(cfg, executor, ckpt, tick)
+        if cfg.settings.smooth_tol > 0:
+            X, evals, smoothing = _regularise(cfg, executor, ckpt, X, cost, evals)
     except BaseException:
         # Ctrl-C or a failed task: finished parts are saved; stop our workers now (a
         # second Ctrl-C inside shutdown(wait=True) used to leave them alive and the
@@ -125,6 +130,8 @@ def build_table(
     table = finish_table(cfg, model, X, evals, conv)
     seconds = time.perf_counter() - t0
     table.meta.update(build_seconds=round(seconds, 3), cells_per_second=round(ncells / seconds, 2), jobs=jobs if own else "executor")
+    if cfg.settings.smooth_tol > 0:
+        table.meta["regularising_pass"] = smoothing
     if out is not None:
         write_table(table, out, force, ckpt)
     else:
@@ -153,4 +160,51 @@ def _sweep(
         X = np.stack([lines[f"line_Fx{i:03d}"]["params"] for i in range(len(g.Fx))], axis=0)
         evals = evals + np.stack([lines[f"line_Fx{i:03d}"]["evaluations"] for i in range(len(g.Fx))], axis=0)
         conv = np.stack([lines[f"line_Fx{i:03d}"]["converged"] for i in range(len(g.Fx))], axis=0)
-    return X, evals, conv
+        cost = np.stack([lines[f"line_Fx{i:03d}"]["cost"] for i in range(len(g.Fx))], axis=0)
+    return X, cost, evals, conv
+
+
+def _regularise(
+    cfg: BuildConfig, executor: Executor, ckpt: Checkpoints, X: np.ndarray, cost: np.ndarray, evals: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, dict[str, Any]]:
+    """The regularising pass (:mod:`birdsim.tables.regularise`): red-black rounds over
+    the middle cells of zig-zags, one task per Fx index and colour.  Returns the new
+    parameters, the evaluations and a summary for the provenance."""
+    model = get_model(cfg.model)
+    names, st = model.param_names, cfg.settings
+    X, evals = X.copy(), evals.copy()
+    D = np.stack(np.meshgrid(*(np.asarray(getattr(cfg.grid, a)) for a in AXES), indexing="ij"), axis=-1)
+    Fx, Fz, _ = forces(model, X, D[..., 2], cfg.bird, st.n_search)
+    ok = np.maximum(np.abs(Fx - D[..., 0]), np.abs(Fz - D[..., 1])) <= st.reach_tol
+    best = np.asarray(cost, dtype=float).copy()
+    t0 = time.perf_counter()
+    summary: dict[str, Any] = {"rounds": 0, "cells_resolved": 0, "cells_changed": 0, "zigzag_cells": []}
+    for r in range(st.smooth_rounds):
+        worked = False
+        summary["zigzag_cells"].append(len(zigzag_cells(names, X, ok)))
+        for colour in (0, 1):
+            mids = zigzag_cells(names, X, ok)
+            mids = mids[mids.sum(axis=1) % 2 == colour]
+            if len(mids) == 0:
+                continue
+            worked = True
+            groups = {int(i): mids[mids[:, 0] == i] for i in np.unique(mids[:, 0])}
+            tasks = {
+                f"smooth_r{r}c{colour}_Fx{i:03d}": (smooth_cells, (cfg, cells, X, ok, best[tuple(cells.T)], D))
+                for i, cells in groups.items()
+            }
+            done = _run(tasks, executor, ckpt, lambda k: None, 0)
+            for name, (fn, args) in tasks.items():
+                cells, res = args[1], done[name]
+                idx = tuple(cells.T)
+                summary["cells_resolved"] += len(cells)
+                summary["cells_changed"] += int(np.sum(np.any(res["params"] != X[idx], axis=-1)))
+                X[idx] = res["params"]
+                best[idx] = res["best"]
+                evals[idx] += res["evaluations"]
+        summary["rounds"] = r + 1
+        if not worked or summary["zigzag_cells"][-1] <= len(zigzag_cells(names, X, ok)):
+            break  # no zig-zag left, or a round that removed none (the next would repeat it)
+    summary["zigzag_cells"].append(len(zigzag_cells(names, X, ok)))
+    summary["seconds"] = round(time.perf_counter() - t0, 3)
+    return X, evals, summary

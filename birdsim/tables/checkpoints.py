@@ -22,7 +22,9 @@ def _is_checkpoint_file(name: str) -> bool:
     return name == "config.sha" or any(fnmatch.fnmatchcase(name, p) for p in _CHECKPOINT_PATTERNS)
 
 
-_CHECKPOINT_PATTERNS = ("slice_V*.npz", "line_Fx*.npz", ".slice_V*.npz.*.partial.npz", ".line_Fx*.npz.*.partial.npz")
+_CHECKPOINT_PATTERNS = tuple(
+    p for stem in ("slice_V*", "line_Fx*", "smooth_r*") for p in (f"{stem}.npz", f".{stem}.npz.*.partial.npz")
+)
 
 
 class Checkpoints:

@@ -102,6 +102,9 @@ class BuildSettings:
     relax: float = 1.0  # under-relaxation delta of eq. 94 along V (1 = off)
     maxiter: int = 100
     seed: int = 0
+    smooth_tol: float = 5e-3  # regularising pass: cost tolerance of a tie-break (0 = no pass)
+    smooth_nu: float = 0.05  # its distance weight (per rad) towards the neighbours' wingbeat
+    smooth_rounds: int = 4  # at most this many red-black rounds
 
     def __post_init__(self) -> None:
         if not (0.0 < self.relax <= 1.0):
@@ -112,7 +115,7 @@ class BuildSettings:
         # written as "not (ok)" so that NaN is refused too (every comparison with NaN is False)
         if not self.reach_tol > 0:
             raise BirdsimError(f"reach_tol={self.reach_tol!r} is invalid; allowed: a number > 0")
-        for name in ("starts", "always_polish", "switch_margin", "screen_gap", "branch_tol"):
+        for name in ("starts", "always_polish", "switch_margin", "screen_gap", "branch_tol", "smooth_tol", "smooth_nu", "smooth_rounds"):
             value = getattr(self, name)
             if not value >= 0:
                 raise BirdsimError(f"{name}={value!r} is invalid; allowed: a number >= 0")
