@@ -4,6 +4,7 @@ shipped tables (rebuilt corners, optimiser quality, the regimes of sec. 4.1)."""
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from concurrent.futures import Executor, Future, ThreadPoolExecutor
 from pathlib import Path
 
@@ -200,7 +201,7 @@ def test_the_same_table_twice_and_on_one_or_two_processes_is_bitwise_identical(s
     "argv, flag",
     [(["--screen", "0"], "--screen 0"), (["--starts", "-1"], "--starts -1"), (["--relax", "0"], "--relax 0"),
      (["--relax", "nan"], "--relax"), (["--reach-tol", "0"], "--reach-tol 0"), (["--power-weight", "-1"], "--power-weight -1"),
-     (["--distance", "inf"], "--distance"), (["--jobs", "0"], "--jobs 0"), (["--size", "1"], "--size 1")],
+     (["--distance", "inf"], "--distance"), (["--smooth-tol", "-1"], "--smooth-tol -1"), (["--jobs", "0"], "--jobs 0"), (["--size", "1"], "--size 1")],
 )
 def test_build_option_errors_name_the_flag(tmp_path, capsys, argv, flag):
     from birdsim.cli import main
@@ -291,18 +292,24 @@ def test_rebuilt_corner_matches_the_shipped_table(model):
     # slice (the sweep starts there), so rebuilding them over every V repeats the build's
     # forward sweep exactly; the later passes only accept cheaper answers (in the full
     # build also from neighbours outside the corner, so a corner that missed a cheaper
-    # branch would show here).  Costs agree to 1e-6 (solver tolerance, plus last-bit
-    # differences of batched sin/cos that SLSQP can amplify where the optimum is flat).
+    # branch would show here).  The corner is rebuilt without the regularising pass: the
+    # shipped cells then cost at most smooth_tol more (the pass's tie-break) and never
+    # less than 1e-6 below (solver tolerance, plus last-bit differences of batched
+    # sin/cos that SLSQP can amplify where the optimum is flat).
     t = shipped(model)
     cfg = config_from_meta(t)
-    cfg = BuildConfig(cfg.model, sub_grid(cfg.grid, [9, 10], [0, 1], range(11)), cfg.bird, cfg.weights, cfg.settings)
+    tol = cfg.settings.smooth_tol
+    settings = replace(cfg.settings, smooth_tol=0.0)
+    cfg = BuildConfig(cfg.model, sub_grid(cfg.grid, [9, 10], [0, 1], range(11)), cfg.bird, cfg.weights, settings)
     corner = build_table(cfg, jobs=1)
-    np.testing.assert_allclose(corner.cost, t.cost[9:, :2, :], atol=1e-6)
+    diff = t.cost[9:, :2, :] - corner.cost
+    assert diff.min() >= -1e-6 and diff.max() <= tol + 1e-6
     np.testing.assert_array_equal(corner.status, t.status[9:, :2, :])
-    # parameters: equal where the optimum is sharp; a flat direction (e.g. the wrist lag
-    # when the wrist amplitude is zero) may wander without changing the cost
+    # parameters: equal where the optimum is sharp and the pass left the cell alone; a
+    # flat direction (e.g. the wrist lag when the wrist amplitude is zero) may wander
+    same = np.abs(diff) < 1e-6
     close = np.abs(corner.params - t.params[9:, :2, :]) < 1e-3
-    assert close.mean() > 0.9
+    assert close[same].mean() > 0.9
 
 
 @pytest.mark.parametrize("model", MODELS)
@@ -311,15 +318,17 @@ def test_fresh_multistart_never_beats_the_table(model):
     # cost (costs are O(0.01-1)): the builder keeps the warm-start branch unless another
     # start beats it by 1e-4 (by design), and over 260 sampled cells of all five tables
     # (docs/tables.md) the worst loss was 1.3e-3, at an m2 cell with zero force demand
-    # where the cost is power only and the sweep direction is nearly flat.
+    # where the cost is power only and the sweep direction is nearly flat; plus the
+    # regularising pass's tolerance (smooth_tol: a smoother wingbeat may cost that much more).
     t = shipped(model)
+    margin = 2e-3 + t.meta["solver"].get("smooth_tol", 0.0)
     rng = np.random.default_rng(2024 + MODELS.index(model))
     for _ in range(3):
         i, j, k = (int(x) for x in rng.integers(0, 11, 3))
         demand = (t.axes["Fx"][i], t.axes["Fz"][j], t.axes["V"][k])
         prob = ForceProblem(model, *demand, n=64)
         fresh = multistart(prob, random_starts(prob, 12, seed=int(rng.integers(1 << 30))))
-        assert t.cost[i, j, k] <= fresh.cost + 2e-3, (demand, t.cost[i, j, k], fresh.cost, fresh.x)
+        assert t.cost[i, j, k] <= fresh.cost + margin, (demand, t.cost[i, j, k], fresh.cost, fresh.x)
 
 
 def regime(t, Fx, Fz, V):
@@ -353,7 +362,7 @@ def test_regimes_of_sec_4_1(model):
 @pytest.mark.parametrize("model", MODELS)
 def test_fresh_multistart_never_beats_the_table_over_many_cells(model):
     # the same check as above over 25 cells per model (seconds per model); the
-    # same 2e-3 margin and reasoning
+    # same margin and reasoning
     t = shipped(model)
     rng = np.random.default_rng(77 + MODELS.index(model))
     worst = 0.0
@@ -363,7 +372,7 @@ def test_fresh_multistart_never_beats_the_table_over_many_cells(model):
         prob = ForceProblem(model, *demand, n=64)
         fresh = multistart(prob, random_starts(prob, 16, seed=int(rng.integers(1 << 30))))
         worst = max(worst, t.cost[i, j, k] - fresh.cost)
-    assert worst <= 2e-3, worst
+    assert worst <= 2e-3 + t.meta["solver"].get("smooth_tol", 0.0), worst
 
 
 def _slow_slice(cfg, k):  # a V slice that would take half a minute

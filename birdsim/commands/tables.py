@@ -17,6 +17,7 @@ from birdsim.errors import BirdsimError, check_finite
 from birdsim.io import check_output
 from birdsim.physics.kinematics import get_model
 from birdsim.tables.lookup import AXES, STATUS_NAMES, load_table, table_paths
+from birdsim.tables.smoothness import table_smoothness
 from birdsim.commands.common import add_bird_arguments, bird_from_args
 
 FORCE_NOTE = "right wing + body drag (the dissertation's flapcost force), Fz < 0 is up"
@@ -42,6 +43,9 @@ def register(sub: argparse._SubParsersAction) -> None:
     b.add_argument("--power-weight", type=float, default=CostWeights.power, help="weight of |P| in the cost (default 0.5)")
     b.add_argument("--reach-tol", type=float, default=BuildSettings.reach_tol, help="force error above which a cell is unreachable")
     b.add_argument("--no-v-passes", action="store_true", help="skip the forward/backward passes in V")
+    b.add_argument("--smooth-tol", type=float, default=BuildSettings.smooth_tol,
+                   help="regularising pass: keep the wingbeat that continues its neighbours among those within this "
+                   "cost of the best found (default 5e-3; 0 = no pass)")
     b.add_argument("--quiet", action="store_true", help="no progress bar")
     add_bird_arguments(b)
     b.set_defaults(func=run_build)
@@ -79,6 +83,9 @@ def _check_build_options(args: argparse.Namespace) -> None:
     check_finite("--reach-tol", args.reach_tol)
     if not args.reach_tol > 0:
         raise BirdsimError(f"--reach-tol {args.reach_tol:g} is invalid; allowed: a number > 0")
+    check_finite("--smooth-tol", args.smooth_tol)
+    if args.smooth_tol < 0:
+        raise BirdsimError(f"--smooth-tol {args.smooth_tol:g} is invalid; allowed: a number >= 0 (0 = no regularising pass)")
     if args.screen < 2:
         raise BirdsimError(f"--screen {args.screen} is invalid; allowed: an integer >= 2")
     if args.starts < 0:
@@ -95,7 +102,8 @@ def run_build(args: argparse.Namespace) -> int:
     _check_build_options(args)
     weights = CostWeights(power=args.power_weight, distance=args.distance)
     settings = BuildSettings(
-        screen=args.screen, starts=args.starts, relax=args.relax, reach_tol=args.reach_tol, v_passes=not args.no_v_passes
+        screen=args.screen, starts=args.starts, relax=args.relax, reach_tol=args.reach_tol, v_passes=not args.no_v_passes,
+        smooth_tol=args.smooth_tol,
     )
     out = Path(args.out) if args.out else Path("tables") / f"{model.name}.npz"
     npz_path, json_path = table_paths(out)
@@ -155,21 +163,13 @@ def table_summary(path: str) -> dict:
         "cost": {"min": float(t.cost.min()), "median": float(np.median(t.cost)), "max": float(t.cost.max())},
         "mean_cost_fractions": dict(zip(FRACTION_NAMES, map(float, frac))),
         "evaluations": int(t.evaluations.sum()),
-        "provenance": {k: m.get(k) for k in ("package_version", "git_commit", "built_at", "build_seconds", "cells_per_second", "cost_weights", "solver")},
+        "provenance": {k: m.get(k) for k in ("package_version", "git_commit", "built_at", "build_seconds", "cells_per_second", "cost_weights", "solver", "regularising_pass")},
     }
 
 
-def smoothness(t) -> dict[str, dict[str, float]]:
-    """Parameter steps (rad) between neighbouring ok cells along each axis: the 95th
-    percentile and the largest (a jump flags a branch switch or a flat optimum)."""
-    ok = t.status == "ok"
-    out = {}
-    for k, a in enumerate(AXES):
-        step = np.abs(np.diff(t.params, axis=k)).max(axis=-1)
-        both = np.logical_and(np.delete(ok, -1, axis=k), np.delete(ok, 0, axis=k))
-        vals = step[both]
-        out[a] = {"p95": float(np.percentile(vals, 95)) if vals.size else 0.0, "max": float(vals.max()) if vals.size else 0.0}
-    return out
+def smoothness(t) -> dict:
+    """The library's smoothness measure (:mod:`birdsim.tables.smoothness`) as a dict."""
+    return table_smoothness(t).to_dict()
 
 
 def run_info(args: argparse.Namespace) -> int:
@@ -190,8 +190,15 @@ def run_info(args: argparse.Namespace) -> int:
         )
     if s["max_force_error_ok"] is not None:
         print(f"largest force error of an ok cell: {s['max_force_error_ok']:.2e}")
-    print("parameter steps between neighbouring ok cells (rad): " + ", ".join(
-        f"along {a} p95 {v['p95']:.3f} max {v['max']:.3f}" for a, v in s["smoothness"].items()))
+    sm = s["smoothness"]
+    print(
+        f"smoothness: zig-zag share {100 * sm['zigzag_share']:.1f} % ({sm['zigzag_triples']} of {sm['triples']} reachable "
+        f"triples go out and back by > {sm['zigzag_rad']} rad; " + ", ".join(f"along {a} {100 * v:.1f} %" for a, v in sm["per_axis"].items()) + ")"
+    )
+    print("largest step between reachable neighbours (rad): " + ", ".join(f"{n} {v:.3f}" for n, v in sm["largest_jump"].items()))
+    for w in sm["worst"][:3]:
+        where = " ".join(f"{a}={w[a]:+.3f}" for a in s["grid"])
+        print(f"  zig-zag of {w['size_rad']:.3f} rad in {w['param']} along {w['axis']} at {where}")
     c = s["cost"]
     print(f"cost: min {c['min']:.4f}, median {c['median']:.4f}, max {c['max']:.4f}; mean fractions " +
           ", ".join(f"{k} {100 * v:.0f} %" for k, v in s["mean_cost_fractions"].items()))
@@ -199,6 +206,12 @@ def run_info(args: argparse.Namespace) -> int:
     print(f"built {p['built_at']} by birdsim {p['package_version']} (commit {p['git_commit']}) in {p['build_seconds']} s "
           f"({p['cells_per_second']} cells/s), {s['evaluations']} cycle evaluations")
     print(f"cost weights: {p['cost_weights']}")
+    rp = p.get("regularising_pass")
+    if rp:
+        print(f"regularising pass (tolerance {p['solver'].get('smooth_tol')}): {rp['rounds']} rounds, {rp['cells_resolved']} cells "
+              f"re-solved, {rp['cells_changed']} changed, zig-zag cells per round {rp['zigzag_cells']}, {rp['seconds']} s")
+    else:
+        print("regularising pass: none")
     return 0
 
 
