@@ -44,6 +44,8 @@ def test_forces_geometry_override_changes_result(capsys):
         (["--model", "m1", "--speed", "0", *HOVER[:-1], "twist_amp=x"], "not a number; allowed"),
         (["--model", "m1", "--speed", "0", *HOVER, "--bird", "/nonexistent.toml"], "does not exist"),
         (["--model", "m1", "--speed", "0", *HOVER, "--samples", "0"], "--samples 0 is invalid; allowed: an integer >= 2"),
+        (["--model", "m1", "--speed", "0", *HOVER, "--climb", "nan"], "--climb nan is invalid"),
+        (["--model", "m1", "--speed", "0", *HOVER, "--climb", "up"], "--climb='up' is not a number"),
     ],
 )
 def test_forces_bad_input_one_line(args, text, capsys):
@@ -68,3 +70,13 @@ def test_examples_table(capsys):
     assert main(["examples"]) == 0
     out = capsys.readouterr().out
     assert out.count("\n") == 12 and " 88 m4" in out
+
+
+def test_forces_climb_matches_api(capsys):
+    assert main(["forces", "--model", "m1", "--speed", "0.4", "--climb", "-0.3", *HOVER, "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    c = evaluate_cycle("m1", dict(pitch=1.5, flap_amp=1.5, twist_amp=0.7), 0.4, climb=-0.3)
+    assert out["climb"] == -0.3 and out["body_drag_z"] == pytest.approx(float(c.body_drag_z), abs=1e-15)
+    for k in ("Fx", "Fz", "P"):
+        assert out["mean"][k] == pytest.approx(float(getattr(c.mean, k)), abs=1e-15)
+    assert out["body_drag_z"] < 0  # sinking: the air comes from below, the drag pushes up

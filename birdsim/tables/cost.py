@@ -102,15 +102,21 @@ def other_cost(
 
 
 def forces(
-    model: KinematicModel, X: np.ndarray, speed: np.ndarray | float, bird: Bird, n: int = 64
+    model: KinematicModel,
+    X: np.ndarray,
+    speed: np.ndarray | float,
+    bird: Bird,
+    n: int = 64,
+    climb: np.ndarray | float = 0.0,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Achieved mean (Fx, Fz, P) of the parameter rows ``X`` (B x d), one batched cycle evaluation.
+    """Achieved mean (Fx, Fz, P) of the parameter rows ``X`` (B x d), one batched cycle
+    evaluation at speed V and ``climb`` (vertical speed relative to the air, up).
 
     Bounds are not checked: optimisers probe a hair outside them for finite differences.
     """
     X = np.asarray(X, dtype=float)
     params = {name: X[..., i] for i, name in enumerate(model.param_names)}
-    mean = evaluate_cycle(model, params, speed, bird=bird, n=n, check_bounds=False).mean
+    mean = evaluate_cycle(model, params, speed, climb=climb, bird=bird, n=n, check_bounds=False).mean
     return (np.asarray(mean.Fx, dtype=float), np.asarray(mean.Fz, dtype=float), np.asarray(mean.P, dtype=float))
 
 
@@ -150,10 +156,12 @@ def evaluate_cost(
     bird: Bird | None = None,
     previous: np.ndarray | None = None,
     n: int = 64,
+    climb: np.ndarray | float = 0.0,
 ) -> CostBreakdown:
-    """Every cost term of the parameter rows ``X`` (B x d) for demands (Fx_d, Fz_d) at speed V."""
+    """Every cost term of the parameter rows ``X`` (B x d) for demands (Fx_d, Fz_d) at
+    speed V and ``climb`` (positive up)."""
     weights = weights or CostWeights()
     bird = bird or Bird()
-    Fx, Fz, P = forces(model, X, speed, bird, n)
+    Fx, Fz, P = forces(model, X, speed, bird, n, climb)
     other = other_cost(model, X, speed, weights, previous)
     return breakdown_from_forces(Fx, Fz, P, Fx_demand, Fz_demand, weights, other)

@@ -104,8 +104,11 @@ class FunctionProblem(Problem):
 
 
 class ForceProblem(Problem):
-    """Find the wingbeat of ``model`` that delivers (Fx_d, Fz_d) at speed V for the least
-    cost (:mod:`birdsim.tables.cost`).  ``n`` samples per wingbeat in the search."""
+    """Find the wingbeat of ``model`` that delivers (Fx_d, Fz_d) at speed V and ``climb``
+    (vertical speed relative to the air, positive up) for the least cost
+    (:mod:`birdsim.tables.cost`).  ``n`` samples per wingbeat in the search.  An
+    ``evaluator(X, speed)`` replaces the cycle evaluation; at a climb other than 0 it is
+    called as ``evaluator(X, speed, climb=climb)``."""
 
     def __init__(
         self,
@@ -118,7 +121,8 @@ class ForceProblem(Problem):
         bird: Bird | None = None,
         previous: np.ndarray | None = None,
         n: int = 32,
-        evaluator: Callable[[np.ndarray, float], tuple[np.ndarray, np.ndarray, np.ndarray]] | None = None,
+        evaluator: Callable[..., tuple[np.ndarray, np.ndarray, np.ndarray]] | None = None,
+        climb: float = 0.0,
     ) -> None:
         self.model = model if isinstance(model, KinematicModel) else get_model(model)
         super().__init__(*self.model.bounds)
@@ -129,6 +133,7 @@ class ForceProblem(Problem):
             raise BirdsimError(f"speed={speed!r} is invalid; allowed: a finite number >= 0")
         self.cost_weights = weights or CostWeights()
         self.weights = np.array([self.cost_weights.force_x, self.cost_weights.force_z, self.cost_weights.power])
+        self.climb = check_finite("climb", climb, "a finite number (positive up)")
         self.bird = bird or Bird()
         self.previous = None if previous is None else np.asarray(previous, dtype=float)
         self.n = n
@@ -136,8 +141,10 @@ class ForceProblem(Problem):
 
     def _forces(self, X: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         if self.evaluator is not None:
+            if self.climb != 0.0:
+                return self.evaluator(X, self.speed, climb=self.climb)
             return self.evaluator(X, self.speed)
-        return forces(self.model, X, self.speed, self.bird, self.n)
+        return forces(self.model, X, self.speed, self.bird, self.n, self.climb)
 
     def _parts(self, X: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         Fx, Fz, P = self._forces(X)
