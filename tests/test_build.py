@@ -413,3 +413,37 @@ def test_interrupted_build_stops_its_workers_at_once(tmp_path, monkeypatch):
     for p in workers:
         p.join(timeout=5)
     assert not any(p.is_alive() for p in workers)
+
+
+# ---- the climb axis (issue 11) ----------------------------------------------------------------
+
+
+def test_grid_with_a_climb_axis():
+    g = Grid.parse("V=0|1", size=3, climb=True)
+    assert g.axis_names == ("Fx", "Fz", "V", "climb") and g.shape == (3, 3, 2, 7)
+    assert g.climb[0] == -0.5 and g.climb[-1] == 0.5 and g.climb[3] == 0.0
+    assert Grid.parse("climb=-0.2:0.2:3").climb == (-0.2, 0.0, 0.2)
+    assert "climb" not in Grid.default().to_dict()  # level-flight digests are those of before
+    with pytest.raises(BirdsimError, match=r"--grid climb=\[0.1, 0.0\] is invalid"):
+        Grid.parse("climb=0.1|0")
+
+
+def test_a_climb_table_continues_the_level_table_and_records_the_axis(tmp_path):
+    level = Grid.parse("Fx=0|0.25,Fz=-0.25|0,V=0.5|0.9")
+    climbing = Grid(level.Fx, level.Fz, level.V, (-0.2, 0.0, 0.2))
+    settings = BuildSettings(smooth_tol=0.0)
+    t3 = build_table(BuildConfig("base", level, settings=settings), jobs=1)
+    t4 = build_table(BuildConfig("base", climbing, settings=settings), jobs=1, out=tmp_path / "c.npz")
+    # climb = 0: the same slices and V passes; the climb passes only keep answers cheaper
+    # at the search resolution (1e-9: n = 32 search vs the n = 64 check)
+    assert np.all(t4.cost[..., 1] <= t3.cost + 1e-9)
+    np.testing.assert_array_equal(t4.status[..., 1], t3.status)
+    back = load_table(tmp_path / "c.npz")
+    assert back.axis_names[-1] == "climb" and back.meta["grid"]["climb"] == [-0.2, 0.0, 0.2]
+    assert config_from_meta(back).grid == climbing
+    # the stored forces are those of the climbing bird: re-evaluate one cell independently
+    prob = ForceProblem("base", 0.25, -0.25, 0.9, n=64, climb=0.2)
+    np.testing.assert_allclose(prob.achieved(back.params[1, 0, 1, 2])[:2], back.achieved[1, 0, 1, 2, :2], atol=1e-12)
+    # climbing costs more lift than descending for the same demand where both are reachable
+    ok = (back.status[..., 0] == "ok") & (back.status[..., 2] == "ok")
+    assert ok.any() and np.mean(back.cost[..., 2][ok]) > np.mean(back.cost[..., 0][ok])

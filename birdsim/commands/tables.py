@@ -16,7 +16,7 @@ from birdsim.tables.cost import FRACTION_NAMES, CostWeights
 from birdsim.errors import BirdsimError, check_finite
 from birdsim.io import check_output
 from birdsim.physics.kinematics import get_model
-from birdsim.tables.lookup import AXES, STATUS_NAMES, load_table, table_paths
+from birdsim.tables.lookup import STATUS_NAMES, load_table, table_paths
 from birdsim.tables.smoothness import table_smoothness
 from birdsim.commands.common import add_bird_arguments, bird_from_args
 
@@ -32,6 +32,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     b.add_argument("--grid", default="", help='e.g. "Fx=-0.5:0.5:11,Fz=-0.5:0:11,V=0:1:11" or "V=0|0.5|1"; '
                    "axes left out take the default range (Fx=-0.5:0.5, Fz=-0.5:0, V=0:1)")
     b.add_argument("--size", type=int, default=11, help="nodes per axis for axes not given in --grid (default 11)")
+    b.add_argument("--climb", action="store_true", help="add the climb axis (vertical speed relative to the air, up): "
+                   "7 nodes in [-0.5, 0.5] unless --grid gives climb=LO:HI:COUNT")
     b.add_argument("--out", help="output table (default tables/<model>.npz; a .json is written beside it)")
     b.add_argument("--force", action="store_true", help="overwrite an existing table")
     b.add_argument("--jobs", type=int, default=None, help="worker processes (default: all cores; 1 = no processes)")
@@ -60,6 +62,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     q.add_argument("--Fx", required=True, help="demanded mean Fx (dissertation force)")
     q.add_argument("--Fz", required=True, help="demanded mean Fz (< 0 is up)")
     q.add_argument("--V", required=True, help="flight speed")
+    q.add_argument("--climb", default="0", help="vertical speed relative to the air, positive up (default 0; "
+                   "other values need a table with a climb axis)")
     q.add_argument("--clip", action="store_true", help="clip demands outside the grid to its edge")
     q.add_argument("--json", action="store_true", help="print JSON")
     q.set_defaults(func=run_lookup)
@@ -97,7 +101,7 @@ def run_build(args: argparse.Namespace) -> int:
 
     model = get_model(args.model)
     _positive_int("--jobs", args.jobs)
-    grid = Grid.parse(args.grid, args.size)
+    grid = Grid.parse(args.grid, args.size, climb=args.climb)
     bird = bird_from_args(args)
     _check_build_options(args)
     weights = CostWeights(power=args.power_weight, distance=args.distance)
@@ -147,14 +151,15 @@ def table_summary(path: str) -> dict:
         "bird": t.bird.name,
         "force": FORCE_NOTE,
         "param_names": list(t.param_names),
-        "grid": {a: {"min": float(t.axes[a][0]), "max": float(t.axes[a][-1]), "count": len(t.axes[a])} for a in AXES},
+        "grid": {a: {"min": float(t.axes[a][0]), "max": float(t.axes[a][-1]), "count": len(t.axes[a])} for a in t.axis_names},
+        "climb_axis": t.has_climb,
         "cells": cells,
         "status": {s: int(np.sum(status == s)) for s in STATUS_NAMES},
         "coverage": float(np.mean(status == "ok")),
         "solver_not_converged": int(np.sum(~np.asarray(t.converged, dtype=bool))),
         "unreachable_per_V": per_v,
         "unreachable_examples": [
-            {a: float(t.axes[a][idx[k]]) for k, a in enumerate(AXES)}
+            {a: float(t.axes[a][idx[k]]) for k, a in enumerate(t.axis_names)}
             | {"achieved_Fx": float(t.achieved[tuple(idx)][0]), "achieved_Fz": float(t.achieved[tuple(idx)][1])}
             for idx in unreachable[:: max(1, len(unreachable) // 5)][:5]
         ],
@@ -178,7 +183,8 @@ def run_info(args: argparse.Namespace) -> int:
         print(json.dumps(s, indent=2))
         return 0
     print(f"{s['file']}: model {s['model']}, bird {s['bird']}; force: {s['force']}")
-    print("grid: " + ", ".join(f"{a} [{g['min']:g}, {g['max']:g}] x {g['count']}" for a, g in s["grid"].items()))
+    print("grid: " + ", ".join(f"{a} [{g['min']:g}, {g['max']:g}] x {g['count']}" for a, g in s["grid"].items())
+          + ("" if s["climb_axis"] else "; no climb axis (level flight: lookups answer climb = 0)"))
     print(f"parameters: {', '.join(s['param_names'])}")
     st = s["status"]
     print(f"cells: {s['cells']}; ok {st['ok']} ({100 * s['coverage']:.1f} %), unreachable {st['unreachable']}, failed {st['failed']}")
@@ -222,21 +228,22 @@ def _demand(name: str, raw: str) -> float:
 def run_lookup(args: argparse.Namespace) -> int:
     t = load_table(args.file)
     fx, fz, v = _demand("Fx", args.Fx), _demand("Fz", args.Fz), _demand("V", args.V)
-    out = t.lookup_many(fx, fz, v, clip=args.clip)
+    vc = _demand("climb", args.climb)
+    out = t.lookup_many(fx, fz, v, clip=args.clip, climb=vc)
     params = {n: float(out[n]) for n in t.param_names}
     result = {
         "model": t.model,
-        "demand": {"Fx": fx, "Fz": fz, "V": v},
+        "demand": {"Fx": fx, "Fz": fz, "V": v, "climb": vc},
         "clipped": bool(args.clip),
         "params": params,
         "achieved_interpolated": {k: float(out[f"achieved_{k}"]) for k in ("Fx", "Fz", "P")},
-        "status": t.status_at(fx, fz, v, clip=args.clip),
+        "status": t.status_at(fx, fz, v, clip=args.clip, climb=vc),
         "force": FORCE_NOTE,
     }
     if args.json:
         print(json.dumps(result, indent=2))
         return 0
-    print(f"model {t.model}, demand Fx={fx:g} Fz={fz:g} V={v:g} ({FORCE_NOTE}); cell status: {result['status']}")
+    print(f"model {t.model}, demand Fx={fx:g} Fz={fz:g} V={v:g} climb={vc:g} ({FORCE_NOTE}); cell status: {result['status']}")
     for n, val in params.items():
         print(f"  {n:14s} {val:+.4f} rad")
     a = result["achieved_interpolated"]

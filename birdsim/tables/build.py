@@ -48,18 +48,18 @@ import numpy as np
 
 from birdsim.physics.kinematics import get_model
 from birdsim.tables.checkpoints import Checkpoints
-from birdsim.tables.finish import final_check, finish_table, write_table
+from birdsim.tables.finish import demand_grid, final_check, finish_table, write_table
 from birdsim.tables.grid import MAX_CELLS, MAX_NODES, BuildConfig, BuildSettings, Grid, config_from_meta, sub_grid
 from birdsim.tables.cost import forces
-from birdsim.tables.lookup import AXES, LookupTable
+from birdsim.tables.lookup import LookupTable
 from birdsim.tables.regularise import smooth_cells, zigzag_cells
 from birdsim.tables.runner import _InlineExecutor, _ignore_sigint, _run, _stop_workers
-from birdsim.tables.sweeps import IDLE_WRIST, canonical_params, solve_slice, solve_v_line
+from birdsim.tables.sweeps import IDLE_WRIST, canonical_params, solve_climb_line, solve_slice, solve_v_line
 
 __all__ = [
     "MAX_CELLS", "MAX_NODES", "IDLE_WRIST", "BuildConfig", "BuildSettings", "Checkpoints", "Grid",
     "build_table", "canonical_params", "config_from_meta", "final_check", "finish_table",
-    "solve_slice", "solve_v_line", "sub_grid", "write_table",
+    "solve_climb_line", "solve_slice", "solve_v_line", "sub_grid", "write_table",
 ]
 
 
@@ -99,7 +99,7 @@ def build_table(
     if ckpt.discarded and notify is not None:
         notify(ckpt.discarded)
     ncells = int(np.prod(g.shape))
-    passes = 2 if cfg.settings.v_passes else 1
+    passes = 1 + (1 + (g.climb is not None) if cfg.settings.v_passes else 0)
     bar = None
     if progress:
         from tqdm import tqdm
@@ -141,26 +141,63 @@ def build_table(
 
 def _sweep(
     cfg: BuildConfig, executor: Executor, ckpt: Checkpoints, tick: Callable[[int], None]
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The slices, then the V lines: (params, evaluations, converged) over the grid."""
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The slices, the V lines and, on a grid with a climb axis, the climb lines:
+    (params, cost at n_search, evaluations, converged) over the grid.  Task names of a
+    level-flight grid are those of before (``slice_V005``, ``line_Fx003``); a climb
+    index adds ``_C002``; climb lines are ``cline_Fx003_V005``."""
     g = cfg.grid
+    nfx, nfz, nv = len(g.Fx), len(g.Fz), len(g.V)
+    climbs: list[int | None] = [None] if g.climb is None else list(range(len(g.climb)))
+    nc = len(climbs)
+
+    def sfx(c: int | None) -> str:
+        return "" if c is None else f"_C{c:03d}"
+
+    def extra(c: int | None) -> tuple[int, ...]:
+        return () if c is None else (c,)
+
+    d = len(get_model(cfg.model).param_names)
+    X = np.zeros((nfx, nfz, nv, nc, d))
+    cost = np.zeros((nfx, nfz, nv, nc))
+    evals = np.zeros((nfx, nfz, nv, nc), dtype=np.int64)
+    conv = np.zeros((nfx, nfz, nv, nc), dtype=bool)
     slices = _run(
-        {f"slice_V{k:03d}": (solve_slice, (cfg, k)) for k in range(len(g.V))},
-        executor, ckpt, tick, len(g.Fx) * len(g.Fz),
+        {f"slice_V{k:03d}{sfx(c)}": (solve_slice, (cfg, k) + extra(c)) for c in climbs for k in range(nv)},
+        executor, ckpt, tick, nfx * nfz,
     )
-    X = np.stack([slices[f"slice_V{k:03d}"]["params"] for k in range(len(g.V))], axis=2)
-    cost = np.stack([slices[f"slice_V{k:03d}"]["cost"] for k in range(len(g.V))], axis=2)
-    evals = np.stack([slices[f"slice_V{k:03d}"]["evaluations"] for k in range(len(g.V))], axis=2)
-    conv = np.stack([slices[f"slice_V{k:03d}"]["converged"] for k in range(len(g.V))], axis=2)
+    for ci, c in enumerate(climbs):
+        for k in range(nv):
+            r = slices[f"slice_V{k:03d}{sfx(c)}"]
+            X[:, :, k, ci], cost[:, :, k, ci], evals[:, :, k, ci], conv[:, :, k, ci] = r["params"], r["cost"], r["evaluations"], r["converged"]
     if cfg.settings.v_passes:
         lines = _run(
-            {f"line_Fx{i:03d}": (solve_v_line, (cfg, i, X[i], cost[i], conv[i])) for i in range(len(g.Fx))},
-            executor, ckpt, tick, len(g.Fz) * len(g.V),
+            {
+                f"line_Fx{i:03d}{sfx(c)}": (solve_v_line, (cfg, i, X[i, :, :, ci], cost[i, :, :, ci], conv[i, :, :, ci]) + extra(c))
+                for ci, c in enumerate(climbs) for i in range(nfx)
+            },
+            executor, ckpt, tick, nfz * nv,
         )
-        X = np.stack([lines[f"line_Fx{i:03d}"]["params"] for i in range(len(g.Fx))], axis=0)
-        evals = evals + np.stack([lines[f"line_Fx{i:03d}"]["evaluations"] for i in range(len(g.Fx))], axis=0)
-        conv = np.stack([lines[f"line_Fx{i:03d}"]["converged"] for i in range(len(g.Fx))], axis=0)
-        cost = np.stack([lines[f"line_Fx{i:03d}"]["cost"] for i in range(len(g.Fx))], axis=0)
+        for ci, c in enumerate(climbs):
+            for i in range(nfx):
+                r = lines[f"line_Fx{i:03d}{sfx(c)}"]
+                X[i, :, :, ci], cost[i, :, :, ci], conv[i, :, :, ci] = r["params"], r["cost"], r["converged"]
+                evals[i, :, :, ci] += r["evaluations"]
+        if g.climb is not None:
+            clines = _run(
+                {
+                    f"cline_Fx{i:03d}_V{k:03d}": (solve_climb_line, (cfg, i, k, X[i, :, k], cost[i, :, k], conv[i, :, k]))
+                    for i in range(nfx) for k in range(nv)
+                },
+                executor, ckpt, tick, nfz * nc,
+            )
+            for i in range(nfx):
+                for k in range(nv):
+                    r = clines[f"cline_Fx{i:03d}_V{k:03d}"]
+                    X[i, :, k], cost[i, :, k], conv[i, :, k] = r["params"], r["cost"], r["converged"]
+                    evals[i, :, k] += r["evaluations"]
+    if g.climb is None:
+        return X[:, :, :, 0], cost[..., 0], evals[..., 0], conv[..., 0]
     return X, cost, evals, conv
 
 
@@ -173,8 +210,8 @@ def _regularise(
     model = get_model(cfg.model)
     names, st = model.param_names, cfg.settings
     X, evals = X.copy(), evals.copy()
-    D = np.stack(np.meshgrid(*(np.asarray(getattr(cfg.grid, a)) for a in AXES), indexing="ij"), axis=-1)
-    Fx, Fz, _ = forces(model, X, D[..., 2], cfg.bird, st.n_search)
+    D = demand_grid(cfg.grid)
+    Fx, Fz, _ = forces(model, X, D[..., 2], cfg.bird, st.n_search, D[..., 3] if D.shape[-1] > 3 else 0.0)
     ok = np.maximum(np.abs(Fx - D[..., 0]), np.abs(Fz - D[..., 1])) <= st.reach_tol
     best = np.asarray(cost, dtype=float).copy()
     t0 = time.perf_counter()

@@ -23,7 +23,7 @@ def _is_checkpoint_file(name: str) -> bool:
 
 
 _CHECKPOINT_PATTERNS = tuple(
-    p for stem in ("slice_V*", "line_Fx*", "smooth_r*") for p in (f"{stem}.npz", f".{stem}.npz.*.partial.npz")
+    p for stem in ("slice_V*", "line_Fx*", "cline_Fx*", "smooth_r*") for p in (f"{stem}.npz", f".{stem}.npz.*.partial.npz")
 )
 
 

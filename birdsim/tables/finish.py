@@ -7,6 +7,7 @@ from __future__ import annotations
 import subprocess
 import time
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -15,7 +16,7 @@ from birdsim.physics.kinematics import KinematicModel
 from birdsim.tables.checkpoints import Checkpoints
 from birdsim.tables.cost import breakdown_from_forces, forces, other_cost
 from birdsim.tables.grid import BuildConfig
-from birdsim.tables.lookup import AXES, STATUS_NAMES, LookupTable
+from birdsim.tables.lookup import STATUS_NAMES, LookupTable
 
 
 def _git_commit() -> str:
@@ -29,11 +30,15 @@ def _git_commit() -> str:
         return "unknown"
 
 
+def demand_grid(grid: Any) -> np.ndarray:
+    """The demand (Fx, Fz, V[, climb]) of every cell: grid shape x number of axes."""
+    return np.stack(np.meshgrid(*(np.asarray(getattr(grid, a), dtype=float) for a in grid.axis_names), indexing="ij"), axis=-1)
+
+
 def final_check(cfg: BuildConfig, model: KinematicModel, X: np.ndarray) -> dict[str, np.ndarray]:
     """Cost terms, achieved forces and status of parameters X (grid shape x d) at n_final."""
-    g = cfg.grid
-    D = np.stack(np.meshgrid(g.Fx, g.Fz, g.V, indexing="ij"), axis=-1)
-    Fx, Fz, P = forces(model, X, D[..., 2], cfg.bird, cfg.settings.n_final)
+    D = demand_grid(cfg.grid)
+    Fx, Fz, P = forces(model, X, D[..., 2], cfg.bird, cfg.settings.n_final, D[..., 3] if D.shape[-1] > 3 else 0.0)
     other = other_cost(model, X, D[..., 2], cfg.weights)
     b = breakdown_from_forces(Fx, Fz, P, D[..., 0], D[..., 1], cfg.weights, other)
     err = np.maximum(np.abs(Fx - D[..., 0]), np.abs(Fz - D[..., 1]))
@@ -68,7 +73,7 @@ def finish_table(
         model=cfg.model,
         bird=cfg.bird,
         param_names=model.param_names,
-        axes={a: np.asarray(getattr(cfg.grid, a), dtype=float) for a in AXES},
+        axes={a: np.asarray(getattr(cfg.grid, a), dtype=float) for a in cfg.grid.axis_names},
         params=X,
         evaluations=evals,
         converged=np.ones(X.shape[:-1], dtype=bool) if converged is None else converged.astype(bool),

@@ -17,7 +17,7 @@ import numpy as np
 from birdsim.errors import BirdsimError
 from birdsim.physics.bird import Bird
 from birdsim.tables.cost import CostWeights
-from birdsim.tables.lookup import AXES
+from birdsim.tables.lookup import AXES, CLIMB
 
 if TYPE_CHECKING:
     from birdsim.tables.lookup import LookupTable
@@ -28,22 +28,33 @@ MAX_NODES = 1000
 MAX_CELLS = 1_000_000
 
 
+#: Default climb axis (``--climb``): 7 nodes from -0.5 to 0.5 (speed units, positive up).
+CLIMB_DEFAULT = (-0.5, 0.5, 7)
+
+
 @dataclass(frozen=True)
 class Grid:
-    """The demand grid: increasing values of Fx, Fz (dissertation force) and V."""
+    """The demand grid: increasing values of Fx, Fz (dissertation force), V and,
+    optionally, climb (vertical speed relative to the air, positive up; None = a
+    level-flight table with three axes)."""
 
     Fx: tuple[float, ...]
     Fz: tuple[float, ...]
     V: tuple[float, ...]
+    climb: tuple[float, ...] | None = None
+
+    @property
+    def axis_names(self) -> tuple[str, ...]:
+        return AXES + ((CLIMB,) if self.climb is not None else ())
 
     def __post_init__(self) -> None:
-        for a in AXES:
+        for a in self.axis_names:
             ax = getattr(self, a)
             if len(ax) < 2 or any(not np.isfinite(x) for x in ax) or any(b <= a_ for a_, b in zip(ax, ax[1:])):
                 raise BirdsimError(f"--grid {a}={list(ax)} is invalid; allowed: >= 2 finite increasing values")
         if self.V[0] < 0:
             raise BirdsimError(f"--grid V starts at {self.V[0]:g}; allowed: speeds >= 0")
-        if len(self.Fx) * len(self.Fz) * len(self.V) > MAX_CELLS:
+        if int(np.prod(self.shape)) > MAX_CELLS:
             raise BirdsimError(f"--grid {'x'.join(map(str, self.shape))} has too many cells; allowed: at most {MAX_CELLS} cells")
 
     @classmethod
@@ -52,18 +63,21 @@ class Grid:
         return cls.parse("", size)
 
     @classmethod
-    def parse(cls, spec: str, size: int = 11) -> "Grid":
+    def parse(cls, spec: str, size: int = 11, climb: bool = False) -> "Grid":
         """``"Fx=-0.5:0.5:11,Fz=-0.5:0:11,V=0:1:11"`` (``lo:hi:count``) or explicit
-        values ``"V=0|0.5|1"``; axes left out take the default range with ``size`` nodes."""
+        values ``"V=0|0.5|1"``; axes left out take the default range with ``size`` nodes.
+        A ``climb=...`` part, or ``climb=True`` (:data:`CLIMB_DEFAULT`), adds the climb axis."""
         if not isinstance(size, int) or not 2 <= size <= MAX_NODES:
             raise BirdsimError(f"--size {size!r} is invalid; allowed: an integer in [2, {MAX_NODES}]")
         defaults = {"Fx": (-0.5, 0.5), "Fz": (-0.5, 0.0), "V": (0.0, 1.0)}
-        axes = {a: tuple(float(x) for x in np.linspace(*defaults[a], size)) for a in AXES}
+        axes: dict[str, Any] = {a: tuple(float(x) for x in np.linspace(*defaults[a], size)) for a in AXES}
+        if climb:
+            axes[CLIMB] = tuple(float(x) for x in np.linspace(*CLIMB_DEFAULT))
         for part in filter(None, (s.strip() for s in spec.split(","))):
             name, sep, value = part.partition("=")
             name = name.strip()
-            if not sep or name not in AXES:
-                raise BirdsimError(f"--grid {part!r} is malformed; allowed: Fx=LO:HI:COUNT, Fz=..., V=... or NAME=A|B|C")
+            if not sep or name not in AXES + (CLIMB,):
+                raise BirdsimError(f"--grid {part!r} is malformed; allowed: Fx=LO:HI:COUNT, Fz=..., V=..., climb=... or NAME=A|B|C")
             try:
                 if ":" in value:
                     lo, hi, count = value.split(":")
@@ -78,11 +92,12 @@ class Grid:
         return cls(**axes)
 
     @property
-    def shape(self) -> tuple[int, int, int]:
-        return (len(self.Fx), len(self.Fz), len(self.V))
+    def shape(self) -> tuple[int, ...]:
+        return tuple(len(getattr(self, a)) for a in self.axis_names)
 
     def to_dict(self) -> dict[str, list[float]]:
-        return {a: list(getattr(self, a)) for a in AXES}
+        """The axes (climb only when present: a level-flight grid hashes as before)."""
+        return {a: list(getattr(self, a)) for a in self.axis_names}
 
 
 @dataclass(frozen=True)
@@ -181,13 +196,14 @@ def config_from_meta(table: LookupTable) -> BuildConfig:
     m = table.meta
     return BuildConfig(
         model=table.model,
-        grid=Grid(**{a: tuple(m["grid"][a]) for a in AXES}),
+        grid=Grid(**{a: tuple(m["grid"][a]) for a in AXES + (CLIMB,) if a in m["grid"]}),
         bird=table.bird,
         weights=CostWeights(**m["cost_weights"]),
         settings=BuildSettings(**m["solver"]),
     )
 
 
-def sub_grid(grid: Grid, Fx: Sequence[int], Fz: Sequence[int], V: Sequence[int]) -> Grid:
+def sub_grid(grid: Grid, Fx: Sequence[int], Fz: Sequence[int], V: Sequence[int], climb: Sequence[int] | None = None) -> Grid:
     """The grid restricted to the given indices (e.g. a corner for a rebuild check)."""
-    return Grid(tuple(grid.Fx[i] for i in Fx), tuple(grid.Fz[i] for i in Fz), tuple(grid.V[i] for i in V))
+    c = None if grid.climb is None else tuple(grid.climb[i] for i in (climb if climb is not None else range(len(grid.climb))))
+    return Grid(tuple(grid.Fx[i] for i in Fx), tuple(grid.Fz[i] for i in Fz), tuple(grid.V[i] for i in V), c)

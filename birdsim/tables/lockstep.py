@@ -35,7 +35,7 @@ class Batcher:
         self.model, self.bird, self.n = model, bird, n
         self.active = parties
         self.cond = threading.Condition()
-        self.pending: dict[int, tuple[np.ndarray, float]] = {}
+        self.pending: dict[int, tuple[np.ndarray, float, float]] = {}
         self.results: dict[int, Any] = {}
         self.calls = 0
         self.rank: dict[int, int] = {}  # thread ident -> job index (a fixed row order)
@@ -44,13 +44,14 @@ class Batcher:
         # rows in job order, not arrival order: the batch is then the same on every run
         items = sorted(self.pending.items(), key=lambda item: self.rank.get(item[0], 0))
         self.pending.clear()
-        X = np.concatenate([x for _, (x, _) in items])
-        V = np.concatenate([np.full(len(x), v) for _, (x, v) in items])
+        X = np.concatenate([x for _, (x, _, _) in items])
+        V = np.concatenate([np.full(len(x), v) for _, (x, v, _) in items])
+        C = np.concatenate([np.full(len(x), c) for _, (x, _, c) in items])
         try:
-            Fx, Fz, P = forces(self.model, X, V, self.bird, self.n)
+            Fx, Fz, P = forces(self.model, X, V, self.bird, self.n, C if np.any(C != 0.0) else 0.0)
             self.calls += 1
             start = 0
-            for tid, (x, _) in items:
+            for tid, (x, _, _) in items:
                 stop = start + len(x)
                 self.results[tid] = (Fx[start:stop], Fz[start:stop], P[start:stop])
                 start = stop
@@ -59,10 +60,10 @@ class Batcher:
                 self.results[tid] = exc
         self.cond.notify_all()
 
-    def evaluate(self, X: np.ndarray, speed: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def evaluate(self, X: np.ndarray, speed: float, climb: float = 0.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         tid = threading.get_ident()
         with self.cond:
-            self.pending[tid] = (np.atleast_2d(X), float(speed))
+            self.pending[tid] = (np.atleast_2d(X), float(speed), float(climb))
             if len(self.pending) >= self.active:
                 self._flush()
             while tid not in self.results:
@@ -91,7 +92,7 @@ def run_lockstep(
     if not jobs:
         return []
     if len(jobs) == 1:
-        return [jobs[0](lambda X, v: forces(model, X, v, bird, n))]
+        return [jobs[0](lambda X, v, climb=0.0: forces(model, X, v, bird, n, climb))]
     batcher = Batcher(model, bird, n, len(jobs))
 
     def wrap(k: int) -> T:

@@ -104,9 +104,11 @@ def _targets(cell: tuple[int, ...], X: np.ndarray, ok: np.ndarray) -> list[np.nd
 
 
 def _candidate(cfg: BuildConfig, model: KinematicModel, demand: tuple[float, ...], target: np.ndarray, evaluator: Any) -> tuple[np.ndarray, int, bool]:
-    fx, fz, v = demand
+    fx, fz, v, vc = (tuple(demand) + (0.0,))[:4]
     weights = replace(cfg.weights, distance=cfg.weights.distance + cfg.settings.smooth_nu)
-    prob = ForceProblem(model, fx, fz, v, weights=weights, bird=cfg.bird, previous=target, n=cfg.settings.n_search, evaluator=evaluator)
+    prob = ForceProblem(
+        model, fx, fz, v, weights=weights, bird=cfg.bird, previous=target, n=cfg.settings.n_search, evaluator=evaluator, climb=vc
+    )
     sol = slsqp(prob, target, maxiter=cfg.settings.maxiter)
     return sol.x, prob.evaluations, sol.converged
 
@@ -145,8 +147,8 @@ def smooth_cells(
     best = np.asarray(best_cost, dtype=float).copy()
     for m, cell in enumerate(cells):
         cand = np.array(pool[m])
-        fx, fz, v = demands[cell]
-        prob = ForceProblem(model, fx, fz, v, weights=cfg.weights, bird=cfg.bird, n=st.n_search)
+        fx, fz, v, vc = (tuple(demands[cell]) + (0.0,))[:4]
+        prob = ForceProblem(model, fx, fz, v, weights=cfg.weights, bird=cfg.bird, n=st.n_search, climb=vc)
         R, h = prob.parts(cand)
         cost = np.abs(R) @ prob.weights + h
         err = np.max(np.abs(R[:, :2]), axis=1)

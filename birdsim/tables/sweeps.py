@@ -23,21 +23,23 @@ from birdsim.tables.optimize import ForceProblem, box_corners, random_starts, sl
 
 
 def _problem(
-    cfg: BuildConfig, model: KinematicModel, fx: float, fz: float, v: float, previous: np.ndarray | None, evaluator: Any = None
+    cfg: BuildConfig, model: KinematicModel, fx: float, fz: float, v: float, previous: np.ndarray | None, evaluator: Any = None,
+    climb: float = 0.0,
 ) -> ForceProblem:
     return ForceProblem(
-        model, fx, fz, v, weights=cfg.weights, bird=cfg.bird, previous=previous, n=cfg.settings.n_search, evaluator=evaluator
+        model, fx, fz, v, weights=cfg.weights, bird=cfg.bird, previous=previous, n=cfg.settings.n_search, evaluator=evaluator,
+        climb=climb,
     )
 
 
-def _screen(cfg: BuildConfig, model: KinematicModel, v: float) -> tuple[np.ndarray, tuple[np.ndarray, ...], np.ndarray]:
+def _screen(cfg: BuildConfig, model: KinematicModel, v: float, climb: float = 0.0) -> tuple[np.ndarray, tuple[np.ndarray, ...], np.ndarray]:
     """Candidates (S x d), their (Fx, Fz, P) and their non-force cost, one batched call:
     scrambled Sobol points, the model's hover and cruise guesses and the box corners."""
-    dummy = _problem(cfg, model, 0.0, 0.0, v, None)
+    dummy = _problem(cfg, model, 0.0, 0.0, v, None, climb=climb)
     S = random_starts(dummy, cfg.settings.screen, cfg.settings.seed)
     guesses = [list(model.guess(r).values()) for r in ("hover", "cruise")]
     S = np.vstack([S, guesses, box_corners(dummy)])
-    F = forces(model, S, v, cfg.bird, cfg.settings.n_search)
+    F = forces(model, S, v, cfg.bird, cfg.settings.n_search, climb)
     return S, F, other_cost(model, S, v, cfg.weights)
 
 
@@ -50,6 +52,7 @@ def _solve_cell(
     warm: np.ndarray | None,
     screen: tuple[np.ndarray, tuple[np.ndarray, ...], np.ndarray],
     evaluator: Any = None,
+    climb: float = 0.0,
 ) -> tuple[np.ndarray, float, int, bool]:
     """Warm-started SLSQP, multi-start from the screen where the warm start is poor.
     Returns (x, cost at n_search, cycle evaluations, SLSQP converged)."""
@@ -57,7 +60,7 @@ def _solve_cell(
     S, (Fx, Fz, P), other = screen
     c = breakdown_from_forces(Fx, Fz, P, fx, fz, cfg.weights, other).total
     order = np.argsort(c)
-    prob = _problem(cfg, model, fx, fz, v, warm if cfg.weights.distance > 0 else None, evaluator)
+    prob = _problem(cfg, model, fx, fz, v, warm if cfg.weights.distance > 0 else None, evaluator, climb)
     best = None
     polish = max(st.starts, 1)
     if warm is not None:
@@ -73,9 +76,10 @@ def _solve_cell(
 
 
 def _resolve_from(
-    cfg: BuildConfig, model: KinematicModel, fx: float, fz: float, v: float, start: np.ndarray, evaluator: Any = None
+    cfg: BuildConfig, model: KinematicModel, fx: float, fz: float, v: float, start: np.ndarray, evaluator: Any = None,
+    climb: float = 0.0,
 ) -> tuple[np.ndarray, float, int, bool]:
-    prob = _problem(cfg, model, fx, fz, v, start if cfg.weights.distance > 0 else None, evaluator)
+    prob = _problem(cfg, model, fx, fz, v, start if cfg.weights.distance > 0 else None, evaluator, climb)
     sol = slsqp(prob, start, maxiter=cfg.settings.maxiter)
     return sol.x, sol.cost, prob.evaluations, sol.converged
 
@@ -102,10 +106,11 @@ def canonical_params(model: KinematicModel, X: np.ndarray) -> np.ndarray:
 
 
 def _improve_cell(
-    cfg: BuildConfig, model: KinematicModel, fx: float, fz: float, v: float, starts: list[np.ndarray], evaluator: Any = None
+    cfg: BuildConfig, model: KinematicModel, fx: float, fz: float, v: float, starts: list[np.ndarray], evaluator: Any = None,
+    climb: float = 0.0,
 ) -> tuple[np.ndarray | None, float, int, bool]:
     """The best SLSQP answer from ``starts`` (None if there are none)."""
-    prob = _problem(cfg, model, fx, fz, v, None, evaluator)
+    prob = _problem(cfg, model, fx, fz, v, None, evaluator, climb)
     best = None
     for x0 in starts:
         sol = slsqp(prob, x0, maxiter=cfg.settings.maxiter)
@@ -119,8 +124,9 @@ def _improve_cell(
 # ---- tasks (top-level functions: picklable for process and cluster executors) -----------
 
 
-def solve_slice(cfg: BuildConfig, iv: int) -> dict[str, np.ndarray]:
-    """Phase 1 for the slice V = grid.V[iv]: sweep Fz (inner) and Fx (outer, downwards).
+def solve_slice(cfg: BuildConfig, iv: int, ic: int | None = None) -> dict[str, np.ndarray]:
+    """Phase 1 for the slice V = grid.V[iv] (and climb = grid.climb[ic] on a grid with a
+    climb axis, else 0): sweep Fz (inner) and Fx (outer, downwards).
 
     The first column (strongest lift demand) is a chain of warm starts from +Fx_max
     down; then every Fx line sweeps Fz upwards, the lines in lockstep (their
@@ -129,18 +135,19 @@ def solve_slice(cfg: BuildConfig, iv: int) -> dict[str, np.ndarray]:
     model = get_model(cfg.model)
     g = cfg.grid
     v = g.V[iv]
+    vc = 0.0 if ic is None else g.climb[ic]
     nfx, nfz, d = len(g.Fx), len(g.Fz), len(model.param_names)
     X = np.zeros((nfx, nfz, d))
     cost = np.zeros((nfx, nfz))
     evals = np.zeros((nfx, nfz), dtype=np.int64)
     conv = np.zeros((nfx, nfz), dtype=bool)
-    screen = _screen(cfg, model, v)
+    screen = _screen(cfg, model, v, vc)
     warm: np.ndarray | None = None
     for i in reversed(range(nfx)):  # Fx from +max down, Fz at the strongest lift demand
-        X[i, 0], cost[i, 0], evals[i, 0], conv[i, 0] = _solve_cell(cfg, model, g.Fx[i], g.Fz[0], v, warm, screen)
+        X[i, 0], cost[i, 0], evals[i, 0], conv[i, 0] = _solve_cell(cfg, model, g.Fx[i], g.Fz[0], v, warm, screen, climb=vc)
         warm = X[i, 0]
     for j in range(1, nfz):  # Fz upwards to 0, all Fx lines at once
-        jobs = [partial(_solve_cell, cfg, model, g.Fx[i], g.Fz[j], v, X[i, j - 1], screen) for i in range(nfx)]
+        jobs = [partial(_solve_cell, cfg, model, g.Fx[i], g.Fz[j], v, X[i, j - 1], screen, climb=vc) for i in range(nfx)]
         for i, (x, c, e, ok) in enumerate(run_lockstep(model, cfg.bird, cfg.settings.n_search, jobs)):
             X[i, j], cost[i, j], evals[i, j], conv[i, j] = x, c, e, ok
     X = canonical_params(model, X)
@@ -155,7 +162,7 @@ def solve_slice(cfg: BuildConfig, iv: int) -> dict[str, np.ndarray]:
                     X[a, b].copy() for a, b in near
                     if 0 <= a < nfx and b < nfz and np.max(np.abs(X[a, b] - X[i, j])) >= cfg.settings.branch_tol
                 ]
-                jobs.append(partial(_improve_cell, cfg, model, g.Fx[i], g.Fz[j], v, starts))
+                jobs.append(partial(_improve_cell, cfg, model, g.Fx[i], g.Fz[j], v, starts, climb=vc))
             for i, (x, c, e, ok) in enumerate(run_lockstep(model, cfg.bird, cfg.settings.n_search, jobs)):
                 evals[i, j] += e
                 if x is not None and c < cost[i, j] - 1e-12:
@@ -164,29 +171,51 @@ def solve_slice(cfg: BuildConfig, iv: int) -> dict[str, np.ndarray]:
     return {"params": X, "cost": cost, "evaluations": evals, "converged": conv}
 
 
-def solve_v_line(cfg: BuildConfig, ifx: int, X: np.ndarray, cost: np.ndarray, conv: np.ndarray) -> dict[str, np.ndarray]:
-    """Phase 2 for the line Fx = grid.Fx[ifx] (arrays nFz x nV): a forward and a
-    backward pass in V, each cell re-solved from its V-neighbour (all Fz of one V in
-    lockstep) and kept if cheaper.  With under-relaxation (relax < 1) the forward pass
-    stores ``relax x* + (1 - relax) x_prev`` (eq. 94) and the backward pass, which
-    would undo that smoothing, is skipped."""
+def solve_v_line(cfg: BuildConfig, ifx: int, X: np.ndarray, cost: np.ndarray, conv: np.ndarray, ic: int | None = None) -> dict[str, np.ndarray]:
+    """Phase 2 for the line Fx = grid.Fx[ifx] (at climb = grid.climb[ic], else 0; arrays
+    nFz x nV): a forward and a backward pass in V, each cell re-solved from its
+    V-neighbour (all Fz of one V in lockstep) and kept if cheaper.  With
+    under-relaxation (relax < 1) the forward pass stores ``relax x* + (1 - relax) x_prev``
+    (eq. 94) and the backward pass, which would undo that smoothing, is skipped."""
+    g = cfg.grid
+    vc = 0.0 if ic is None else g.climb[ic]
+    return _line_passes(cfg, g.Fx[ifx], lambda j, k: (g.Fz[j], g.V[k], vc), X, cost, conv)
+
+
+def solve_climb_line(cfg: BuildConfig, ifx: int, iv: int, X: np.ndarray, cost: np.ndarray, conv: np.ndarray) -> dict[str, np.ndarray]:
+    """Phase 3 of a grid with a climb axis, for Fx = grid.Fx[ifx] and V = grid.V[iv]
+    (arrays nFz x nClimb): the passes of :func:`solve_v_line` along climb (upwards, then
+    downwards), the same continuation as along V."""
+    g = cfg.grid
+    return _line_passes(cfg, g.Fx[ifx], lambda j, k: (g.Fz[j], g.V[iv], g.climb[k]), X, cost, conv)
+
+
+def _line_passes(
+    cfg: BuildConfig, fx: float, point: Any, X: np.ndarray, cost: np.ndarray, conv: np.ndarray
+) -> dict[str, np.ndarray]:
+    """Forward and backward passes along the second array axis; ``point(j, k)`` gives
+    the (Fz, V, climb) of cell (j, k)."""
     model = get_model(cfg.model)
-    g, st = cfg.grid, cfg.settings
+    st = cfg.settings
     X, cost, conv = X.copy(), cost.copy(), conv.copy()
     evals = np.zeros(cost.shape, dtype=np.int64)
-    nv, nfz = len(g.V), len(g.Fz)
+    nfz, nk = cost.shape
     plain = st.relax == 1.0 and cfg.weights.distance == 0
-    passes = [(range(1, nv), -1)] + ([(range(nv - 2, -1, -1), +1)] if st.relax == 1.0 else [])
+    passes = [(range(1, nk), -1)] + ([(range(nk - 2, -1, -1), +1)] if st.relax == 1.0 else [])
     for order, step in passes:
         for k in order:
-            # a V-neighbour this close is on the same branch: a re-solve would land here again
+            # a neighbour this close is on the same branch: a re-solve would land here again
             todo = [j for j in range(nfz) if not (plain and np.max(np.abs(X[j, k + step] - X[j, k])) < st.branch_tol)]
-            jobs = [partial(_resolve_from, cfg, model, g.Fx[ifx], g.Fz[j], g.V[k], X[j, k + step].copy()) for j in todo]
+            jobs = []
+            for j in todo:
+                fz, v, vc = point(j, k)
+                jobs.append(partial(_resolve_from, cfg, model, fx, fz, v, X[j, k + step].copy(), climb=vc))
             for j, (x_new, c_new, e, ok) in zip(todo, run_lockstep(model, cfg.bird, st.n_search, jobs)):
                 prev = X[j, k + step]
                 evals[j, k] += e
                 if not plain:
-                    prob = _problem(cfg, model, g.Fx[ifx], g.Fz[j], g.V[k], prev if cfg.weights.distance > 0 else None)
+                    fz, v, vc = point(j, k)
+                    prob = _problem(cfg, model, fx, fz, v, prev if cfg.weights.distance > 0 else None, climb=vc)
                     if st.relax < 1.0:
                         x_new = st.relax * x_new + (1.0 - st.relax) * prev
                         X[j, k], cost[j, k], conv[j, k] = x_new, float(prob.cost(x_new[None])[0]), ok
@@ -197,4 +226,3 @@ def solve_v_line(cfg: BuildConfig, ifx: int, X: np.ndarray, cost: np.ndarray, co
                 if c_new < current - 1e-12:
                     X[j, k], cost[j, k], conv[j, k] = canonical_params(model, x_new), c_new, ok
     return {"params": X, "cost": cost, "evaluations": evals, "converged": conv}
-
