@@ -37,6 +37,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     b.add_argument("--out", help="output table (default tables/<model>.npz; a .json is written beside it)")
     b.add_argument("--force", action="store_true", help="overwrite an existing table")
     b.add_argument("--jobs", type=int, default=None, help="worker processes (default: all cores; 1 = no processes)")
+    b.add_argument("--dask", metavar="SCHEDULER", help="run the tasks on a Dask cluster: tcp://HOST:PORT (a running "
+                   "`dask scheduler`) or local:N (N worker processes started here); needs birdsim[cluster]")
     b.add_argument("--restart", action="store_true", help="discard checkpoints of an interrupted build")
     b.add_argument("--screen", type=int, default=BuildSettings.screen, help="screen candidates per V slice")
     b.add_argument("--starts", type=int, default=BuildSettings.starts, help="screen starts polished where the warm start is poor")
@@ -101,6 +103,12 @@ def run_build(args: argparse.Namespace) -> int:
 
     model = get_model(args.model)
     _positive_int("--jobs", args.jobs)
+    if args.dask is not None:
+        from birdsim.tables.cluster import parse_scheduler
+
+        parse_scheduler(args.dask)
+        if args.jobs is not None:
+            raise BirdsimError(f"--jobs {args.jobs} with --dask {args.dask!r}; allowed: one of them (the cluster has its own workers)")
     grid = Grid.parse(args.grid, args.size, climb=args.climb)
     bird = bird_from_args(args)
     _check_build_options(args)
@@ -119,12 +127,21 @@ def run_build(args: argparse.Namespace) -> int:
 
         shutil.rmtree(ckpt)
     cfg = BuildConfig(model.name, grid, bird, weights, settings)
-    try:
+    def build(executor=None, name="executor"):  # type: ignore[no-untyped-def]
         # the table is written (existence checked above) before the checkpoints go
-        table = build_table(
-            cfg, jobs=args.jobs, checkpoint_dir=ckpt, progress=not args.quiet, out=npz_path, force=True,
-            notify=lambda line: print(f"birdsim tables: {line}", file=sys.stderr),
+        return build_table(
+            cfg, executor=executor, jobs=args.jobs, checkpoint_dir=ckpt, progress=not args.quiet, out=npz_path, force=True,
+            notify=lambda line: print(f"birdsim tables: {line}", file=sys.stderr), executor_name=name,
         )
+
+    try:
+        if args.dask is None:
+            table = build()
+        else:
+            from birdsim.tables.cluster import dask_executor
+
+            with dask_executor(args.dask) as executor:
+                table = build(executor, f"dask {args.dask}")
     except KeyboardInterrupt:
         print(f"birdsim tables: finished parts kept in {ckpt}; run the same command again to resume", file=sys.stderr)
         raise

@@ -73,6 +73,7 @@ def build_table(
     out: str | Path | None = None,
     force: bool = False,
     notify: Callable[[str], None] | None = None,
+    executor_name: str = "executor",
 ) -> LookupTable:
     """Build the table of ``cfg``.
 
@@ -87,6 +88,7 @@ def build_table(
             removed, so that a failed write loses nothing.
         force: overwrite an existing ``out``.
         notify: receives one-line notes (checkpoints discarded and why).
+        executor_name: how the provenance names a given ``executor`` (e.g. "dask local:2").
     Returns:
         The table (provenance in ``meta``).
     Raises:
@@ -129,7 +131,7 @@ def build_table(
             bar.close()
     table = finish_table(cfg, model, X, evals, conv)
     seconds = time.perf_counter() - t0
-    table.meta.update(build_seconds=round(seconds, 3), cells_per_second=round(ncells / seconds, 2), jobs=jobs if own else "executor")
+    table.meta.update(build_seconds=round(seconds, 3), cells_per_second=round(ncells / seconds, 2), jobs=jobs if own else executor_name)
     if cfg.settings.smooth_tol > 0:
         table.meta["regularising_pass"] = smoothing
     if out is not None:

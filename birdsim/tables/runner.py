@@ -41,7 +41,7 @@ def _run(
             done[name] = cached
             tick(cells_per_task)
         else:
-            futures[executor.submit(fn, *args)] = name
+            futures[executor.submit(run_pinned, fn, *args)] = name
     try:
         for fut in as_completed(futures):
             name = futures[fut]
@@ -55,6 +55,17 @@ def _run(
                 checkpoints.save(name, fut.result())
         raise
     return done
+
+
+def run_pinned(fn: Callable[..., dict[str, np.ndarray]], *args: Any) -> dict[str, np.ndarray]:
+    """Run one task with the BLAS libraries on one thread.  SLSQP's small linear algebra
+    gives results that differ in the last bits (1e-10 in a table) with the number of
+    BLAS threads, which differs between this process, pool workers and Dask workers
+    (Dask sets OPENBLAS_NUM_THREADS=1): pinned, every executor builds the same table."""
+    from threadpoolctl import threadpool_limits
+
+    with threadpool_limits(limits=1, user_api="blas"):
+        return fn(*args)
 
 
 def _ignore_sigint() -> None:
