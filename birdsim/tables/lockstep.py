@@ -39,9 +39,11 @@ class Batcher:
         self.pending: dict[int, tuple[bool, np.ndarray, float, float]] = {}
         self.results: dict[int, Any] = {}
         self.calls = 0
+        self.rank: dict[int, int] = {}  # thread ident -> job index (a fixed row order)
 
     def _flush(self) -> None:
-        items = list(self.pending.items())
+        # rows in job order, not arrival order: the batch is then the same on every run
+        items = sorted(self.pending.items(), key=lambda item: self.rank.get(item[0], 0))
         self.pending.clear()
         for want_grad in (False, True):
             group = [(tid, req) for tid, req in items if req[0] == want_grad]
@@ -130,11 +132,13 @@ def run_lockstep(
     batcher = Batcher(model, bird, n, len(jobs))
     evaluator = _Evaluator(batcher.evaluate, batcher.gradients)
 
-    def wrap(job: Callable[..., T]) -> T:
+    def wrap(k: int) -> T:
+        with batcher.cond:
+            batcher.rank[threading.get_ident()] = k
         try:
-            return job(evaluator)
+            return jobs[k](evaluator)
         finally:
             batcher.leave()
 
     with ThreadPoolExecutor(max_workers=len(jobs)) as pool:
-        return list(pool.map(wrap, jobs))
+        return list(pool.map(wrap, range(len(jobs))))
