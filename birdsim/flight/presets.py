@@ -11,7 +11,7 @@ table cells whose corners are all reachable, read in earth axes and in the air-p
 * ``hover``: in place, 6 semispans up, for 8 wingbeats.
 * ``cruise``: straight and level at :data:`CRUISE_SPEED`, 6 semispans up, 10 wingbeats.
 * ``take-off``: from rest on the perch, forward and up to cruise speed and height
-  (20 wingbeats).
+  (26 wingbeats).
 * ``landing``: from cruise, down at cruise speed, then braking nearly level, to rest on
   the perch (40 wingbeats: below V = 0.2 the demo table brakes the bird by at most
   about 0.003-0.006 omega^2 s, 0.3-0.5 g for the pigeon; docs/flight.md).
@@ -62,15 +62,14 @@ def _presets() -> dict[str, FlightPath]:
     )
     take_off = FlightPath(
         "take-off",
-        20.0,
+        26.0,
         True,
         False,
         (
             _K(0.0, PERCH_Z, V=0.0, regime="take-off"),
-            _K(6.0, PERCH_Z + 0.5, V=0.18),
-            _K(12.0, 4.2, V=0.38, regime="climb-out"),
-            _K(16.0, zc - 0.2, V=0.48),
-            _K(19.0, zc, V=vc, regime="cruise"),
+            _K(9.0, 2.0, V=0.3, regime="climb-out"),
+            _K(21.0, zc - 0.4, V=0.47),
+            _K(25.0, zc, V=vc, regime="cruise"),
         ),
         "from rest on the perch, forward and up to cruise: speed first, then height",
     )
@@ -81,12 +80,12 @@ def _presets() -> dict[str, FlightPath]:
         True,
         (
             _K(0.0, zc, V=vc, regime="cruise"),
-            _K(1.0, zc, V=vc),
-            _K(10.0, 2.6, V=0.49, regime="descent"),
-            _K(13.0, 2.2, V=0.42, regime="braking"),
-            _K(19.0, 2.0, V=0.27),
-            _K(26.0, 1.8, V=0.12, regime="approach"),
-            _K(32.0, 1.7, V=0.04),
+            _K(1.0, zc, V=vc, regime="descent"),
+            _K(11.0, 2.4, V=vc),
+            _K(16.0, 2.15, V=0.42, regime="braking"),
+            _K(22.0, 2.0, V=0.26),
+            _K(28.0, 1.8, V=0.12, regime="approach"),
+            _K(33.0, 1.7, V=0.04),
             _K(39.0, PERCH_Z, V=0.0, regime="perched"),
         ),
         "from cruise: down at cruise speed, then brake nearly level, to rest on the perch",
