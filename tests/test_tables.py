@@ -108,7 +108,7 @@ def test_save_load_round_trip_and_no_silent_overwrite(tmp_path):
         for name in ("params", "cost", "cost_fractions", "achieved", "status_code", "evaluations"):
             np.testing.assert_array_equal(getattr(u, name), getattr(t, name))
         assert u.meta["note"] == "synthetic"
-    with pytest.raises(BirdsimError, match="exists; allowed: a new path, or --force"):
+    with pytest.raises(BirdsimError, match="exists; allowed: a new path, or force=True"):
         t.save(npz)
     t.save(npz, force=True)
     assert not list(tmp_path.glob(".*partial*"))  # atomic writes leave no temporaries

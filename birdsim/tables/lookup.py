@@ -165,7 +165,7 @@ class LookupTable:
                 out = (arr < lo - 1e-12) | (arr > hi + 1e-12)
                 if np.any(out):
                     bad = float(arr[out].flat[0]) if arr.ndim else float(arr)
-                    raise TableError(f"{a}={bad:g} is outside the table grid; allowed: [{lo:g}, {hi:g}] (or clip=True / --clip)")
+                    raise TableError(f"{a}={bad:g} is outside the table grid; allowed: [{lo:g}, {hi:g}] (or clip=True)")
                 arr = np.clip(arr, lo, hi)
             arrays[a] = arr
         b = np.broadcast_arrays(*(arrays[a] for a in AXES))
@@ -191,7 +191,21 @@ class LookupTable:
         return {n: vals[:, k].reshape(shape) for k, n in enumerate(names[: d + 4])}
 
     def lookup(self, Fx: float, Fz: float, V: float, clip: bool = False) -> dict[str, float]:
-        """The interpolated optimal parameters (radians) for one demand."""
+        """The interpolated optimal parameters for one demand.
+
+        Args:
+            Fx, Fz: demanded mean force, the dissertation's (right wing + body drag, seed
+                earth axes, Fz < 0 up), in the table's force units.
+            V: flight speed, in the table's speed units.
+            clip: clip a demand outside the grid to its edge instead of refusing it.
+
+        Returns:
+            Parameter name -> value (radians), multilinear between the grid nodes.
+
+        Raises:
+            TableError: a demand that is not a finite number, or outside the grid
+                without ``clip`` (one line naming ``Fx``, ``Fz`` or ``V``).
+        """
         out = self.lookup_many(Fx, Fz, V, clip)
         return {n: float(out[n]) for n in self.param_names}
 
@@ -216,7 +230,7 @@ class LookupTable:
         """Write ``<stem>.npz`` and ``<stem>.json`` atomically; refuse to overwrite without ``force``."""
         npz_path, json_path = table_paths(path)
         check_output(npz_path, force)
-        check_output(json_path, force, arg="--out (json)")
+        check_output(json_path, force, arg="path (json)")
         buf = io.BytesIO()
         np.savez_compressed(
             buf,
@@ -258,8 +272,19 @@ def table_paths(path: str | Path) -> tuple[Path, Path]:
 
 
 def load_table(path: str | Path) -> LookupTable:
-    """Read a table (``.npz`` or ``.json`` path, or the stem); one clear error for a
-    missing, unreadable, mismatched or other-version file."""
+    """Read a table written by :meth:`LookupTable.save` / ``birdsim tables build``.
+
+    Args:
+        path: the ``.npz`` or ``.json`` file, or their common stem.
+
+    Returns:
+        The table (arrays indexed ``[i_Fx, i_Fz, i_V, ...]``).
+
+    Raises:
+        TableError: one line naming the file when either file is missing, unreadable,
+            truncated, not a table, of another format version, or when the two do not
+            belong together (checksum).
+    """
     npz_path, json_path = table_paths(path)
     for p in (npz_path, json_path):
         if not p.is_file():
