@@ -16,6 +16,7 @@ from birdsim.tables.cost import FRACTION_NAMES, CostWeights
 from birdsim.errors import BirdsimError, check_finite
 from birdsim.io import check_output
 from birdsim.physics.kinematics import get_model
+from birdsim.physics.units import reduced_bird
 from birdsim.tables.lookup import AXES, STATUS_NAMES, load_table, table_paths
 from birdsim.commands.common import add_bird_arguments, bird_from_args
 
@@ -70,7 +71,9 @@ def run_build(args: argparse.Namespace) -> int:
     model = get_model(args.model)
     _positive_int("--jobs", args.jobs)
     grid = Grid.parse(args.grid, args.size)
-    bird = bird_from_args(args)
+    # tables are non-dimensional: a bird in any units is built as its reduced bird (the
+    # seed bird is its own), so forces are in rho omega^2 s^3 c and the table records it
+    bird = reduced_bird(bird_from_args(args))
     for name in ("relax", "distance", "power_weight", "reach_tol"):
         check_finite(f"--{name.replace('_', '-')}", getattr(args, name))
     weights = CostWeights(power=args.power_weight, distance=args.distance)
