@@ -43,6 +43,8 @@ def test_forces_geometry_override_changes_result(capsys):
         (["--model", "m1", "--speed", "0", *HOVER[:-1], "twist_amp=x"], "not a number; allowed"),
         (["--model", "m1", "--speed", "0", *HOVER, "--bird", "/nonexistent.toml"], "does not exist"),
         (["--model", "m1", "--speed", "0", *HOVER, "--samples", "0"], "--samples 0 is invalid; allowed: an integer >= 2"),
+        (["--model", "m1", "--speed", "0", *HOVER, "--climb", "nan"], "--climb nan is invalid"),
+        (["--model", "m1", "--speed", "0", *HOVER, "--climb", "up"], "--climb='up' is not a number"),
     ],
 )
 def test_forces_bad_input_one_line(args, text, capsys):
@@ -86,3 +88,13 @@ def test_forces_fills_missing_parameters_from_the_defaults(capsys):
     assert given["filled"] == {} and given["mean"] == partial["mean"]
     assert main(["forces", "--model", "m1", "--speed", "0", "--param", "pitch=0.1"]) == 0
     assert "filled from the model's hover defaults (not given): flap_amp = 1.5708, twist_amp = 0.785398" in capsys.readouterr().out
+
+
+def test_forces_climb_matches_api(capsys):
+    assert main(["forces", "--model", "m1", "--speed", "0.4", "--climb", "-0.3", *HOVER, "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    c = evaluate_cycle("m1", dict(pitch=1.5, flap_amp=1.5, twist_amp=0.7), 0.4, climb=-0.3)
+    assert out["climb"] == -0.3 and out["body_drag_z"] == pytest.approx(float(c.body_drag_z), abs=1e-15)
+    for k in ("Fx", "Fz", "P"):
+        assert out["mean"][k] == pytest.approx(float(getattr(c.mean, k)), abs=1e-15)
+    assert out["body_drag_z"] < 0  # sinking: the air comes from below, the drag pushes up
