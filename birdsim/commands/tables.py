@@ -18,6 +18,7 @@ from birdsim.io import check_output
 from birdsim.physics.kinematics import get_model
 from birdsim.tables.lookup import STATUS_NAMES, load_table, table_paths
 from birdsim.tables.smoothness import table_smoothness
+from birdsim.physics.units import reduced_bird
 from birdsim.commands.common import add_bird_arguments, bird_from_args
 
 FORCE_NOTE = "right wing + body drag (the dissertation's flapcost force), Fz < 0 is up"
@@ -110,7 +111,8 @@ def run_build(args: argparse.Namespace) -> int:
         if args.jobs is not None:
             raise BirdsimError(f"--jobs {args.jobs} with --dask {args.dask!r}; allowed: one of them (the cluster has its own workers)")
     grid = Grid.parse(args.grid, args.size, climb=args.climb)
-    bird = bird_from_args(args)
+    # an SI bird gets a table in table units: the table records the reduced bird
+    bird = reduced_bird(bird_from_args(args))
     _check_build_options(args)
     weights = CostWeights(power=args.power_weight, distance=args.distance)
     settings = BuildSettings(

@@ -34,6 +34,7 @@ from birdsim.report.fig_costs import fig_landscapes, fig_wrist_activity
 from birdsim.report.fig_cycle import fig_histories, fig_paths, fig_thrust, fig_wrist
 from birdsim.report.fig_sweeps import fig_sweeps
 from birdsim.report.fig_tables import fig_optimisers, fig_tables
+from birdsim.report.smoothness import fig_smoothness
 from birdsim.report.page import render_html
 from birdsim.report.records import FULL, QUICK, SMALL_DEMAND, Claim, Context, Entry, Resolution
 
@@ -78,6 +79,7 @@ FAMILIES: tuple[Family, ...] = (
         "8. Optimiser comparison and table-build time (Figs 28-31, Table 3, Fig 63)",
         fig_optimisers,
     ),
+    Family("smoothness", "9. Smoothness of the lookup tables (sec. 4.1)", fig_smoothness),
 )
 
 
