@@ -33,7 +33,7 @@ FLAG_NAMES: dict[str, dict[str, str]] = {
     "tables": {
         "model ": "--model ", "screen=": "--screen ", "starts=": "--starts ", "relax=": "--relax ",
         "reach_tol=": "--reach-tol ", "cost weight power=": "--power-weight ", "cost weight distance=": "--distance ",
-        "Fx=": "--Fx=", "Fz=": "--Fz=", "V=": "--V=", "path (json) ": "--out (json) ", "path ": "--out ",
+        "grid ": "--grid ", "Fx=": "--Fx=", "Fz=": "--Fz=", "V=": "--V=", "path (json) ": "--out (json) ", "path ": "--out ",
     },
     "render": {"model ": "--model ", "path ": "--out "},
     "report": {"out=": "--out ", "only=": "--only "},

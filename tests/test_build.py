@@ -424,7 +424,7 @@ def test_grid_with_a_climb_axis():
     assert g.climb[0] == -0.5 and g.climb[-1] == 0.5 and g.climb[3] == 0.0
     assert Grid.parse("climb=-0.2:0.2:3").climb == (-0.2, 0.0, 0.2)
     assert "climb" not in Grid.default().to_dict()  # level-flight digests are those of before
-    with pytest.raises(BirdsimError, match=r"--grid climb=\[0.1, 0.0\] is invalid"):
+    with pytest.raises(BirdsimError, match=r"grid climb=\[0.1, 0.0\] is invalid"):
         Grid.parse("climb=0.1|0")
 
 

@@ -144,9 +144,9 @@ def run_build(args: argparse.Namespace) -> int:
 
             with dask_executor(args.dask) as executor:
                 table = build(executor, f"dask {args.dask}")
-    except KeyboardInterrupt:
-        print(f"birdsim tables: finished parts kept in {ckpt}; run the same command again to resume", file=sys.stderr)
-        raise
+    except KeyboardInterrupt:  # one line, as every interrupted command (cli.main's exit status 130)
+        print(f"birdsim tables: interrupted; finished parts kept in {ckpt}; run the same command again to resume", file=sys.stderr)
+        return 130
     m = table.meta
     print(
         f"wrote {npz_path} and {json_path.name}: model {model.name}, grid {'x'.join(map(str, table.shape))}, "

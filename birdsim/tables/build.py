@@ -46,6 +46,7 @@ from typing import Any
 
 import numpy as np
 
+from birdsim.errors import BirdsimError
 from birdsim.physics.kinematics import get_model
 from birdsim.tables.checkpoints import Checkpoints
 from birdsim.tables.finish import demand_grid, final_check, finish_table, write_table
@@ -97,6 +98,8 @@ def build_table(
     model = get_model(cfg.model)
     g = cfg.grid
     t0 = time.perf_counter()
+    if jobs is not None and (isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 1):
+        raise BirdsimError(f"jobs={jobs!r} is invalid; allowed: an integer >= 1, or None (all cores)")
     ckpt = Checkpoints(Path(checkpoint_dir) if checkpoint_dir else None, cfg.digest(), cfg.stamp())
     if ckpt.discarded and notify is not None:
         notify(ckpt.discarded)
@@ -106,8 +109,9 @@ def build_table(
     if progress:
         from tqdm import tqdm
 
-        bar = tqdm(total=passes * ncells, unit="cell", desc=f"tables {cfg.model}", leave=False)
-    tick = (lambda k: bar.update(k)) if bar is not None else (lambda k: None)
+        # the bar counts cells (each continuation pass solves every cell once: a pass is 1/passes of a cell)
+        bar = tqdm(total=ncells, unit="cell", desc=f"tables {cfg.model}", leave=False, bar_format="{l_bar}{bar}| {n:.0f}/{total} cells [{elapsed}<{remaining}]")
+    tick = (lambda k: bar.update(k / passes)) if bar is not None else (lambda k: None)
     own = executor is None
     if own:
         jobs = jobs or os.cpu_count() or 1

@@ -51,11 +51,11 @@ class Grid:
         for a in self.axis_names:
             ax = getattr(self, a)
             if len(ax) < 2 or any(not np.isfinite(x) for x in ax) or any(b <= a_ for a_, b in zip(ax, ax[1:])):
-                raise BirdsimError(f"--grid {a}={list(ax)} is invalid; allowed: >= 2 finite increasing values")
+                raise BirdsimError(f"grid {a}={[float(x) for x in ax]} is invalid; allowed: >= 2 finite increasing values")
         if self.V[0] < 0:
-            raise BirdsimError(f"--grid V starts at {self.V[0]:g}; allowed: speeds >= 0")
+            raise BirdsimError(f"grid V starts at {self.V[0]:g}; allowed: speeds >= 0")
         if int(np.prod(self.shape)) > MAX_CELLS:
-            raise BirdsimError(f"--grid {'x'.join(map(str, self.shape))} has too many cells; allowed: at most {MAX_CELLS} cells")
+            raise BirdsimError(f"grid {'x'.join(map(str, self.shape))} has too many cells; allowed: at most {MAX_CELLS} cells")
 
     @classmethod
     def default(cls, size: int = 11) -> "Grid":
@@ -77,7 +77,7 @@ class Grid:
             name, sep, value = part.partition("=")
             name = name.strip()
             if not sep or name not in AXES + (CLIMB,):
-                raise BirdsimError(f"--grid {part!r} is malformed; allowed: Fx=LO:HI:COUNT, Fz=..., V=..., climb=... or NAME=A|B|C")
+                raise BirdsimError(f"grid {part!r} is malformed; allowed: Fx=LO:HI:COUNT, Fz=..., V=..., climb=... or NAME=A|B|C")
             try:
                 if ":" in value:
                     lo, hi, count = value.split(":")
@@ -88,7 +88,7 @@ class Grid:
                 else:
                     axes[name] = tuple(float(x) for x in value.split("|"))
             except ValueError:
-                raise BirdsimError(f"--grid {part!r} is malformed; allowed: {name}=LO:HI:COUNT (2 <= COUNT <= {MAX_NODES}) or {name}=A|B|C") from None
+                raise BirdsimError(f"grid {part!r} is malformed; allowed: {name}=LO:HI:COUNT (2 <= COUNT <= {MAX_NODES}) or {name}=A|B|C") from None
         return cls(**axes)
 
     @property
