@@ -1,0 +1,108 @@
+"""Inverse dynamics: from a path's acceleration to the table's force demand.
+
+Newton for the whole bird in the sagittal plane, reduced units (issue 9, item 3):
+``m a = F_aero,whole + m g`` with ``m`` the mass ratio ``mu = m / (rho s^2 c)`` and ``g``
+the reduced gravity ``g / (omega^2 s)`` (:func:`birdsim.physics.units.reduced_bird`).
+The whole bird's aerodynamic force is two mirrored wings plus the body drag ``D``; the
+table's force is the dissertation's, ONE (right) wing plus the body drag, in seed earth
+axes (X forward, Z down, Fz < 0 up)::
+
+    F_whole = 2 F_wing + D            F_table = F_wing + D_table
+
+``D`` follows the climb contract (docs/flight.md): ``1/2 rho Vt^2 A_b |sin(theta - gamma)|``
+opposite the velocity relative to the air ``(V, 0, -climb)``, ``gamma = atan2(climb, V)``;
+``D_table`` is the drag the table's cycles carry (climb 0: eq. 7 along X,
+``-1/2 rho V^2 sin(theta) A_b``). In level flight (climb 0) the two are equal and
+
+    Fx_table = (Fx_whole + D) / 2,      Fz_table = Fz_whole / 2,
+
+so unaccelerated level flight needs ``Fz_table = -w / 2`` (w: the weight in table units)
+and a whole-bird ``Fx = 0``. The table's ``V`` is the horizontal airspeed ``vx`` (no wind
+on a path).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from birdsim.flight.path import FlightPath
+from birdsim.physics.bird import Bird
+from birdsim.physics.units import reduced_bird
+
+
+def body_drag_earth(bird: Bird, V: Any, climb: Any, pitch: Any) -> tuple[np.ndarray, np.ndarray]:
+    """Body drag in seed earth axes (X forward, Z down) for airspeed ``(V, 0, -climb)``.
+
+    Args:
+        bird: the bird (its own units; reduced bird -> reduced force).
+        V: horizontal speed relative to the air [omega s], array-like.
+        climb: vertical speed relative to the air, positive up [omega s].
+        pitch: body pitch theta, nose up [rad].
+
+    Returns:
+        (Dx, Dz): ``1/2 rho Vt^2 A_b |sin(theta - gamma)|`` opposite the velocity. With
+        ``climb = 0`` Dx equals eq. 7 (``aero.body_drag_x``) and Dz = 0.
+    """
+    V, climb, pitch = (np.asarray(a, dtype=float) for a in (V, climb, pitch))
+    vt = np.hypot(V, climb)
+    gamma = np.arctan2(climb, V)
+    mag = 0.5 * bird.rho * vt * np.abs(np.sin(pitch - gamma)) * bird.body_drag_area  # |D| / Vt
+    return -mag * V, mag * climb
+
+
+def demand_from_acceleration(ax_up: Any, az_up: Any, vx: Any, vz: Any, bird: Bird, pitch: Any) -> tuple[np.ndarray, np.ndarray]:
+    """The table force (one wing + body drag, seed axes) that gives the bird an acceleration.
+
+    Args:
+        ax_up: acceleration forward [omega^2 s] (x forward, z up), array-like.
+        az_up: acceleration up [omega^2 s].
+        vx: horizontal speed relative to the air [omega s] (the table's V).
+        vz: vertical speed relative to the air, up [omega s] (the climb).
+        bird: the bird; reduced here (:func:`reduced_bird`), so the SI bird and its
+            reduced bird give the same answer. Its ``mass`` and ``gravity`` are used.
+        pitch: body pitch for the body drag [rad] (the table's, see :func:`path_demands`).
+
+    Returns:
+        (Fx_table, Fz_table) in table force units ``rho omega^2 s^3 c``; Fz < 0 is up.
+        Level, unaccelerated flight: ``Fz_table = -w / 2`` and a whole-bird Fx of 0.
+    """
+    rb = reduced_bird(bird)
+    ax, az, vx, vz = (np.asarray(a, dtype=float) for a in (ax_up, az_up, vx, vz))
+    fx_whole = rb.mass * ax  # seed X = world x
+    fz_whole = -rb.mass * (az + rb.gravity)  # seed Z = -world z; gravity pulls down
+    dx, dz = body_drag_earth(rb, vx, vz, pitch)
+    dx_table, _ = body_drag_earth(rb, vx, 0.0, pitch)  # the table's cycles fly level
+    wing_x, wing_z = 0.5 * (fx_whole - dx), 0.5 * (fz_whole - dz)
+    return wing_x + dx_table, wing_z
+
+
+def path_demands(path: FlightPath, bird: Bird, table: Any, t: Any) -> dict[str, np.ndarray]:
+    """The feed-forward schedule of a path: the table demands at reduced times ``t``.
+
+    The body drag needs the pitch, which the table gives for the demand: one fixed-point
+    step (the demand without body drag -> the table's pitch there -> the demand with the
+    drag at that pitch); lookups clip to the table's grid.
+
+    Args:
+        path: the flight path.
+        bird: the bird (reduced internally).
+        table: a LookupTable (``lookup_many``) whose parameters include ``pitch``.
+        t: reduced times (array-like, one wingbeat = 2 pi).
+
+    Returns:
+        Arrays of t's shape: ``Fx``, ``Fz`` (table force), ``V`` (= vx, the table's
+        speed), ``climb`` (= vz), ``pitch`` (the table's at the demand), and the path's
+        ``x``, ``z``, ``vx``, ``vz``, ``ax``, ``az``.
+    """
+    s = path.sample(t)
+    V, climb = s["vx"], s["vz"]
+    fx, fz = demand_from_acceleration(s["ax"], s["az"], V, climb, bird, 0.0)
+    pitch = table.lookup_many(Fx=fx, Fz=fz, V=np.maximum(V, 0.0), clip=True)["pitch"]
+    fx, fz = demand_from_acceleration(s["ax"], s["az"], V, climb, bird, pitch)
+    pitch = table.lookup_many(Fx=fx, Fz=fz, V=np.maximum(V, 0.0), clip=True)["pitch"]
+    return {"Fx": fx, "Fz": fz, "V": V, "climb": climb, "pitch": pitch, **s}
+
+
+__all__ = ["body_drag_earth", "demand_from_acceleration", "path_demands"]

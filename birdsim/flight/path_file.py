@@ -1,0 +1,126 @@
+"""Reading manoeuvre files: flight paths, and today's force-keyframe files as open-loop demands.
+
+A manoeuvre TOML file is a *path* when its ``[[keyframe]]`` tables give positions or
+speeds; it is a *force schedule* (:mod:`birdsim.flight.manoeuvre`, flown open loop) when
+they give ``Fx``/``Fz`` or when it has a ``[demands]`` table -- every file written for
+earlier versions keeps its meaning. A path file (times in wingbeats, lengths in semispans,
+x forward, z up, speeds in ``omega s``)::
+
+    name = "hop"                 # optional (default: the file stem)
+    description = ""             # optional
+    duration = 12                # optional (default: last keyframe + 1), wingbeats
+    perch = "start"              # "start", "end", "both" or "" (optional)
+    x0 = 0.0                     # speed form only: x at the first keyframe (optional)
+    [[keyframe]]                 # position form: t, x, z ...
+    t = 0
+    x = 6.0
+    z = 1.67
+    vx = 0.0                     # optional slopes (omega s): vx, vz; default automatic
+    regime = "take-off"          # optional overlay label
+    [[keyframe]]                 # ... or speed form: t, V, z (optional dV, vz)
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+from pathlib import Path
+from typing import Any
+
+from birdsim.flight.manoeuvre import MAX_BEATS, Manoeuvre, ManoeuvreError, load_manoeuvre
+from birdsim.flight.path import FlightPath, PathError, PathKeyframe
+from birdsim.flight.presets import PATH_PRESETS
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # pragma: no cover
+    import tomli as tomllib
+
+PATH_KEYS = ("t", "x", "V", "z", "vx", "vz", "dV", "regime")
+FORCE_KEYS = ("Fx", "Fz")
+
+
+def get_flight(name_or_path: str) -> FlightPath | Manoeuvre:
+    """A preset path by name, or a manoeuvre file (a path, or a force schedule).
+
+    Raises:
+        ManoeuvreError: unknown name, unreadable or invalid file (one line).
+    """
+    if name_or_path in PATH_PRESETS:
+        return PATH_PRESETS[name_or_path]
+    p = Path(name_or_path)
+    if p.suffix.lower() == ".toml" or p.exists():
+        return load_flight(p)
+    raise ManoeuvreError(f"manoeuvre {name_or_path!r} is unknown; allowed: {', '.join(PATH_PRESETS)} or a .toml file")
+
+
+def load_flight(path: str | Path) -> FlightPath | Manoeuvre:
+    """Read a manoeuvre file: a :class:`FlightPath`, or a force-keyframe :class:`Manoeuvre`.
+
+    Raises:
+        ManoeuvreError: the file is missing, not TOML, or invalid (one line naming the key).
+        PathError: the path goes below the floor or through the perch (one line naming the keyframe).
+    """
+    p = Path(path)
+    arg = f"manoeuvre file {str(p)!r}"
+    try:
+        data = tomllib.loads(p.read_text())
+    except FileNotFoundError:
+        raise ManoeuvreError(f"{arg} does not exist; allowed: {', '.join(PATH_PRESETS)} or a readable .toml file") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise ManoeuvreError(f"{arg} cannot be read: {exc}") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise ManoeuvreError(f"{arg} is not valid TOML: {exc}") from None
+    rows = data.get("keyframe")
+    if "demands" in data or not isinstance(rows, list) or any(isinstance(r, dict) and any(k in r for k in FORCE_KEYS) for r in rows):
+        return load_manoeuvre(p)
+    return _path_from_dict(arg, p.stem, data)
+
+
+def _path_from_dict(arg: str, stem: str, data: dict[str, Any]) -> FlightPath:
+    known = {"name", "description", "duration", "perch", "x0", "keyframe"}
+    unknown = sorted(set(data) - known)
+    if unknown:
+        raise ManoeuvreError(f"{arg}: key {unknown[0]!r} is unknown; allowed: {', '.join(sorted(known))}")
+    rows = data["keyframe"]
+    if not rows:
+        raise ManoeuvreError(f"{arg}: keyframe must be an array of tables ([[keyframe]]) with at least one entry")
+    keyframes = []
+    for i, row in enumerate(rows, 1):
+        where = f"{arg}: keyframe {i}"
+        if not isinstance(row, dict):
+            raise ManoeuvreError(f"{where} is not a table")
+        bad = sorted(set(row) - set(PATH_KEYS))
+        if bad:
+            raise ManoeuvreError(f"{where}: key {bad[0]!r} is unknown; allowed: {', '.join(PATH_KEYS)} (or Fx, Fz, V for a force schedule)")
+        for key in ("t", "z"):
+            if key not in row:
+                raise ManoeuvreError(f"{where}: {key} is missing; required: t, z and one of x or V")
+        vals = {k: _number(f"{where}: {k}", row[k]) for k in PATH_KEYS if k != "regime" and k in row}
+        regime = row.get("regime", "")
+        if not isinstance(regime, str):
+            raise ManoeuvreError(f"{where}: regime={regime!r} is not a string")
+        keyframes.append(PathKeyframe(regime=regime, **vals))
+    last = keyframes[-1].t
+    duration = _number(f"{arg}: duration", data["duration"]) if "duration" in data else min(last + 1.0, MAX_BEATS)
+    name = data.get("name", stem)
+    if not isinstance(name, str) or not name:
+        raise ManoeuvreError(f"{arg}: name={name!r}; allowed: a non-empty string")
+    perch = data.get("perch", "")
+    if perch not in ("", "start", "end", "both"):
+        raise ManoeuvreError(f"{arg}: perch={perch!r}; allowed: start, end, both or empty")
+    x0 = _number(f"{arg}: x0", data["x0"]) if "x0" in data else 0.0
+    description = data.get("description", "")
+    try:
+        return FlightPath(name, duration, perch in ("start", "both"), perch in ("end", "both"), tuple(keyframes), str(description), x0)
+    except PathError as exc:
+        raise PathError(f"{arg}: {str(exc)}") from None
+
+
+def _number(arg: str, raw: Any) -> float:
+    if isinstance(raw, bool) or not isinstance(raw, (int, float)) or not math.isfinite(raw):
+        raise ManoeuvreError(f"{arg}={raw!r} is not a finite number")
+    return float(raw)
+
+
+__all__ = ["get_flight", "load_flight"]
