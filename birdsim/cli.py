@@ -16,6 +16,7 @@ COMMAND_MODULES = (
     "birdsim.commands.tables",
     "birdsim.commands.report",
     "birdsim.commands.render",
+    "birdsim.commands.fly",
     "birdsim.commands.crosscheck",
 )
 

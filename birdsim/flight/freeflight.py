@@ -232,22 +232,24 @@ def fly(
             wind = wind_at(gusts, t / TWO_PI, speed)
             start = len(record)
             fb.step_many(pres, wind, record, every)
-            for j, rec in enumerate(record[start:]):
-                ts, qpos, qvel = rec[0], rec[1], rec[2]
-                ref = reference.state(ts)
+            new = record[start:]
+            refs = sample_reference(reference, np.array([r[0] for r in new]))
+            for j, rec in enumerate(new):
+                qpos, qvel = rec[1], rec[2]
                 window.add(
-                    np.array([ref.x - qpos[0], ref.z - qpos[2]]),
-                    np.array([ref.vx - qvel[0], ref.vz - qvel[2]]),
+                    np.array([refs["x"][j] - qpos[0], refs["z"][j] - qpos[2]]),
+                    np.array([refs["vx"][j] - qvel[0], refs["vz"][j] - qvel[2]]),
                     float(qvel[0]),
                 )
-                rows["x_ref"].append(ref.x)
-                rows["z_ref"].append(ref.z)
-                rows["Fx_demand"].append(cmd.Fx)
-                rows["Fz_demand"].append(cmd.Fz)
                 rows["V_air"].append(float(np.hypot(qvel[0] - wind[0], qvel[2] - wind[2])))
-                rows["saturated"].append(cmd.saturated)
                 rows["params"].append(pres.params[j * every])
                 rows["pitch"].append(pres.pitch[j * every])
+            n_new = len(new)
+            rows["x_ref"].extend(refs["x"].tolist())
+            rows["z_ref"].extend(refs["z"].tolist())
+            rows["Fx_demand"].extend([cmd.Fx] * n_new)
+            rows["Fz_demand"].extend([cmd.Fz] * n_new)
+            rows["saturated"].extend([cmd.saturated] * n_new)
             if progress is not None:
                 progress((k + 1) / per_beat_ctl)
         projection = fb.projection_max
@@ -273,6 +275,18 @@ def fly(
         "qvel": qvel,
     }
     return FlightResult(arrays, bird, model, names, gains, open_loop or demands_only, projection)
+
+
+def sample_reference(reference: Any, t: np.ndarray) -> dict[str, np.ndarray]:
+    """x, z, vx, vz, ax, az of ``reference`` at reduced times ``t`` (vectorised when the
+    reference has ``sample``, as FlightPath does)."""
+    t = np.asarray(t, dtype=float)
+    fn = getattr(reference, "sample", None)
+    if fn is not None:
+        s = fn(t)
+        return {k: np.broadcast_to(np.asarray(s[k], dtype=float), t.shape) for k in ("x", "z", "vx", "vz", "ax", "az")}
+    states = [reference.state(float(ti)) for ti in t]
+    return {k: np.array([getattr(st, k) for st in states], dtype=float) for k in ("x", "z", "vx", "vz", "ax", "az")}
 
 
 def _trim(fb: FreeBird, reference: Any, params: np.ndarray, pos0: np.ndarray, vel0: np.ndarray, config: SimConfig,
@@ -301,8 +315,10 @@ def _trim(fb: FreeBird, reference: Any, params: np.ndarray, pos0: np.ndarray, ve
     t = np.array([r[0] for r in rec])
     pos = np.array([r[1][:3] for r in rec])
     vel = np.array([r[2][:3] for r in rec])
-    ref_pos = np.array([[s.x, 0.0, s.z] for s in map(reference.state, t)])
-    ref_vel = np.array([[s.vx, 0.0, s.vz] for s in map(reference.state, t)])
+    ref = sample_reference(reference, t)
+    zero = np.zeros_like(t)
+    ref_pos = np.stack([ref["x"], zero, ref["z"]], axis=1)
+    ref_vel = np.stack([ref["vx"], zero, ref["vz"]], axis=1)
     dv = (vel - ref_vel).mean(axis=0)
     # with the start velocity lowered by dv, the positions lose dv * t
     dx = (pos - ref_pos - dv[None, :] * t[:, None]).mean(axis=0)
@@ -312,7 +328,7 @@ def _trim(fb: FreeBird, reference: Any, params: np.ndarray, pos0: np.ndarray, ve
     e_pos = ref_pos - (pos - dx[None, :] - dv[None, :] * t[:, None])
     e_vel = ref_vel - (vel - dv[None, :])
     history = [(e_pos[k, [0, 2]], e_vel[k, [0, 2]], float(vel[k, 0] - dv[0])) for k in range(len(t))]
-    a_ref = np.array([[s.ax, s.az] for s in map(reference.state, t)]).mean(axis=0)
+    a_ref = np.array([ref["ax"].mean(), ref["az"].mean()])
     return pos0 - dx, vel0 - dv, history, a_ref - a_flown[[0, 2]]
 
 
@@ -320,4 +336,4 @@ def _identity_if(flag: bool) -> Any:
     return (lambda *a, **k: (0.0, 0.0)) if flag else None
 
 
-__all__ = ["DemandSchedule", "FlightResult", "Gust", "GustError", "RefState", "fly", "parse_gust", "wind_at"]
+__all__ = ["DemandSchedule", "FlightResult", "Gust", "GustError", "RefState", "fly", "sample_reference", "parse_gust", "wind_at"]

@@ -47,8 +47,6 @@ from birdsim.physics.bird import Bird
 from birdsim.physics.kinematics import get_model
 from birdsim.physics.units import reduced_bird
 
-#: Free DOFs (root translation) and prescribed DOFs (root rotation, every wing joint).
-FREE = np.arange(3)
 
 
 class FlightError(BirdsimError):
@@ -101,11 +99,14 @@ class FreeBird:
         self.h = float(m.opt.timestep)
         self.torso = m.body("torso").id
         self.total_mass = float(m.body_subtreemass[self.torso])
+        mujoco.mj_forward(m, self.d)
+        check = np.zeros((m.nv, m.nv))
+        mujoco.mj_fullM(m, self.d, check)
+        if not np.allclose(check[:3, :3], self.total_mass * np.eye(3), rtol=1e-12, atol=0):
+            raise BirdsimError("the root's translational mass block is not (mass) I; allowed: a model built by birdsim.mujoco.model")
         self.schedule = WingbeatSchedule(m, self.kin, self.red, initial_params, smoothing=config.smoothing_beats * self.red.period)
         self.cb = AeroCallback(m, self.kin.name, self.red)
         self.cb.enabled = aero
-        self.prescribed_q = np.arange(3, m.nq)
-        self.prescribed_v = np.arange(3, m.nv)
         self.time = 0.0
         self.P = np.zeros(3)  # whole-bird linear momentum (world)
         self.X = np.zeros(3)  # whole-bird centre of mass (world)
@@ -154,38 +155,42 @@ class FreeBird:
         m, d, h = self.m, self.d, self.h
         m.opt.wind[:] = wind
         M = self._M
-        qp, qv = self.prescribed_q, self.prescribed_v
         mass = self.total_mass
         grav = np.array(m.opt.gravity)
+        qpos, qvel, qfrc_applied, qfrc_passive, qfrc_bias, com = d.qpos, d.qvel, d.qfrc_applied, d.qfrc_passive, d.qfrc_bias, d.subtree_com
+        torso = self.torso
         a = np.empty(m.nv)
+        step1, step2, full_m = mujoco.mj_step1, mujoco.mj_step2, mujoco.mj_fullM
+        proj = self.projection_max
         for k in range(pres.qpos.shape[0]):
-            d.qpos[qp] = pres.qpos[k, qp]
-            d.qvel[qv] = pres.qvel[k, qv]
-            mujoco.mj_step1(m, d)
-            mujoco.mj_fullM(m, d, M)
+            qpos[3:] = pres.qpos[k, 3:]
+            qvel[3:] = pres.qvel[k, 3:]
+            step1(m, d)
+            full_m(m, d, M)
             # momentum projection (translation only: M, bias and the aero forces do not
             # depend on where the bird is; its velocity changes by O(h^2))
-            dx = self.X - d.subtree_com[self.torso]
-            dv = (self.P - M[:3] @ d.qvel) / mass
-            d.qpos[:3] += dx
-            d.qvel[:3] += dv
-            self.projection_max = max(self.projection_max, float(np.max(np.abs(dx))))
-            f = d.qfrc_passive - d.qfrc_bias
+            dx = self.X - com[torso]
+            qpos[:3] += dx
+            qvel[:3] += (self.P - M[:3] @ qvel) / mass
+            proj = max(proj, abs(dx[0]), abs(dx[1]), abs(dx[2]))
+            f = qfrc_passive - qfrc_bias
             a[3:] = pres.qacc[k, 3:]
-            a[:3] = np.linalg.solve(M[:3, :3], f[:3] - M[:3, 3:] @ a[3:])
+            # the translational block of M is (whole mass) I for a free root
+            a[:3] = (f[:3] - M[:3, 3:] @ a[3:]) / mass
             tau = M @ a - f
             tau[:3] = 0.0
-            d.qfrc_applied[:] = tau
-            f_ext = d.qfrc_passive[:3] + mass * grav
+            qfrc_applied[:] = tau
+            f_ext = qfrc_passive[:3] + mass * grav
             if record is not None and k % every == 0:
-                power = float(tau[6:] @ d.qvel[6:])  # both wings' joints, on the air and the wings
-                record.append((self.time, d.qpos.copy(), d.qvel.copy(), -float(tau[4]), f_ext.copy(), power))
-            mujoco.mj_step2(m, d)
+                power = float(tau[6:] @ qvel[6:])  # both wings' joints, on the air and the wings
+                record.append((self.time, qpos.copy(), qvel.copy(), -float(tau[4]), f_ext, power))
+            step2(m, d)
             self.P = self.P + h * f_ext
             self.X = self.X + h * self.P / mass
             self.time += h
-            if not np.isfinite(d.qpos[0]) or not np.isfinite(d.qvel[0]) or not np.isfinite(d.qvel[2]):
-                raise FlightError(f"the simulation diverged at t={self.time:.3f} (reduced time): non-finite state")
+        self.projection_max = proj
+        if not (np.all(np.isfinite(qpos)) and np.all(np.isfinite(qvel))):
+            raise FlightError(f"the simulation diverged at t={self.time:.3f} (reduced time): non-finite state")
 
     def com(self) -> tuple[np.ndarray, np.ndarray]:
         """Centre of mass and its velocity of the whole bird at the current state
