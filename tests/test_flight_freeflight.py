@@ -114,3 +114,19 @@ def test_gusts_parse_and_add_up():
     for bad in ("1:2:3", "a:1:0:0", "1:1:nan:0", "-1:1:0:0", "1:2:3:4:5"):
         with pytest.raises(GustError):
             parse_gust(bad)
+
+
+@pytest.mark.parametrize("vz", [0.05, -0.05])
+def test_steady_climb_uses_the_table_turned_into_the_air_path(table, vz):
+    """Climbing at gamma = atan(vz / V) is level flight turned by gamma: tracked to the
+    cruise target with the body pitched by gamma (without the turn the same flight's
+    RMS error was ~0.15, measured)."""
+    span = 8 * TWO_PI
+    path = FlightPath("climb", 8, False, False, (PathKeyframe(0, 4.0, x=0.0, vx=V, vz=vz), PathKeyframe(8, 4.0 + vz * span, x=V * span, vx=V, vz=vz)))
+    r = fly(path, table, BIRD, "m4")
+    tb, ex, ez = errors(r)
+    assert np.sqrt(np.mean((ex**2 + ez**2)[tb >= 2])) <= 0.03
+    assert not r.arrays["saturated"].any()
+    gamma = math.atan2(vz, V)
+    # cruise pitch of this table at V = 0.9 is ~0: the body follows the air path
+    assert abs(np.median(r.arrays["pitch"]) - gamma) < 0.02

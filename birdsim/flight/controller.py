@@ -41,6 +41,9 @@ TIME_CONSTANT_BEATS = 2.0
 #: A demand counts as reachable when the table's interpolated achieved force is within
 #: this of it (table force units; the tables' own "ok" tolerance).
 REACH_TOLERANCE = 0.01
+#: Airspeed (semispan omega) above which the table is turned into the air path's
+#: direction in full (see Controller.lookup); below, the turn fades out quadratically.
+CLIMB_SPEED = 0.2
 #: A lookup airspeed clipped by more than this (semispan omega) counts as saturated.
 V_CLIP_TOLERANCE = 0.05
 
@@ -162,25 +165,47 @@ class Controller:
         self.hi = {k: float(np.max(axes[k])) for k in ("Fx", "Fz", "V")}
 
     def command(self, ref: Any, est: tuple[np.ndarray, np.ndarray, float] | None, integral: np.ndarray, pitch: float,
-                wind_x: float = 0.0) -> Command:
-        """The wingbeat for reference state ``ref`` (PathState) and the error estimate
-        ``est`` (ErrorWindow.estimate(); None = feed-forward only)."""
+                wind: tuple[float, float] = (0.0, 0.0)) -> Command:
+        """The wingbeat for reference state ``ref`` (PathState), the error estimate
+        ``est`` (ErrorWindow.estimate(); None = feed-forward only) and the wind
+        ``(wx, wz)`` (reduced, world x forward, z up)."""
         ax, az = float(ref.ax), float(ref.az)
         if est is not None and not self.open_loop:
             ep, ev, vx = est
             g = self.gains
             ax += g.kp * ep[0] + g.kd * ev[0] + g.ki * integral[0]
             az += g.kp * ep[1] + g.kd * ev[1] + g.ki * integral[1]
-            v_air = vx - wind_x
             vz = float(ref.vz) - float(ev[1])
         else:
-            v_air = float(ref.vx) - wind_x
-            vz = float(ref.vz)
-        return self.lookup(ax, az, v_air, vz, pitch)
+            vx, vz = float(ref.vx), float(ref.vz)
+        return self.lookup(ax, az, vx - wind[0], vz - wind[1], pitch)
 
-    def lookup(self, ax: float, az: float, v_air: float, vz: float, pitch: float) -> Command:
-        fx, fz = self.to_table(ax, az, v_air, vz, self.bird, pitch)
-        return self.lookup_table_force(fx, fz, v_air, (ax, az))
+    def lookup(self, ax: float, az: float, vx_air: float, vz_air: float, pitch: float) -> Command:
+        """The wingbeat that gives the whole bird the acceleration (ax, az) (world, z up)
+        while it moves through the air at (vx_air, vz_air).
+
+        Tables are built for level flight.  Flying along an air path inclined by
+        ``gamma = atan2(vz_air, vx_air)`` is level flight turned by gamma: the wings see
+        the same flow when the body pitch is the table's plus gamma.  So the needed
+        aerodynamic force ``m (a - g)`` is turned into the air-path frame, looked up at
+        the airspeed, and gamma is added to the table's pitch.  Below
+        :data:`CLIMB_SPEED` the turn fades out (at hover the flow direction means nothing).
+        """
+        m, grav = self.bird.mass, self.bird.gravity
+        speed = math.hypot(vx_air, vz_air)
+        gamma = math.atan2(vz_air, vx_air) if speed > 0 else 0.0
+        gamma *= min(1.0, (speed / CLIMB_SPEED) ** 2)
+        if vx_air < 0:  # flying backwards through the air: no turn (the table has V >= 0)
+            gamma = 0.0
+        f_x, f_z = m * ax, m * (az + grav)  # aerodynamic force needed, world
+        c, s = math.cos(gamma), math.sin(gamma)
+        w_x, w_z = c * f_x + s * f_z, -s * f_x + c * f_z  # in the air-path frame
+        v_table = math.hypot(vx_air, vz_air) if gamma != 0.0 else vx_air
+        fx, fz = self.to_table(w_x / m, w_z / m - grav, v_table, 0.0, self.bird, pitch - gamma)
+        cmd = self.lookup_table_force(float(fx), float(fz), v_table, (ax, az))
+        if gamma != 0.0 and "pitch" in self.names:
+            cmd.params[self.names.index("pitch")] += gamma
+        return cmd
 
     def lookup_table_force(self, fx: float, fz: float, v_air: float, a_cmd: tuple[float, float] = (0.0, 0.0)) -> Command:
         """The table's wingbeat for a table-force demand (clipped; saturated flag)."""

@@ -181,12 +181,11 @@ def fly(
     n_ctl = int(math.ceil(beats * per_beat_ctl - 1e-9))
 
     def command(t: float, est: Any, integral: np.ndarray, pitch: float) -> Any:
-        wind_x = float(wind_at(gusts, t / TWO_PI, speed)[0])
+        w = wind_at(gusts, t / TWO_PI, speed)
         if demands_only:
             fx, fz, v = reference.demands(t)
-            c = ctl.lookup_table_force(fx, fz, v - wind_x)
-            return c
-        return ctl.command(reference.state(t), est, integral, pitch, wind_x)
+            return ctl.lookup_table_force(fx, fz, v - float(w[0]))
+        return ctl.command(reference.state(t), est, integral, pitch, (float(w[0]), float(w[2])))
 
     ref0 = reference.state(0.0)
     pitch0 = 0.0
