@@ -122,3 +122,54 @@ def test_zero_span_panel_compiles(model, fraction):
 def test_unknown_model_is_one_clear_error():
     with pytest.raises(UnknownModelError, match="model 'm9' is unknown; allowed: base"):
         build_model("m9")
+
+
+# ---- the visual bird changes nothing physical ----------------------------------------
+
+
+@pytest.mark.parametrize("name", ["base", "m4"])
+def test_visual_geoms_change_no_dynamics(name):
+    """The same model with and without the visual bird: identical masses and inertias,
+    and identical mj_step / mj_inverse results under the aero callback (to 1e-12)."""
+    from birdsim.mujoco.callback import aero_forces
+    from birdsim.mujoco.visual import VISUAL_GROUP
+
+    bird = Bird(gravity=9.81)
+    with_vis, without = build_model(name, bird), build_model(name, bird, visuals=False)
+    assert with_vis.ngeom > without.ngeom + 20  # the visual bird is there
+    torso = with_vis.body("torso").id
+    vis = np.flatnonzero((with_vis.geom_group == VISUAL_GROUP) & (with_vis.body_rootid[with_vis.geom_bodyid] == torso))
+    assert len(vis) == with_vis.ngeom - without.ngeom
+    assert np.all(with_vis.geom_contype[vis] == 0) and np.all(with_vis.geom_conaffinity[vis] == 0)
+    for attr in ("body_mass", "body_inertia", "body_ipos", "body_iquat", "body_pos", "jnt_axis", "dof_armature", "site_pos"):
+        np.testing.assert_array_equal(getattr(with_vis, attr), getattr(without, attr), err_msg=attr)
+    results = []
+    for m in (with_vis, without):
+        m.opt.wind[:] = (-0.7, 0.0, 0.0)
+        d = mujoco.MjData(m)
+        mujoco.mj_resetDataKeyframe(m, d, m.key("rest").id)
+        set_pose(m, d, {"flap": 0.3, "twist": -0.2, "heave": 0.05, "wrist_flap": 0.1}, {"flap": 1.0, "twist": 0.5}, pitch=0.2)
+        with aero_forces(m, name, bird):
+            mujoco.mj_inverse(m, d)
+            inverse = d.qfrc_inverse.copy()
+            for _ in range(200):
+                mujoco.mj_step(m, d)
+            results.append((inverse, d.qpos.copy(), d.qvel.copy(), d.qacc.copy(), d.qfrc_passive.copy()))
+    for a, b in zip(*results):
+        np.testing.assert_allclose(a, b, rtol=0, atol=1e-12)
+    assert np.abs(results[0][4]).max() > 1e-3  # the aero forces were really on
+
+
+def test_visual_geoms_change_no_crosscheck_figure(monkeypatch):
+    """The cross-check's every number is the same with and without the visual bird."""
+    import functools
+
+    from birdsim.mujoco import crosscheck as cc
+
+    params = {"pitch": 0.1, "flap_amp": 0.6, "twist_amp": 0.3, "stroke_plane": 0.2, "wrist_amp": 0.3, "wrist_bias": 0.0, "wrist_lag": 0.2}
+    a = cc.crosscheck("m4", params, 0.8, samples=32)
+    monkeypatch.setattr(cc, "build_model", functools.partial(build_model, visuals=False))
+    b = cc.crosscheck("m4", params, 0.8, samples=32)
+    for field in ("analytic_seed", "inverse_seed", "inertial_residual_seed", "forward_seed", "inverse_history_seed"):
+        np.testing.assert_allclose(getattr(a, field), getattr(b, field), rtol=0, atol=1e-12, err_msg=field)
+    assert abs(a.inverse_power - b.inverse_power) <= 1e-12

@@ -43,6 +43,8 @@ import numpy as np
 from birdsim.physics.bird import Bird
 from birdsim.errors import BirdsimError
 from birdsim.physics.kinematics import get_model
+from birdsim.mujoco.plumage import plumage_for
+from birdsim.mujoco.visual import add_body_dress, add_materials, add_panel_dress, add_visual_default
 
 #: Simulation steps per wingbeat: ``opt.timestep = bird.period / STEPS_PER_WINGBEAT``.
 STEPS_PER_WINGBEAT = 512
@@ -182,8 +184,12 @@ CAMERAS = {
 }
 
 
-def _add_bird(spec: mujoco.MjSpec, model_name: str, bird: Bird, body_pitch: float) -> None:
+def _add_bird(spec: mujoco.MjSpec, model_name: str, bird: Bird, body_pitch: float, visuals: bool = True) -> None:
     km = get_model(model_name)
+    plumage = plumage_for(bird.name)
+    if visuals:
+        add_visual_default(spec)
+        add_materials(spec, plumage)
     panels = bird.panels(model_name)
     # geometry of the two MuJoCo panels: m4 uses the bird's arm and hand; the
     # single-panel models draw their one panel split at the same wrist (kept straight)
@@ -213,13 +219,15 @@ def _add_bird(spec: mujoco.MjSpec, model_name: str, bird: Bird, body_pitch: floa
         name="tail", type=mujoco.mjtGeom.mjGEOM_BOX, size=[0.22 * s, 0.14 * s, 0.008 * s], pos=[-0.7 * s, 0, 0.02 * s], mass=0.0
     )
     torso.add_site(name="torso_cp", default=spec.find_default("cp"), pos=[0, 0, 0])
+    if visuals:
+        add_body_dress(spec, torso, s)
     for name, pos in CAMERAS.items():
         torso.add_camera(name=name, pos=pos * s, quat=_camera_quat(pos), mode=mujoco.mjtCamLight.mjCAMLIGHT_TRACKCOM)
 
     panel_cls = spec.find_default("panel")
     cp_cls = spec.find_default("cp")
 
-    def panel(body, name: str, span: float, chord: float, sign: float) -> None:
+    def panel(body, name: str, span: float, chord: float, sign: float, kind: str) -> None:
         """Box geom of span x chord along the body's y axis, with its mass and inertia."""
         size = np.array([chord / 2, span / 2, PANEL_THICKNESS * chord / 2])
         body.explicitinertial = True
@@ -230,19 +238,21 @@ def _add_bird(spec: mujoco.MjSpec, model_name: str, bird: Bird, body_pitch: floa
         # which the Bird allows) keeps its named geom as an invisible sliver
         drawn = np.array([size[0], max(size[1], ZERO_SPAN_HALF * chord), size[2]])
         body.add_geom(name=name, default=panel_cls, size=drawn, pos=[0.0, sign * span / 2, 0.0])
+        if visuals:  # the bird's planform over the panel: same span and area, no mass
+            add_panel_dress(spec, body, f"vis_{name.removesuffix('_panel')}", kind, span, chord, sign, plumage.wing_bars)
 
     for side in SIDES:
         sg = span_sign(side)
         arm = torso.add_body(name=f"{side}_arm")
         arm.add_joint(name=f"{side}_heave", type=mujoco.mjtJoint.mjJNT_SLIDE, axis=slide_axis(side, "z"))
         arm.add_joint(name=f"{side}_shoulder", type=mujoco.mjtJoint.mjJNT_BALL)
-        panel(arm, f"{side}_arm_panel", arm_span, arm_chord, sg)
+        panel(arm, f"{side}_arm_panel", arm_span, arm_chord, sg, "arm")
         arm.add_site(name=f"{side}_cp_wing", default=cp_cls, pos=[0.0, sg * bird.cp_span_fraction * s, 0.0])
         arm.add_site(name=f"{side}_cp_arm", default=cp_cls, pos=[0.0, sg * bird.cp_span_fraction * arm_span, 0.0])
         hand = arm.add_body(name=f"{side}_hand", pos=[0.0, sg * arm_span, 0.0])
         hand.add_joint(name=f"{side}_wrist_flap", type=mujoco.mjtJoint.mjJNT_HINGE, axis=hinge_axis(side, "x"))
         hand.add_joint(name=f"{side}_wrist_twist", type=mujoco.mjtJoint.mjJNT_HINGE, axis=hinge_axis(side, "y"))
-        panel(hand, f"{side}_hand_panel", hand_span, hand_chord, sg)
+        panel(hand, f"{side}_hand_panel", hand_span, hand_chord, sg, "hand")
         hand.add_site(name=f"{side}_cp_hand", default=cp_cls, pos=[0.0, sg * bird.cp_span_fraction * hand_span, 0.0])
 
     # hold the torso to the world where it was built (used by the cross-check)
@@ -268,18 +278,53 @@ def _add_options(spec: mujoco.MjSpec, bird: Bird) -> None:
     spec.visual.global_.offwidth, spec.visual.global_.offheight = OFFSCREEN
 
 
+#: Side of one ground checker square, in semispans (so that speed reads off the ground).
+GROUND_SPACING = 1.0
+
+
 def _add_arena(spec: mujoco.MjSpec, bird: Bird) -> None:
+    """Floor (checker of :data:`GROUND_SPACING` semispans), sky gradient, sun, perch
+    (a post and a branch with twigs), overview camera.  Textures and materials are for
+    the eye only; the floor and perch geoms are the collision geometry."""
     s = bird.semispan
     arena = spec.find_default("arena")
     world = spec.worldbody
-    world.add_light(name="sun", pos=[0, 0, 10 * s], dir=[0.3, 0.2, -1.0], type=mujoco.mjtLightType.mjLIGHT_DIRECTIONAL)
-    world.add_geom(name="floor", default=arena, type=mujoco.mjtGeom.mjGEOM_PLANE, size=[50 * s, 50 * s, 0.1], rgba=[0.35, 0.45, 0.35, 1])
+    tex = mujoco.mjtTexture
+    spec.add_texture(name="sky", type=tex.mjTEXTURE_SKYBOX, builtin=mujoco.mjtBuiltin.mjBUILTIN_GRADIENT,
+                     rgb1=[0.36, 0.56, 0.84], rgb2=[0.86, 0.91, 0.96], width=256, height=1536)
+    spec.add_texture(name="ground", type=tex.mjTEXTURE_2D, builtin=mujoco.mjtBuiltin.mjBUILTIN_CHECKER,
+                     rgb1=[0.55, 0.66, 0.42], rgb2=[0.47, 0.59, 0.36], mark=mujoco.mjtMark.mjMARK_EDGE,
+                     markrgb=[0.40, 0.50, 0.30], width=256, height=256)
+    spec.add_texture(name="bark", type=tex.mjTEXTURE_2D, builtin=mujoco.mjtBuiltin.mjBUILTIN_FLAT,
+                     rgb1=[0.42, 0.31, 0.21], rgb2=[0.42, 0.31, 0.21], mark=mujoco.mjtMark.mjMARK_RANDOM,
+                     markrgb=[0.25, 0.18, 0.12], random=0.25, width=64, height=64)
+    ground = spec.add_material(name="ground", texuniform=True, texrepeat=[1.0 / (2.0 * GROUND_SPACING * s)] * 2, specular=0.05, shininess=0.05)
+    ground.textures[mujoco.mjtTextureRole.mjTEXROLE_RGB] = "ground"
+    bark = spec.add_material(name="bark", texrepeat=[2.0, 2.0], specular=0.05, shininess=0.05)
+    bark.textures[mujoco.mjtTextureRole.mjTEXROLE_RGB] = "bark"
+    spec.visual.headlight.ambient = [0.35, 0.35, 0.35]
+    spec.visual.headlight.diffuse = [0.35, 0.35, 0.35]
+    spec.visual.headlight.specular = [0.05, 0.05, 0.05]
+    spec.visual.map.haze = 0.35
+    world.add_light(name="sun", pos=[0, 0, 10 * s], dir=[0.3, 0.2, -1.0], type=mujoco.mjtLightType.mjLIGHT_DIRECTIONAL,
+                    diffuse=[0.65, 0.63, 0.58], specular=[0.2, 0.2, 0.2], castshadow=True)
+    world.add_geom(name="floor", default=arena, type=mujoco.mjtGeom.mjGEOM_PLANE, size=[50 * s, 50 * s, 0.1], rgba=[1, 1, 1, 1], material="ground")
     perch = world.add_body(name="perch", pos=[6.0 * s, 0.0, 0.0], childclass="arena")
-    perch.add_geom(name="perch_post", type=mujoco.mjtGeom.mjGEOM_CYLINDER, size=[0.05 * s, 0.75 * s, 0], pos=[0, 0, 0.75 * s], rgba=[0.4, 0.3, 0.2, 1])
+    perch.add_geom(name="perch_post", type=mujoco.mjtGeom.mjGEOM_CYLINDER, size=[0.05 * s, 0.75 * s, 0], pos=[0, 0, 0.75 * s], rgba=[0.4, 0.3, 0.2, 1], material="bark")
     perch.add_geom(
         name="perch_bar", type=mujoco.mjtGeom.mjGEOM_CAPSULE, size=[0.04 * s, 0.6 * s, 0],
-        pos=[0, 0, 1.5 * s], quat=[math.sqrt(0.5), math.sqrt(0.5), 0, 0], rgba=[0.4, 0.3, 0.2, 1],
+        pos=[0, 0, 1.5 * s], quat=[math.sqrt(0.5), math.sqrt(0.5), 0, 0], rgba=[0.4, 0.3, 0.2, 1], material="bark",
     )
+    # for the eye only: a flared foot, a knot and twigs off the branch (no contacts, no mass)
+    decor = dict(contype=0, conaffinity=0, group=2, mass=0.0, material="bark", rgba=[0.4, 0.3, 0.2, 1])
+    perch.add_geom(name="perch_foot", type=mujoco.mjtGeom.mjGEOM_ELLIPSOID, size=[0.11 * s, 0.11 * s, 0.08 * s], pos=[0, 0, 0], **decor)
+    perch.add_geom(name="perch_knot", type=mujoco.mjtGeom.mjGEOM_SPHERE, size=[0.065 * s, 0, 0], pos=[0, 0, 1.5 * s], **decor)
+    for k, (y, angle, length) in enumerate(((0.45, 0.7, 0.28), (-0.35, 2.3, 0.22), (0.1, 1.2, 0.18))):
+        half = 0.5 * length * s
+        d = np.array([math.cos(angle) * 0.4, 0.0, math.sin(angle)])
+        d /= np.linalg.norm(d)
+        perch.add_geom(name=f"perch_twig{k}", type=mujoco.mjtGeom.mjGEOM_CAPSULE, size=[0.012 * s, 0, 0],
+                       fromto=[*(np.array([0.0, y * s, 1.5 * s])), *(np.array([0.0, y * s, 1.5 * s]) + 2 * half * d)], **decor)
     perch.add_site(name="perch_top", pos=[0, 0, 1.54 * s], size=[0.02 * s, 0, 0], group=3)
     world.add_camera(name="overview", pos=[3 * s, -12 * s, 4 * s], quat=_camera_quat(np.array([-3.0, -12.0, 2.0])))
 
@@ -291,21 +336,23 @@ def _add_key(spec: mujoco.MjSpec, m: mujoco.MjModel) -> None:
 
 
 def build_spec(
-    model_name: str = "m4", bird: Bird | None = None, *, scene: bool = True, body_pitch: float = 0.0
+    model_name: str = "m4", bird: Bird | None = None, *, scene: bool = True, body_pitch: float = 0.0, visuals: bool = True
 ) -> mujoco.MjSpec:
     """The MjSpec of the bird for kinematic ``model_name`` (base, m1..m4).
 
     ``scene`` adds the arena (floor, light, perch, overview camera).  ``body_pitch``
     (rad, nose up) is the torso's build pose: the weld ``hold`` keeps it there.
     Every model has the same joints (nq = 7 + 2 * 8, nv = 6 + 2 * 7); a kinematic model
-    only moves the ones it uses (see :mod:`birdsim.mujoco.driver`).
+    only moves the ones it uses (see :mod:`birdsim.mujoco.driver`).  ``visuals`` adds
+    the bird for the eye (:mod:`birdsim.mujoco.visual`: massless, contact-free geoms
+    in group 2; the dynamics are identical without them).
     """
     bird = bird or Bird()
     spec = mujoco.MjSpec()
     spec.modelname = f"birdsim_{get_model(model_name).name}"
     _add_options(spec, bird)
     _add_defaults(spec)
-    _add_bird(spec, model_name, bird, body_pitch)
+    _add_bird(spec, model_name, bird, body_pitch, visuals)
     if scene:
         _add_arena(spec, bird)
     m = spec.compile()
@@ -314,7 +361,7 @@ def build_spec(
 
 
 def build_model(
-    model_name: str = "m4", bird: Bird | None = None, *, scene: bool = True, body_pitch: float = 0.0
+    model_name: str = "m4", bird: Bird | None = None, *, scene: bool = True, body_pitch: float = 0.0, visuals: bool = True
 ) -> mujoco.MjModel:
     """Compiled MjModel of the bird (see :func:`build_spec`).
 
@@ -326,7 +373,7 @@ def build_model(
     """
     if not isinstance(body_pitch, (int, float)) or not math.isfinite(body_pitch):
         raise BirdsimError(f"body_pitch={body_pitch!r} is invalid; allowed: a finite angle in radians")
-    return build_spec(model_name, bird, scene=scene, body_pitch=body_pitch).compile()
+    return build_spec(model_name, bird, scene=scene, body_pitch=body_pitch, visuals=visuals).compile()
 
 
 SCENE_INCLUDE = '  <include file="bird.xml"/>\n'
