@@ -141,7 +141,8 @@ def run(args: argparse.Namespace) -> int:
         sat = f", saturated in {info['wingbeats_saturated']} wingbeat(s)" if info["wingbeats_saturated"] else ""
         print(
             f"flew {reference.name} ({model}, {bird.name}, {'open loop' if result.open_loop else 'closed loop'}): "
-            f"{info['wingbeats']:.1f} wingbeats, position error RMS {info['rms_error']:.3g} max {info['max_error']:.3g} "
-            f"(after 2 wingbeats RMS {info['rms_error_after_start']:.3g}){sat}" + (f"; wrote {out}" if out else "")
+            f"{info['wingbeats']:.1f} wingbeats, position error RMS {info['rms_error']:.3g} max {info['max_error']:.3g}"
+            + (f" (after 2 wingbeats RMS {info['rms_error_after_start']:.3g})" if info["wingbeats"] > 2 else "")
+            + sat + (f"; wrote {out}" if out else "")
         )
     return 0

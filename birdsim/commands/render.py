@@ -11,6 +11,7 @@ from birdsim.errors import BirdsimError
 from birdsim.render.gl import GL_CHOICES
 from birdsim.flight.manoeuvre import PRESETS
 from birdsim.commands.common import add_bird_arguments, bird_from_args
+from birdsim.commands.render_flight import add_flight_arguments, is_log, run_flight
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -19,7 +20,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="render a manoeuvre to MP4 (hover, cruise, take-off, landing or a TOML file)",
         description=__doc__,
     )
-    p.add_argument("manoeuvre", metavar="MANOEUVRE", help=f"a preset ({', '.join(PRESETS)}) or a manoeuvre .toml file")
+    p.add_argument("manoeuvre", metavar="MANOEUVRE", help=f"a preset ({', '.join(PRESETS)}), a manoeuvre .toml file or a flight log LOG.npz")
     p.add_argument("--model", default="m4", help="kinematic model: base, m1, m2, m3 or m4 (default m4)")
     p.add_argument("--table", metavar="FILE", help="lookup table (default tables/<model>.npz)")
     p.add_argument("--out", metavar="FILE.mp4", help="output video (default renders/<manoeuvre>-<model>.mp4)")
@@ -35,6 +36,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--force", action="store_true", help="overwrite an existing output file")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     add_bird_arguments(p)
+    add_flight_arguments(p)
     p.set_defaults(func=run)
 
 
@@ -52,19 +54,14 @@ def _slug(text: str) -> str:
     return re.sub(r"[^A-Za-z0-9_.-]+", "_", text).strip("_") or "manoeuvre"
 
 
-def run(args: argparse.Namespace) -> int:
-    # every cheap check first, so that a mistake costs nothing and writes nothing
-    from birdsim.render.gl import resolve_gl
-    from birdsim.physics.kinematics import get_model
-    from birdsim.flight.manoeuvre import get_manoeuvre
+def _options(args: argparse.Namespace):
+    """RenderOptions from the command line (one clear line for a bad value)."""
     from birdsim.render.renderer import RenderOptions, parse_size
 
-    manoeuvre = get_manoeuvre(args.manoeuvre)
-    model = get_model(args.model).name
     if args.gl not in GL_CHOICES:
         raise BirdsimError(f"--gl {args.gl!r} is unknown; allowed: {', '.join(GL_CHOICES)}")
     width, height = parse_size(args.size)
-    options = RenderOptions(
+    return RenderOptions(
         width=width,
         height=height,
         fps=_number("--fps", args.fps, int),  # type: ignore[arg-type]
@@ -76,6 +73,19 @@ def run(args: argparse.Namespace) -> int:
         gl=args.gl,
         progress=not args.quiet,
     )
+
+
+def run(args: argparse.Namespace) -> int:
+    # every cheap check first, so that a mistake costs nothing and writes nothing
+    from birdsim.render.gl import resolve_gl
+    from birdsim.physics.kinematics import get_model
+    from birdsim.flight.manoeuvre import get_manoeuvre
+
+    if is_log(args.manoeuvre) or not args.kinematic:  # free flight (the default) or a flight log
+        return run_flight(args, _options)
+    manoeuvre = get_manoeuvre(args.manoeuvre)
+    model = get_model(args.model).name
+    options = _options(args)
     options.duration(manoeuvre)  # a manoeuvre longer than the longest video -> one line
     out = Path(args.out) if args.out else Path("renders") / f"{_slug(manoeuvre.name)}-{model}.mp4"
     if out.suffix.lower() != ".mp4":

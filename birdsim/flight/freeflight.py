@@ -252,6 +252,9 @@ def fly(
             if progress is not None:
                 progress((k + 1) / per_beat_ctl)
         projection = fb.projection_max
+    keep = sum(1 for r in record if r[0] <= beats * TWO_PI + 1e-9)  # whole control intervals were flown
+    record = record[:keep]
+    rows = {k: v[:keep] for k, v in rows.items()}
     t = np.array([r[0] for r in record])
     qpos = np.array([r[1] for r in record])
     qvel = np.array([r[2] for r in record])

@@ -1,0 +1,94 @@
+"""``birdsim render`` in free flight (the default) and of a flight log (``LOG.npz``):
+fly the manoeuvre in MuJoCo (birdsim.flight.freeflight), then draw the flown states with
+the path as a thin line and the position error and saturation in the overlay."""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+from pathlib import Path
+
+from birdsim.errors import BirdsimError
+
+
+def add_flight_arguments(p: argparse.ArgumentParser) -> None:
+    """The free-flight options of ``birdsim render``."""
+    p.add_argument("--kinematic", action="store_true", help="prescribed playback of the table (no simulation): the body follows the path exactly")
+    p.add_argument("--gust", action="append", default=[], metavar="T0:DURATION:WX:WZ", help="free flight: a gust (see birdsim fly)")
+    p.add_argument("--open-loop", action="store_true", help="free flight: feed-forward only (no feedback)")
+
+
+def is_log(name: str) -> bool:
+    return Path(name).suffix.lower() == ".npz"
+
+
+def run_flight(args: argparse.Namespace, options_from_args) -> int:
+    """Render a log (``args.manoeuvre`` ends in .npz) or a free flight of the manoeuvre.
+
+    ``options_from_args(args, seconds=None)`` builds the RenderOptions as the kinematic
+    path does (one place for size, fps, camera, quality...)."""
+    from birdsim.commands.fly import load_bird, load_table_for
+    from birdsim.commands.render import _slug, check_writable
+    from birdsim.flight.flightlog import load_log
+    from birdsim.flight.flightstates import flight_states
+    from birdsim.physics.kinematics import get_model
+    from birdsim.render.gl import resolve_gl
+
+    options = options_from_args(args)
+    if is_log(args.manoeuvre):
+        if args.gust or args.open_loop:
+            raise BirdsimError("--gust/--open-loop do not apply to a flight log; allowed: a manoeuvre name or file with them")
+        log = load_log(args.manoeuvre, "LOG")
+        name = str(log.get("manoeuvre", "")) or Path(args.manoeuvre).stem
+        default_out = Path("renders") / f"{_slug(Path(args.manoeuvre).stem)}.mp4"
+        reference = None
+    else:
+        from birdsim.flight.freeflight import DemandSchedule, parse_gust
+        from birdsim.flight.manoeuvre import Manoeuvre
+        from birdsim.flight.path_file import get_flight
+
+        flight = get_flight(args.manoeuvre)
+        model = get_model(args.model).name
+        gusts = [parse_gust(g) for g in args.gust]
+        reference = DemandSchedule(flight) if isinstance(flight, Manoeuvre) else flight
+        name = reference.name
+        default_out = Path("renders") / f"{_slug(name)}-{model}.mp4"
+    out = Path(args.out) if args.out else default_out
+    if out.suffix.lower() != ".mp4":
+        raise BirdsimError(f"--out {str(out)!r} does not end in .mp4; allowed: a .mp4 path")
+    check_writable(out, args.force)
+    if args.sheet:
+        if Path(args.sheet).suffix.lower() != ".png":
+            raise BirdsimError(f"--sheet {args.sheet!r} does not end in .png; allowed: a .png path")
+        check_writable(Path(args.sheet), args.force, "--sheet")
+    resolve_gl(args.gl)
+    if reference is not None:
+        from birdsim.flight.flightlog import log_arrays
+        from birdsim.flight.freeflight import fly
+
+        from birdsim.commands.common import parse_pairs
+
+        bird = load_bird(args.bird)
+        overrides = parse_pairs(getattr(args, "set", None), "--set")
+        bird = bird.with_overrides(overrides) if overrides else bird
+        if bird.gravity <= 0:
+            raise BirdsimError(f"--bird {bird.name!r} has gravity={bird.gravity:g}; allowed: a bird file with gravity > 0 for free flight (or --kinematic)")
+        table = load_table_for(bird, model, args.table)
+        beats = reference.duration_beats if options.seconds is None else options.seconds * options.beats_per_second
+        result = fly(reference, table, bird, model, beats=beats, gusts=gusts, open_loop=args.open_loop)
+        log = log_arrays(result, name)
+        log["bird_obj"] = bird
+    states = flight_states(log, dataclasses.replace(options, seconds=None) if reference is not None else options, title=name)
+
+    from birdsim.render.renderer import render_states
+
+    result = render_states(states, out, options, force=args.force)
+    print(
+        f"wrote {result.path} ({result.frames} frames, {result.width}x{result.height} @ {result.fps} fps, "
+        f"{result.video_seconds:.1f} s of video in {result.wall_seconds:.1f} s wall, GL {result.backend}, free flight)"
+    )
+    if args.sheet:
+        from birdsim.render.renderer import contact_sheet
+
+        print(f"wrote {contact_sheet(result.path, args.sheet)} (contact sheet)")
+    return 0
