@@ -18,6 +18,7 @@ COMMAND_MODULES = (
     "birdsim.commands.render",
     "birdsim.commands.fly",
     "birdsim.commands.crosscheck",
+    "birdsim.commands.envelope",
 )
 
 

@@ -31,6 +31,10 @@ from birdsim.flight.path import FlightPath
 from birdsim.physics.bird import Bird
 from birdsim.physics.units import reduced_bird
 
+#: Fixed-point steps for the body drag's pitch in :func:`path_demands`, and when to stop [rad].
+PITCH_ITERATIONS = 8
+PITCH_TOL = 1e-6
+
 
 def body_drag_earth(bird: Bird, V: Any, climb: Any, pitch: Any) -> tuple[np.ndarray, np.ndarray]:
     """Body drag in seed earth axes (X forward, Z down) for airspeed ``(V, 0, -climb)``.
@@ -81,9 +85,10 @@ def demand_from_acceleration(ax_up: Any, az_up: Any, vx: Any, vz: Any, bird: Bir
 def path_demands(path: FlightPath, bird: Bird, table: Any, t: Any) -> dict[str, np.ndarray]:
     """The feed-forward schedule of a path: the table demands at reduced times ``t``.
 
-    The body drag needs the pitch, which the table gives for the demand: one fixed-point
-    step (the demand without body drag -> the table's pitch there -> the demand with the
-    drag at that pitch); lookups clip to the table's grid.
+    The body drag needs the pitch, which the table gives for the demand: fixed-point steps
+    from pitch 0 (demand -> the table's pitch there -> demand with the drag at that pitch),
+    at most :data:`PITCH_ITERATIONS`, until the pitch moves less than :data:`PITCH_TOL`;
+    lookups clip to the table's grid.
 
     Args:
         path: the flight path.
@@ -93,15 +98,20 @@ def path_demands(path: FlightPath, bird: Bird, table: Any, t: Any) -> dict[str, 
 
     Returns:
         Arrays of t's shape: ``Fx``, ``Fz`` (table force), ``V`` (= vx, the table's
-        speed), ``climb`` (= vz), ``pitch`` (the table's at the demand), and the path's
+        speed), ``climb`` (= vz), ``pitch`` (the table's, used for the drag), and the path's
         ``x``, ``z``, ``vx``, ``vz``, ``ax``, ``az``.
     """
     s = path.sample(t)
     V, climb = s["vx"], s["vz"]
-    fx, fz = demand_from_acceleration(s["ax"], s["az"], V, climb, bird, 0.0)
-    pitch = table.lookup_many(Fx=fx, Fz=fz, V=np.maximum(V, 0.0), clip=True)["pitch"]
+    pitch = np.zeros(np.shape(V))
+    for _ in range(PITCH_ITERATIONS):
+        fx, fz = demand_from_acceleration(s["ax"], s["az"], V, climb, bird, pitch)
+        new = table.lookup_many(Fx=fx, Fz=fz, V=np.maximum(V, 0.0), clip=True)["pitch"]
+        done = np.max(np.abs(new - pitch), initial=0.0) < PITCH_TOL
+        pitch = new
+        if done:
+            break
     fx, fz = demand_from_acceleration(s["ax"], s["az"], V, climb, bird, pitch)
-    pitch = table.lookup_many(Fx=fx, Fz=fz, V=np.maximum(V, 0.0), clip=True)["pitch"]
     return {"Fx": fx, "Fz": fz, "V": V, "climb": climb, "pitch": pitch, **s}
 
 

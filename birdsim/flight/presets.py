@@ -9,13 +9,27 @@ table cells whose corners are all reachable.
 
 * ``hover``: in place, 6 semispans up, for 8 wingbeats.
 * ``cruise``: straight and level at :data:`CRUISE_SPEED`, 6 semispans up, 10 wingbeats.
-* ``take-off``: from rest on the perch, forward and up to cruise speed and height.
-* ``landing``: from cruise, down and slower, to rest on the perch.
+* ``take-off``: from rest on the perch, forward and up to cruise speed and height
+  (18 wingbeats).
+* ``landing``: from cruise, down and slower, to rest on the perch (30 wingbeats: below
+  V = 0.2 the demo table decelerates the bird by at most about 0.004 omega^2 s, 0.34 g
+  for the pigeon; docs/flight.md).
 """
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from birdsim.flight.path import PERCH_Z, FlightPath, PathKeyframe
+from birdsim.physics.bird import Bird
+
+#: The demo model: it hovers with the demo bird (m4 cannot: its flap is bounded to pi/4)
+#: and its table reaches every preset (docs/flight.md, "Envelope of each model").
+DEMO_MODEL = "m3"
+#: The shipped bird files (repository ``models/``).
+MODELS_FOLDER = Path(__file__).resolve().parents[2] / "models"
+SEED_BIRD_FILE = MODELS_FOLDER / "seed-bird.toml"
+PIGEON_FILE = MODELS_FOLDER / "pigeon.toml"
 
 #: Height of hover and cruise (semispans above the floor).
 CRUISE_HEIGHT = 6.0
@@ -43,27 +57,38 @@ def _presets() -> dict[str, FlightPath]:
         "take-off", 18.0, True, False,
         (
             _K(0.0, PERCH_Z, V=0.0, regime="take-off"),
-            _K(6.0, PERCH_Z + 0.6, V=0.25),
-            _K(12.0, zc - 0.6, V=0.42, regime="climb-out"),
-            _K(16.0, zc, V=vc, regime="cruise"),
+            _K(5.0, PERCH_Z + 0.5, V=0.2),
+            _K(11.0, 4.3, V=0.4, regime="climb-out"),
+            _K(15.0, zc - 0.2, V=vc),
+            _K(17.0, zc, V=vc, regime="cruise"),
         ),
-        "from rest on the perch, forward and up to cruise",
+        "from rest on the perch, forward and up to cruise: speed first, then height",
     )
     landing = FlightPath(
-        "landing", 18.0, False, True,
+        "landing", 30.0, False, True,
         (
             _K(0.0, zc, V=vc, regime="cruise"),
-            _K(2.0, zc, V=vc),
-            _K(8.0, zc - 2.0, V=0.35, regime="approach"),
-            _K(13.0, PERCH_Z + 0.5, V=0.15, regime="flare"),
-            _K(17.0, PERCH_Z, V=0.0, regime="perched"),
+            _K(1.0, zc, V=vc),
+            _K(6.0, zc - 0.6, V=0.4, regime="approach"),
+            _K(11.5, 3.4, V=0.27),
+            _K(17.0, 2.3, V=0.14, regime="flare"),
+            _K(23.0, 1.9, V=0.06),
+            _K(29.0, PERCH_Z, V=0.0, regime="perched"),
         ),
         "from cruise, down and slower, to rest on the perch",
     )
     return {p.name: p for p in (hover, cruise, take_off, landing)}
 
 
+def demo_bird() -> Bird:
+    """The seed bird that flies: ``models/seed-bird.toml`` (mass ratio 30, reduced gravity
+    0.012, weight 0.36 table units); the same values when the file is not installed."""
+    if SEED_BIRD_FILE.is_file():
+        return Bird.from_toml(SEED_BIRD_FILE)
+    return Bird(mass=30.0, gravity=0.012)
+
+
 #: The presets by name (same names as the force-keyframe presets of manoeuvre.py).
 PATH_PRESETS: dict[str, FlightPath] = _presets()
 
-__all__ = ["CRUISE_HEIGHT", "CRUISE_SPEED", "PATH_PRESETS"]
+__all__ = ["CRUISE_HEIGHT", "CRUISE_SPEED", "DEMO_MODEL", "PATH_PRESETS", "PIGEON_FILE", "SEED_BIRD_FILE", "demo_bird"]

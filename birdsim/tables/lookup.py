@@ -130,6 +130,20 @@ class LookupTable:
         if model != self.model:
             raise TableError(f"table is for model {self.model!r}, asked to drive model {model!r}; allowed: a table built for {model!r}")
 
+    def require_bird(self, bird: Bird) -> None:
+        """Refuse to fly ``bird`` with a table built for another reduced bird (one line).
+
+        A table serves every bird with the same reduced bird exactly (forces in
+        ``rho omega^2 s^3 c``, speeds in ``omega s``; :mod:`birdsim.physics.units`).
+        """
+        from birdsim.physics.units import same_reduced_bird
+
+        if not same_reduced_bird(self.bird, bird):
+            raise TableError(
+                f"table for model {self.model} was built for bird {self.bird.name!r}, whose reduced bird differs from "
+                f"bird {bird.name!r}'s; allowed: a table built for it (`birdsim tables build --model {self.model} --bird FILE`)"
+            )
+
     # ---- interpolation ---------------------------------------------------------------
 
     def _points(self, Fx: Any, Fz: Any, V: Any, clip: bool) -> tuple[np.ndarray, tuple[int, ...]]:
