@@ -11,7 +11,7 @@ from pathlib import Path
 
 from birdsim.errors import BirdsimError
 
-DEFAULT_MODEL = "m4"
+from birdsim.flight.presets import DEMO_MODEL as DEFAULT_MODEL
 
 
 def register(sub: argparse._SubParsersAction) -> None:

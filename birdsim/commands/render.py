@@ -21,7 +21,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         description=__doc__,
     )
     p.add_argument("manoeuvre", metavar="MANOEUVRE", help=f"a preset ({', '.join(PRESETS)}), a manoeuvre .toml file or a flight log LOG.npz")
-    p.add_argument("--model", default="m4", help="kinematic model: base, m1, m2, m3 or m4 (default m4)")
+    p.add_argument("--model", default=None, help="kinematic model: base, m1, m2, m3 or m4 (default: the demo model m3 in free flight, m4 with --kinematic)")
     p.add_argument("--table", metavar="FILE", help="lookup table (default tables/<model>.npz)")
     p.add_argument("--out", metavar="FILE.mp4", help="output video (default renders/<manoeuvre>-<model>.mp4)")
     p.add_argument("--size", default="640x480", metavar="WxH", help="frame size, multiples of 16 (default 640x480)")
@@ -84,7 +84,7 @@ def run(args: argparse.Namespace) -> int:
     if is_log(args.manoeuvre) or not args.kinematic:  # free flight (the default) or a flight log
         return run_flight(args, _options)
     manoeuvre = get_manoeuvre(args.manoeuvre)
-    model = get_model(args.model).name
+    model = get_model(args.model or "m4").name
     options = _options(args)
     options.duration(manoeuvre)  # a manoeuvre longer than the longest video -> one line
     out = Path(args.out) if args.out else Path("renders") / f"{_slug(manoeuvre.name)}-{model}.mp4"

@@ -48,7 +48,9 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
         from birdsim.flight.path_file import get_flight
 
         flight = get_flight(args.manoeuvre)
-        model = get_model(args.model).name
+        from birdsim.flight.presets import DEMO_MODEL
+
+        model = get_model(args.model or DEMO_MODEL).name
         gusts = [parse_gust(g) for g in args.gust]
         reference = DemandSchedule(flight) if isinstance(flight, Manoeuvre) else flight
         name = reference.name

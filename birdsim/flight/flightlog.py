@@ -156,6 +156,8 @@ def summary(arrays: dict[str, Any], *, skip_beats: float = 2.0, phases: Any = No
     per_beat_mean = [float(moment[beat_index == b].mean()) for b in beats]
     per_beat_peak = [float(np.abs(moment[beat_index == b]).max()) for b in beats]
 
+    last = t_beats > t_beats[-1] - 1.0 + 1e-9 if t_beats.size else np.zeros(0, bool)
+
     def rms(x: np.ndarray) -> float:
         return float(np.sqrt(np.mean(np.square(x)))) if x.size else float("nan")
 
@@ -174,6 +176,8 @@ def summary(arrays: dict[str, Any], *, skip_beats: float = 2.0, phases: Any = No
         "final_position": [float(arrays["x"][-1]), float(arrays["z"][-1])],
         "final_reference": [float(arrays["x_ref"][-1]), float(arrays["z_ref"][-1])],
         "final_speed": float(np.hypot(arrays["vx"][-1], arrays["vz"][-1])),
+        # the body bobs within a wingbeat: "at rest" is the last wingbeat's mean velocity
+        "final_mean_speed": float(np.hypot(np.mean(np.asarray(arrays["vx"])[last]), np.mean(np.asarray(arrays["vz"])[last]))),
         "saturated_samples": int(sat.sum()),
         "wingbeats_saturated": int(len(set(beat_index[sat].tolist()))),
         "mean_power": float(np.mean(arrays["power"])) if "power" in arrays else float("nan"),
