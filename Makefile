@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed-stamp
 PYTEST := $(BIN)/python -m pytest
 
-.PHONY: setup demo test test-slow test-all bench tables report clean
+.PHONY: setup demo test test-slow test-all bench tables flight-tables report clean
 
 $(STAMP): pyproject.toml
 	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -42,6 +42,14 @@ tables: setup
 	@for m in $(TABLE_MODELS); do \
 	  $(BIN)/birdsim tables build --model $$m --out tables/$$m.npz --force || exit $$?; \
 	done
+
+# Rebuild the demo model's flight tables (finer grid; docs/flight.md): the seed bird's and the
+# pigeon's (built for its reduced bird, so that its forces are in table units); ~2 min each.
+FLIGHT_GRID := Fx=-0.2:0.3:21,Fz=-0.4:0:17,V=0:0.8:17
+flight-tables: setup
+	$(BIN)/birdsim tables build --model m3 --bird models/seed-bird.toml --grid "$(FLIGHT_GRID)" --out tables/seed-m3.npz --force
+	$(BIN)/python -c "from birdsim.physics.bird import Bird; from birdsim.physics.units import reduced_bird; reduced_bird(Bird.from_toml('models/pigeon.toml')).to_toml('tables/pigeon-reduced.toml')"
+	$(BIN)/birdsim tables build --model m3 --bird tables/pigeon-reduced.toml --grid "$(FLIGHT_GRID)" --out tables/pigeon-m3.npz --force; s=$$?; rm -f tables/pigeon-reduced.toml; exit $$s
 
 # The dissertation's analysis as figures: report/index.html (a few minutes; QUICK=1 for coarse grids).
 report: setup

@@ -5,15 +5,30 @@ import math
 import numpy as np
 import pytest
 
-from birdsim.flight.demand import body_drag_earth, demand_from_acceleration, path_demands
+from birdsim.flight.demand import (
+    body_drag_earth,
+    demand_from_acceleration,
+    path_demands,
+    path_schedule,
+)
 from birdsim.flight.path import FlightPath, PathKeyframe
 from birdsim.physics.aero import body_drag_x
 from birdsim.physics.bird import Bird
 from birdsim.physics.units import reduced_bird, scales, weight_in_table_units
 
 SEED = Bird(mass=30.0, gravity=0.012)
-PIGEON = Bird(name="pigeon", semispan=0.33, chord=0.12, hand_chord=0.12, rho=1.2, omega=2 * math.pi * 8.02,
-              body_drag_area=0.005, disc_area=math.pi * 0.33**2, mass=0.483, gravity=9.81)
+PIGEON = Bird(
+    name="pigeon",
+    semispan=0.33,
+    chord=0.12,
+    hand_chord=0.12,
+    rho=1.2,
+    omega=2 * math.pi * 8.02,
+    body_drag_area=0.005,
+    disc_area=math.pi * 0.33**2,
+    mass=0.483,
+    gravity=9.81,
+)
 
 
 @pytest.mark.parametrize("bird", [SEED, PIGEON], ids=["seed", "pigeon"])
@@ -74,7 +89,16 @@ def test_path_demands_of_a_climb():
     from birdsim.tables.lookup import load_table
 
     table = load_table("tables/m3.npz")
-    p = FlightPath("climb", 4.0, False, False, (PathKeyframe(0, 4.0, x=0.0, vx=0.5, vz=0.05), PathKeyframe(3, 4.0 + 0.05 * 3 * 2 * math.pi, x=0.5 * 3 * 2 * math.pi, vx=0.5, vz=0.05)))
+    p = FlightPath(
+        "climb",
+        4.0,
+        False,
+        False,
+        (
+            PathKeyframe(0, 4.0, x=0.0, vx=0.5, vz=0.05),
+            PathKeyframe(3, 4.0 + 0.05 * 3 * 2 * math.pi, x=0.5 * 3 * 2 * math.pi, vx=0.5, vz=0.05),
+        ),
+    )
     t = np.linspace(0, p.duration, 9)
     d = path_demands(p, SEED, table, t)
     assert np.allclose(d["ax"], 0, atol=1e-12) and np.allclose(d["az"], 0, atol=1e-12)
@@ -84,3 +108,23 @@ def test_path_demands_of_a_climb():
     again = table.lookup_many(Fx=d["Fx"], Fz=d["Fz"], V=d["V"])["pitch"]
     np.testing.assert_allclose(again, d["pitch"], atol=1e-4)
     assert np.allclose(d["V"], 0.5) and np.allclose(d["climb"], 0.05)
+
+
+def test_path_schedule_plays_the_paths_demands():
+    # the force-keyframe form of a preset: at its keyframes it carries path_demands exactly,
+    # and between them (PCHIP) every demand stays reachable in the demo table
+    from birdsim.flight.envelope import reachable
+    from birdsim.flight.presets import PATH_PRESETS, demo_bird
+    from birdsim.tables.lookup import load_table
+
+    table, bird = load_table("tables/seed-m3.npz"), demo_bird()
+    path = PATH_PRESETS["landing"]
+    m = path_schedule(path, bird, table)
+    assert m.perch == "end" and m.duration == path.duration_beats and m.name == "landing"
+    kt = np.array([k.t for k in m.keyframes])
+    d = path_demands(path, bird, table, kt * 2 * math.pi)
+    assert np.allclose([k.Fz for k in m.keyframes], d["Fz"]) and np.allclose(
+        [k.V for k in m.keyframes], d["V"]
+    )
+    dense = m.demands(np.linspace(0, path.duration_beats, 30 * 32))
+    assert reachable(table, dense["Fx"], dense["Fz"], dense["V"]).all()

@@ -79,7 +79,9 @@ def test_m4_cannot_hover_with_the_demo_bird():
 def test_envelope_cli_json_and_text(capsys):
     assert main(["envelope", "--model", "m3", "--table", "tables/m3.npz", "--json"]) == 0
     out = json.loads(capsys.readouterr().out)
-    assert out["model"] == "m3" and out["weight"] == pytest.approx(0.36) and out["can_hover"] is True
+    assert (
+        out["model"] == "m3" and out["weight"] == pytest.approx(0.36) and out["can_hover"] is True
+    )
     assert main(["envelope", "--bird", "models/pigeon.toml"]) == 0
     text = capsys.readouterr().out
     assert "N" in text and "heaviest bird that can hover" in text and "kg" in text

@@ -83,7 +83,9 @@ def test_hold_and_extrapolation():
     assert (s.vx, s.vz, s.ax, s.az) == (0.0, 0.0, 0.0, 0.0)
     cruise = PATH_PRESETS["cruise"]
     a, b = cruise.state(-5.0), cruise.state(cruise.duration + 5.0)
-    assert a.vx == pytest.approx(cruise.keyframes[0].V) and b.vx == pytest.approx(cruise.keyframes[0].V)
+    assert a.vx == pytest.approx(cruise.keyframes[0].V) and b.vx == pytest.approx(
+        cruise.keyframes[0].V
+    )
     assert b.x - a.x == pytest.approx(cruise.keyframes[0].V * (cruise.duration + 10.0))
 
 
@@ -106,7 +108,13 @@ def test_perch_constants_match_the_scene():
 
 def test_below_the_floor_is_refused_naming_the_keyframe():
     with pytest.raises(PathError, match=r"keyframe 2 \(t=3\).*below the floor"):
-        FlightPath("dive", 8.0, False, False, (K(0, 6.0, x=-10.0), K(3, 3.0, x=-5.0), K(6, FLOOR_CLEARANCE - 0.5, x=0.0)))
+        FlightPath(
+            "dive",
+            8.0,
+            False,
+            False,
+            (K(0, 6.0, x=-10.0), K(3, 3.0, x=-5.0), K(6, FLOOR_CLEARANCE - 0.5, x=0.0)),
+        )
 
 
 def test_through_the_perch_is_refused_naming_the_keyframe():

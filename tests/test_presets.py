@@ -24,8 +24,10 @@ def test_every_sample_of_every_preset_is_within_reach(bird, name):
     table.require_bird(bird)
     r = path_reach(PATH_PRESETS[name], bird, table)
     bad = np.flatnonzero(~r["ok"])
-    assert bad.size == 0, f"{name}: first unreachable sample t={r['t_beats'][bad[0]]:.2f} beats " \
+    assert bad.size == 0, (
+        f"{name}: first unreachable sample t={r['t_beats'][bad[0]]:.2f} beats "
         f"Fx={r['Fx'][bad[0]]:+.4f} Fz={r['Fz'][bad[0]]:+.4f} V={r['V'][bad[0]]:.3f}"
+    )
 
 
 def test_what_the_presets_promise():
@@ -36,12 +38,24 @@ def test_what_the_presets_promise():
         assert (s.x, s.z, s.vx, s.vz) == (0.0, CRUISE_HEIGHT, 0.0, 0.0)
     cruise = PATH_PRESETS["cruise"]
     s = cruise.sample(np.linspace(0, cruise.duration, 50))
-    assert np.all(s["z"] == CRUISE_HEIGHT) and np.allclose(s["vx"], CRUISE_SPEED) and np.all(s["ax"] == 0)
+    assert (
+        np.all(s["z"] == CRUISE_HEIGHT)
+        and np.allclose(s["vx"], CRUISE_SPEED)
+        and np.all(s["ax"] == 0)
+    )
     take_off, landing = PATH_PRESETS["take-off"], PATH_PRESETS["landing"]
     a, b = take_off.state(0.0), take_off.state(take_off.duration)
-    assert (a.x, a.z, a.vx) == pytest.approx((PERCH_X, PERCH_Z, 0.0)) and (b.z, b.vx, b.vz) == pytest.approx((CRUISE_HEIGHT, CRUISE_SPEED, 0.0))
+    assert (a.x, a.z, a.vx) == pytest.approx((PERCH_X, PERCH_Z, 0.0)) and (
+        b.z,
+        b.vx,
+        b.vz,
+    ) == pytest.approx((CRUISE_HEIGHT, CRUISE_SPEED, 0.0))
     a, b = landing.state(0.0), landing.state(landing.keyframes[-1].t * two_pi)
-    assert (a.z, a.vx) == pytest.approx((CRUISE_HEIGHT, CRUISE_SPEED)) and (b.x, b.z, b.vx) == pytest.approx((PERCH_X, PERCH_Z, 0.0), abs=1e-9)
+    assert (a.z, a.vx) == pytest.approx((CRUISE_HEIGHT, CRUISE_SPEED)) and (
+        b.x,
+        b.z,
+        b.vx,
+    ) == pytest.approx((PERCH_X, PERCH_Z, 0.0), abs=1e-9)
     end = landing.state(landing.duration)  # held at rest on the perch after the last keyframe
     assert (end.x, end.z, end.vx, end.vz) == pytest.approx((PERCH_X, PERCH_Z, 0.0, 0.0), abs=1e-9)
     # speeds never go backwards and heights change monotonically on take-off and landing

@@ -15,11 +15,15 @@ PIGEON = Bird.from_toml("models/pigeon.toml")
 
 def test_shipped_birds_numbers():
     # The values docs/flight.md and the TOML comments quote (3 significant digits).
-    assert mass_ratio(SEED) == 30.0 and weight_in_table_units(SEED) == pytest.approx(0.36, abs=1e-12)
+    assert mass_ratio(SEED) == 30.0 and weight_in_table_units(SEED) == pytest.approx(
+        0.36, abs=1e-12
+    )
     assert mass_ratio(PIGEON) == pytest.approx(30.8, abs=0.05)
     assert weight_in_table_units(PIGEON) == pytest.approx(0.361, abs=0.0005)
     sc = scales(PIGEON)
-    assert sc.force == pytest.approx(13.14, abs=0.005) and sc.speed == pytest.approx(16.63, abs=0.005)
+    assert sc.force == pytest.approx(13.14, abs=0.005) and sc.speed == pytest.approx(
+        16.63, abs=0.005
+    )
     assert PIGEON.omega == pytest.approx(2 * math.pi * 8.02, rel=1e-12)
     assert reduced_bird(PIGEON).body_drag_area == pytest.approx(0.126, abs=0.0005)
 
@@ -44,6 +48,8 @@ def test_the_seed_bird_gets_a_seed_table():
 
 def test_no_table_for_this_bird_is_one_line(tmp_path):
     odd = Bird(name="odd", chord=0.5)
-    with pytest.raises(TableError, match="no table in .* was built for this bird and model m3") as exc:
+    with pytest.raises(
+        TableError, match="no table in .* was built for this bird and model m3"
+    ) as exc:
         shipped_table(odd, "m3", PACKAGE_TABLES)
     assert "\n" not in str(exc.value)

@@ -56,7 +56,9 @@ def body_drag_earth(bird: Bird, V: Any, climb: Any, pitch: Any) -> tuple[np.ndar
     return -mag * V, mag * climb
 
 
-def demand_from_acceleration(ax_up: Any, az_up: Any, vx: Any, vz: Any, bird: Bird, pitch: Any) -> tuple[np.ndarray, np.ndarray]:
+def demand_from_acceleration(
+    ax_up: Any, az_up: Any, vx: Any, vz: Any, bird: Bird, pitch: Any
+) -> tuple[np.ndarray, np.ndarray]:
     """The table force (one wing + body drag, seed axes) that gives the bird an acceleration.
 
     Args:
@@ -115,4 +117,42 @@ def path_demands(path: FlightPath, bird: Bird, table: Any, t: Any) -> dict[str, 
     return {"Fx": fx, "Fz": fz, "V": V, "climb": climb, "pitch": pitch, **s}
 
 
-__all__ = ["body_drag_earth", "demand_from_acceleration", "path_demands"]
+def path_schedule(path: FlightPath, bird: Bird, table: Any, *, per_beat: int = 4) -> Any:
+    """A path's feed-forward demands as a force-keyframe manoeuvre, for the kinematic
+    playback (``birdsim render --kinematic``) and open-loop flight of today's format.
+
+    Keyframes every ``1 / per_beat`` wingbeat carry :func:`path_demands` (Fx, Fz, V
+    clipped at 0) and the path's height; the playback's perch convention (perched height
+    ``manoeuvre.PERCH_HEIGHT``, shifted onto the scene's perch) is applied to z.
+
+    Returns:
+        A :class:`birdsim.flight.manoeuvre.Manoeuvre` with the path's name and duration.
+    """
+    import math
+
+    from birdsim.flight.manoeuvre import PERCH_HEIGHT, Keyframe, Manoeuvre
+    from birdsim.flight.path import PERCH_Z
+
+    n = int(math.ceil(path.duration_beats * per_beat)) + 1
+    tb = np.linspace(0.0, path.duration_beats, n)
+    d = path_demands(path, bird, table, tb * 2.0 * math.pi)
+    perch = "start" if path.perch_start else ("end" if path.perch_end else "")
+    dz = PERCH_HEIGHT - PERCH_Z if perch else 0.0
+    keyframes, last = [], None
+    for i, t in enumerate(tb):
+        label = path.regime(float(t))
+        keyframes.append(
+            Keyframe(
+                float(t),
+                float(d["Fx"][i]),
+                float(d["Fz"][i]),
+                max(float(d["V"][i]), 0.0),
+                float(d["z"][i]) + dz,
+                label if label != last else "",
+            )
+        )
+        last = label
+    return Manoeuvre(path.name, tuple(keyframes), path.duration_beats, path.description, perch)
+
+
+__all__ = ["body_drag_earth", "demand_from_acceleration", "path_demands", "path_schedule"]

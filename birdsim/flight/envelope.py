@@ -249,7 +249,9 @@ def envelope(table: LookupTable, bird: Bird) -> Envelope:
     )
 
 
-def path_reach(path: Any, bird: Bird, table: LookupTable, samples_per_beat: int = 32) -> dict[str, np.ndarray]:
+def path_reach(
+    path: Any, bird: Bird, table: LookupTable, samples_per_beat: int = 32
+) -> dict[str, np.ndarray]:
     """The feed-forward demands of a flight path and whether each is reachable.
 
     Args:

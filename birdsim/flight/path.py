@@ -116,7 +116,10 @@ class FlightPath:
         zs = knot_slopes(t, z, [k.vz for k in self.keyframes], ends="level")
         if self.form == "position":
             x = np.array([k.x for k in self.keyframes], dtype=float)
-            ends = ("zero" if self.perch_start else "secant", "zero" if self.perch_end else "secant")
+            ends = (
+                "zero" if self.perch_start else "secant",
+                "zero" if self.perch_end else "secant",
+            )
             xs = knot_slopes(t, x, [k.vx for k in self.keyframes], ends=ends)
             xp = quintic_hermite(t, x, xs)
         else:
@@ -176,31 +179,57 @@ def _validate(p: FlightPath) -> None:
     where = f"path {p.name!r}"
     if not p.keyframes:
         raise PathError(f"{where} has no keyframes; allowed: at least one [[keyframe]]")
-    if not (isinstance(p.duration_beats, (int, float)) and math.isfinite(p.duration_beats) and 0 < p.duration_beats <= MAX_BEATS):
-        raise PathError(f"{where}: duration={p.duration_beats!r}; allowed: a number of wingbeats in (0, {MAX_BEATS:g}]")
+    if not (
+        isinstance(p.duration_beats, (int, float))
+        and math.isfinite(p.duration_beats)
+        and 0 < p.duration_beats <= MAX_BEATS
+    ):
+        raise PathError(
+            f"{where}: duration={p.duration_beats!r}; allowed: a number of wingbeats in (0, "
+            f"{MAX_BEATS:g}]"
+        )
     forms = {k.x is not None for k in p.keyframes}
     if len(forms) != 1 or any((k.x is None) == (k.V is None) for k in p.keyframes):
-        bad = next(i for i, k in enumerate(p.keyframes, 1) if (k.x is None) == (k.V is None) or (k.x is not None) != (p.keyframes[0].x is not None))
-        raise PathError(f"{where}: keyframe {bad} mixes or lacks x and V; allowed: every keyframe gives x (position) or every keyframe gives V (speed)")
+        bad = next(
+            i
+            for i, k in enumerate(p.keyframes, 1)
+            if (k.x is None) == (k.V is None) or (k.x is not None) != (p.keyframes[0].x is not None)
+        )
+        raise PathError(
+            f"{where}: keyframe {bad} mixes or lacks x and V; allowed: every keyframe gives "
+            "x (position) or every keyframe gives V (speed)"
+        )
     for i, k in enumerate(p.keyframes, 1):
         for name in ("t", "z", "x", "V", "vx", "vz", "dV"):
             v = getattr(k, name)
             if v is not None and not (isinstance(v, (int, float)) and math.isfinite(v)):
                 raise PathError(f"{where}: keyframe {i} {name}={v!r} is not a finite number")
         if k.t < 0 or k.t > MAX_BEATS:
-            raise PathError(f"{where}: keyframe {i} t={k.t:g}; allowed: 0 <= t <= {MAX_BEATS:g} wingbeats")
+            raise PathError(
+                f"{where}: keyframe {i} t={k.t:g}; allowed: 0 <= t <= {MAX_BEATS:g} wingbeats"
+            )
         if k.V is not None and k.V < 0:
-            raise PathError(f"{where}: keyframe {i} V={k.V:g} is negative; allowed: V >= 0 (the tables fly forward)")
+            raise PathError(
+                f"{where}: keyframe {i} V={k.V:g} is negative; allowed: V >= 0 (the tables "
+                "fly forward)"
+            )
         if (p.form == "position" and k.dV is not None) or (p.form == "speed" and k.vx is not None):
-            raise PathError(f"{where}: keyframe {i} gives {'dV' if k.dV is not None else 'vx'}, which the {p.form} form does not use; allowed: vx with x, dV with V")
+            raise PathError(
+                f"{where}: keyframe {i} gives {'dV' if k.dV is not None else 'vx'}, which "
+                f"the {p.form} form does not use; allowed: vx with x, dV with V"
+            )
     ts = [k.t for k in p.keyframes]
     if any(b <= a for a, b in zip(ts, ts[1:])):
-        raise PathError(f"{where}: keyframe times {ts} are not increasing; allowed: strictly increasing t")
+        raise PathError(
+            f"{where}: keyframe times {ts} are not increasing; allowed: strictly increasing t"
+        )
     if p.perch_start and ts[0] != 0:
         raise PathError(f"{where}: perch_start needs keyframe 1 at t=0; got t={ts[0]:g}")
 
 
-def knot_slopes(t: np.ndarray, y: np.ndarray, given: list[float | None], ends: str | tuple[str, str] = "level") -> np.ndarray:
+def knot_slopes(
+    t: np.ndarray, y: np.ndarray, given: list[float | None], ends: str | tuple[str, str] = "level"
+) -> np.ndarray:
     """Slopes dy/dt at the knots: ``given`` where not None, else the harmonic mean of the
     neighbouring secants (0 at an extremum or flat data: at most twice the smaller secant,
     which keeps a quintic minimum-jerk segment monotone). End slopes: ``level`` / ``zero``
@@ -250,7 +279,9 @@ def quintic_hermite(t: np.ndarray, y: np.ndarray, dy: np.ndarray) -> PPoly:
         y0, y1, v0, v1 = y[i], y[i + 1], dy[i] * h, dy[i + 1] * h  # in local s = (t - t_i) / h
         # p(s) = y0 + v0 s + a3 s^3 + a4 s^4 + a5 s^5 with p(1) = y1, p'(1) = v1, p''(1) = 0
         rhs = np.array([y1 - y0 - v0, v1 - v0, 0.0])
-        a3, a4, a5 = np.linalg.solve(np.array([[1.0, 1.0, 1.0], [3.0, 4.0, 5.0], [6.0, 12.0, 20.0]]), rhs)
+        a3, a4, a5 = np.linalg.solve(
+            np.array([[1.0, 1.0, 1.0], [3.0, 4.0, 5.0], [6.0, 12.0, 20.0]]), rhs
+        )
         coef_s = np.array([a5, a4, a3, 0.0, v0, y0])  # highest power first
         c[:, i] = coef_s / h ** np.arange(5, -1, -1)
     return PPoly(c, t, extrapolate=False)
@@ -280,27 +311,49 @@ def check_obstacles(path: FlightPath) -> None:
     s = path.sample(tb * TWO_PI)
     low = s["z"] < FLOOR_CLEARANCE - 1e-9
     perch = (np.abs(s["x"] - PERCH_X) < PERCH_KEEPOUT) & (s["z"] < PERCH_Z - PERCH_TOL)
-    for bad, what in ((low, f"below the floor clearance z >= {FLOOR_CLEARANCE:g} semispans"), (perch, f"through the perch (|x - {PERCH_X:g}| < {PERCH_KEEPOUT:g} below z = {PERCH_Z:g})")):
+    for bad, what in (
+        (low, f"below the floor clearance z >= {FLOOR_CLEARANCE:g} semispans"),
+        (perch, f"through the perch (|x - {PERCH_X:g}| < {PERCH_KEEPOUT:g} below z = {PERCH_Z:g})"),
+    ):
         if np.any(bad):
             i = int(np.argmax(bad))
             k = path.keyframe_before(tb[i])
             raise PathError(
                 f"path {path.name!r}: keyframe {k} (t={path.keyframes[k - 1].t:g}) leads {what}: "
-                f"at t={tb[i]:.3g} wingbeats x={s['x'][i]:.3g}, z={s['z'][i]:.3g}; allowed: a path above the floor and around the perch"
+                f"at t={tb[i]:.3g} wingbeats x={s['x'][i]:.3g}, z={s['z'][i]:.3g}; allowed: "
+                "a path above the floor and around the perch"
             )
-    for flag, idx, label in ((path.perch_start, 0, "perch_start"), (path.perch_end, -1, "perch_end")):
+    for flag, idx, label in (
+        (path.perch_start, 0, "perch_start"),
+        (path.perch_end, -1, "perch_end"),
+    ):
         if flag:
             k = path.keyframes[idx]
             st = path.state(k.t * TWO_PI)
-            if abs(st.x - PERCH_X) > 1e-6 or abs(st.z - PERCH_Z) > 1e-6 or abs(st.vx) > 1e-9 or abs(st.vz) > 1e-9:
+            if (
+                abs(st.x - PERCH_X) > 1e-6
+                or abs(st.z - PERCH_Z) > 1e-6
+                or abs(st.vx) > 1e-9
+                or abs(st.vz) > 1e-9
+            ):
                 num = 1 if idx == 0 else len(path.keyframes)
                 raise PathError(
-                    f"path {path.name!r}: {label} but keyframe {num} is at x={st.x:g}, z={st.z:g}, speed ({st.vx:g}, {st.vz:g}); "
+                    f"path {path.name!r}: {label} but keyframe {num} is at x={st.x:g}, "
+                    f"z={st.z:g}, speed ({st.vx:g}, {st.vz:g}); "
                     f"allowed: at rest on the perch, x={PERCH_X:g}, z={PERCH_Z:g}"
                 )
 
 
 __all__ = [
-    "FLOOR_CLEARANCE", "FlightPath", "PERCH_KEEPOUT", "PERCH_X", "PERCH_Z", "PathError", "PathKeyframe", "PathState",
-    "check_obstacles", "knot_slopes", "quintic_hermite",
+    "FLOOR_CLEARANCE",
+    "FlightPath",
+    "PERCH_KEEPOUT",
+    "PERCH_X",
+    "PERCH_Z",
+    "PathError",
+    "PathKeyframe",
+    "PathState",
+    "check_obstacles",
+    "knot_slopes",
+    "quintic_hermite",
 ]

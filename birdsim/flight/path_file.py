@@ -51,7 +51,9 @@ def get_flight(name_or_path: str) -> FlightPath | Manoeuvre:
     p = Path(name_or_path)
     if p.suffix.lower() == ".toml" or p.exists():
         return load_flight(p)
-    raise ManoeuvreError(f"manoeuvre {name_or_path!r} is unknown; allowed: {', '.join(PATH_PRESETS)} or a .toml file")
+    raise ManoeuvreError(
+        f"manoeuvre {name_or_path!r} is unknown; allowed: {', '.join(PATH_PRESETS)} or a .toml file"
+    )
 
 
 def load_flight(path: str | Path) -> FlightPath | Manoeuvre:
@@ -59,20 +61,27 @@ def load_flight(path: str | Path) -> FlightPath | Manoeuvre:
 
     Raises:
         ManoeuvreError: the file is missing, not TOML, or invalid (one line naming the key).
-        PathError: the path goes below the floor or through the perch (one line naming the keyframe).
+        PathError: the path goes below the floor or through the perch (one line naming the
+            keyframe).
     """
     p = Path(path)
     arg = f"manoeuvre file {str(p)!r}"
     try:
         data = tomllib.loads(p.read_text())
     except FileNotFoundError:
-        raise ManoeuvreError(f"{arg} does not exist; allowed: {', '.join(PATH_PRESETS)} or a readable .toml file") from None
+        raise ManoeuvreError(
+            f"{arg} does not exist; allowed: {', '.join(PATH_PRESETS)} or a readable .toml file"
+        ) from None
     except (OSError, UnicodeDecodeError) as exc:
         raise ManoeuvreError(f"{arg} cannot be read: {exc}") from None
     except tomllib.TOMLDecodeError as exc:
         raise ManoeuvreError(f"{arg} is not valid TOML: {exc}") from None
     rows = data.get("keyframe")
-    if "demands" in data or not isinstance(rows, list) or any(isinstance(r, dict) and any(k in r for k in FORCE_KEYS) for r in rows):
+    if (
+        "demands" in data
+        or not isinstance(rows, list)
+        or any(isinstance(r, dict) and any(k in r for k in FORCE_KEYS) for r in rows)
+    ):
         return load_manoeuvre(p)
     return _path_from_dict(arg, p.stem, data)
 
@@ -81,10 +90,14 @@ def _path_from_dict(arg: str, stem: str, data: dict[str, Any]) -> FlightPath:
     known = {"name", "description", "duration", "perch", "x0", "keyframe"}
     unknown = sorted(set(data) - known)
     if unknown:
-        raise ManoeuvreError(f"{arg}: key {unknown[0]!r} is unknown; allowed: {', '.join(sorted(known))}")
+        raise ManoeuvreError(
+            f"{arg}: key {unknown[0]!r} is unknown; allowed: {', '.join(sorted(known))}"
+        )
     rows = data["keyframe"]
     if not rows:
-        raise ManoeuvreError(f"{arg}: keyframe must be an array of tables ([[keyframe]]) with at least one entry")
+        raise ManoeuvreError(
+            f"{arg}: keyframe must be an array of tables ([[keyframe]]) with at least one entry"
+        )
     keyframes = []
     for i, row in enumerate(rows, 1):
         where = f"{arg}: keyframe {i}"
@@ -92,17 +105,26 @@ def _path_from_dict(arg: str, stem: str, data: dict[str, Any]) -> FlightPath:
             raise ManoeuvreError(f"{where} is not a table")
         bad = sorted(set(row) - set(PATH_KEYS))
         if bad:
-            raise ManoeuvreError(f"{where}: key {bad[0]!r} is unknown; allowed: {', '.join(PATH_KEYS)} (or Fx, Fz, V for a force schedule)")
+            raise ManoeuvreError(
+                f"{where}: key {bad[0]!r} is unknown; allowed: {', '.join(PATH_KEYS)} (or "
+                "Fx, Fz, V for a force schedule)"
+            )
         for key in ("t", "z"):
             if key not in row:
                 raise ManoeuvreError(f"{where}: {key} is missing; required: t, z and one of x or V")
-        vals = {k: _number(f"{where}: {k}", row[k]) for k in PATH_KEYS if k != "regime" and k in row}
+        vals = {
+            k: _number(f"{where}: {k}", row[k]) for k in PATH_KEYS if k != "regime" and k in row
+        }
         regime = row.get("regime", "")
         if not isinstance(regime, str):
             raise ManoeuvreError(f"{where}: regime={regime!r} is not a string")
         keyframes.append(PathKeyframe(regime=regime, **vals))
     last = keyframes[-1].t
-    duration = _number(f"{arg}: duration", data["duration"]) if "duration" in data else min(last + 1.0, MAX_BEATS)
+    duration = (
+        _number(f"{arg}: duration", data["duration"])
+        if "duration" in data
+        else min(last + 1.0, MAX_BEATS)
+    )
     name = data.get("name", stem)
     if not isinstance(name, str) or not name:
         raise ManoeuvreError(f"{arg}: name={name!r}; allowed: a non-empty string")
@@ -112,7 +134,15 @@ def _path_from_dict(arg: str, stem: str, data: dict[str, Any]) -> FlightPath:
     x0 = _number(f"{arg}: x0", data["x0"]) if "x0" in data else 0.0
     description = data.get("description", "")
     try:
-        return FlightPath(name, duration, perch in ("start", "both"), perch in ("end", "both"), tuple(keyframes), str(description), x0)
+        return FlightPath(
+            name,
+            duration,
+            perch in ("start", "both"),
+            perch in ("end", "both"),
+            tuple(keyframes),
+            str(description),
+            x0,
+        )
     except PathError as exc:
         raise PathError(f"{arg}: {str(exc)}") from None
 

@@ -43,18 +43,27 @@ _K = PathKeyframe
 def _presets() -> dict[str, FlightPath]:
     vc, zc = CRUISE_SPEED, CRUISE_HEIGHT
     hover = FlightPath(
-        "hover", 8.0, False, False,
+        "hover",
+        8.0,
+        False,
+        False,
         (_K(0.0, zc, x=0.0, regime="hover"),),
         "hover in place 6 semispans up",
     )
     cruise = FlightPath(
-        "cruise", 10.0, False, False,
+        "cruise",
+        10.0,
+        False,
+        False,
         (_K(0.0, zc, V=vc, regime="cruise"),),
         f"straight and level at V = {vc:g} omega s, 6 semispans up",
         x0=-0.5 * vc * 10.0 * 6.283185307179586,
     )
     take_off = FlightPath(
-        "take-off", 18.0, True, False,
+        "take-off",
+        18.0,
+        True,
+        False,
         (
             _K(0.0, PERCH_Z, V=0.0, regime="take-off"),
             _K(5.0, PERCH_Z + 0.5, V=0.2),
@@ -65,7 +74,10 @@ def _presets() -> dict[str, FlightPath]:
         "from rest on the perch, forward and up to cruise: speed first, then height",
     )
     landing = FlightPath(
-        "landing", 30.0, False, True,
+        "landing",
+        30.0,
+        False,
+        True,
         (
             _K(0.0, zc, V=vc, regime="cruise"),
             _K(1.0, zc, V=vc),
@@ -91,4 +103,12 @@ def demo_bird() -> Bird:
 #: The presets by name (same names as the force-keyframe presets of manoeuvre.py).
 PATH_PRESETS: dict[str, FlightPath] = _presets()
 
-__all__ = ["CRUISE_HEIGHT", "CRUISE_SPEED", "DEMO_MODEL", "PATH_PRESETS", "PIGEON_FILE", "SEED_BIRD_FILE", "demo_bird"]
+__all__ = [
+    "CRUISE_HEIGHT",
+    "CRUISE_SPEED",
+    "DEMO_MODEL",
+    "PATH_PRESETS",
+    "PIGEON_FILE",
+    "SEED_BIRD_FILE",
+    "demo_bird",
+]

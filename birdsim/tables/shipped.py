@@ -35,7 +35,9 @@ def shipped_table(bird: Bird, model: str, folder: Path | None = None) -> Path:
         TableError: no table there fits (one line saying how to build one).
     """
     folder = table_folder() if folder is None else Path(folder)
-    names = [f"{bird.name}-{model}.npz", f"{model}.npz"] + sorted(p.name for p in folder.glob(f"*-{model}.npz"))
+    names = [f"{bird.name}-{model}.npz", f"{model}.npz"] + sorted(
+        p.name for p in folder.glob(f"*-{model}.npz")
+    )
     seen = set()
     for name in names:
         if name in seen:
@@ -55,8 +57,10 @@ def shipped_table(bird: Bird, model: str, folder: Path | None = None) -> Path:
         if same_reduced_bird(built_for, bird):
             return npz
     raise TableError(
-        f"--bird {bird.name!r}: no table in {str(folder)!r} was built for this bird and model {model}; "
-        f"allowed: build one with `birdsim tables build --model {model} --bird FILE --out {folder}/{bird.name}-{model}.npz` or pass --table"
+        f"--bird {bird.name!r}: no table in {str(folder)!r} was built for this bird and "
+        f"model {model}; "
+        f"allowed: build one with `birdsim tables build --model {model} --bird FILE --out "
+        f"{folder}/{bird.name}-{model}.npz` or pass --table"
     )
 
 
