@@ -102,7 +102,7 @@ def test_bad_input_is_one_line(birds, args, needle, capsys):
 def test_table_for_another_bird_is_refused(tmp_path, capsys):
     other = Bird(chord=0.5, mass=30.0, gravity=0.012)
     other.to_toml(tmp_path / "b.toml")
-    code, _, err = fly(["cruise", "--table", "tables/m4.npz", "--bird", str(tmp_path / "b.toml")], capsys)
+    code, _, err = fly(["cruise", "--model", "m4", "--table", "tables/m4.npz", "--bird", str(tmp_path / "b.toml")], capsys)
     assert code == 2 and "reduced bird" in err
 
 
