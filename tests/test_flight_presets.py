@@ -3,7 +3,7 @@ the two shipped birds: the issue's tracking targets.
 
 Measured (seed bird; pigeon in brackets), docs/flight.md: hover RMS 0.018 (0.018),
 cruise altitude RMS after two wingbeats 0.014 (0.012), take-off RMS 0.068 (0.073),
-landing RMS 0.092 (0.167), landing ends 0.02 from the perch at rest.  Take-off and
+landing RMS 0.093 (0.167), landing ends 0.02 from the perch at rest.  Take-off and
 landing still saturate in 5-12 wingbeats (the feedback on top of the feed-forward leaves
 the reachable set at low speed and in the descent): the strict xfail below turns into a
 failure when that is fixed."""

@@ -5,8 +5,8 @@ acts on wingbeat-averaged quantities.  Per update (``control_per_beat`` times a 
 
 1. state estimate: the position and velocity errors ``e = ref - actual`` averaged over
    the last wingbeat (a moving average over exactly one period, which removes the
-   within-wingbeat bobbing), moved forward by half a period (the average lags by T/2:
-   ``e_p + T/2 e_v`` and ``e_v + T/2 e_a``, ``e_a`` the wingbeat-mean acceleration error
+   within-wingbeat bobbing), moved forward by what the average lags, (T - dt)/2 for
+   samples dt apart (``e_p + (T - dt)/2 e_v`` and ``e_v + (T - dt)/2 e_a``, ``e_a`` the wingbeat-mean acceleration error
    ``(e_v(t) - e_v(t - T)) / T``); before the first wingbeat is complete the missing
    samples are the start's (zero error);
 2. acceleration command ``a_cmd = a_ref + Kp e_p + Kd e_v + Ki integral(e_p)``;
@@ -41,7 +41,7 @@ TIME_CONSTANT_BEATS = 2.0
 #: A demand counts as reachable when the table's interpolated achieved force is within
 #: this of it (table force units; the tables' own "ok" tolerance).
 REACH_TOLERANCE = 0.01
-#: Airspeed (semispan omega) above which the table is turned into the air path's
+#: Forward airspeed (semispan omega) above which the table is turned into the air path's
 #: direction in full (see Controller.lookup); below, the turn fades out quadratically.
 CLIMB_SPEED = 0.2
 #: A lookup airspeed clipped by more than this (semispan omega) counts as saturated.
@@ -127,11 +127,12 @@ class ErrorWindow:
         """Predicted wingbeat-mean position and velocity errors and airspeed (x)."""
         if not self.ep:
             return np.zeros(2), np.zeros(2), 0.0
-        n, half = self.n, 0.5 * self.period
+        # the mean of n samples lags the newest by (n - 1) / 2 sample intervals
+        n, half = self.n, 0.5 * (self.period - self.dt)
         ev_win = self._window(self.ev, n + 1)
         ep = self._window(self.ep, n).mean(axis=0)
         ev = ev_win[1:].mean(axis=0)
-        ea = (ev_win[-1] - ev_win[0]) / self.period
+        ea = (ev_win[-1] - ev_win[0]) / self.period  # the window spans n + 1 samples
         vx_win = self._window(self.vx, n + 1)
         vx = float(vx_win[1:].mean() + half * (vx_win[-1] - vx_win[0]) / self.period)
         return ep + half * ev, ev + half * ea, vx
@@ -188,15 +189,16 @@ class Controller:
         ``gamma = atan2(vz_air, vx_air)`` is level flight turned by gamma: the wings see
         the same flow when the body pitch is the table's plus gamma.  So the needed
         aerodynamic force ``m (a - g)`` is turned into the air-path frame, looked up at
-        the airspeed, and gamma is added to the table's pitch.  Below
-        :data:`CLIMB_SPEED` the turn fades out (at hover the flow direction means nothing).
+        the airspeed, and gamma is added to the table's pitch.  Below a forward airspeed
+        of :data:`CLIMB_SPEED` the turn fades out quadratically (none at hover, none when
+        flying backwards through the air).
         """
         m, grav = self.bird.mass, self.bird.gravity
         speed = math.hypot(vx_air, vz_air)
         gamma = math.atan2(vz_air, vx_air) if speed > 0 else 0.0
-        gamma *= min(1.0, (speed / CLIMB_SPEED) ** 2)
-        if vx_air < 0:  # flying backwards through the air: no turn (the table has V >= 0)
-            gamma = 0.0
+        # fade the turn out with the forward airspeed: hovering up or down is not level
+        # flight turned by 90 degrees as far as the table's reach is concerned
+        gamma *= min(1.0, (max(vx_air, 0.0) / CLIMB_SPEED) ** 2)
         f_x, f_z = m * ax, m * (az + grav)  # aerodynamic force needed, world
         c, s = math.cos(gamma), math.sin(gamma)
         w_x, w_z = c * f_x + s * f_z, -s * f_x + c * f_z  # in the air-path frame
