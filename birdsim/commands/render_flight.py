@@ -55,6 +55,16 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
         reference = DemandSchedule(flight) if isinstance(flight, Manoeuvre) else flight
         name = reference.name
         default_out = Path("renders") / f"{_slug(name)}-{model}.mp4"
+    if options.seconds is None:  # the whole flight: one line when it would exceed the longest video
+        from birdsim.render.options import MAX_SECONDS, RenderError
+
+        omega = float(log["omega"]) if reference is None else None
+        beats = float(log["t"][-1]) * omega / (2 * 3.141592653589793) if reference is None else float(reference.duration_beats)
+        if beats / options.beats_per_second > MAX_SECONDS:
+            raise RenderError(
+                f"{name!r} lasts {beats:g} wingbeats = {beats / options.beats_per_second:g} s of video at --beat-rate "
+                f"{options.beats_per_second:g}; allowed: at most {MAX_SECONDS:g} s (give --seconds or a higher --beat-rate)"
+            )
     out = Path(args.out) if args.out else default_out
     if out.suffix.lower() != ".mp4":
         raise BirdsimError(f"--out {str(out)!r} does not end in .mp4; allowed: a .mp4 path")
