@@ -1,4 +1,5 @@
-"""Cycle evaluation speed: batched vs one-at-a-time vs a plain per-sample loop."""
+"""Cycle evaluation speed: the fused kernel vs the numpy reference side by side, batched
+vs one-at-a-time vs a plain per-sample loop, gradients, and the passive callback's cost."""
 
 from __future__ import annotations
 
@@ -33,15 +34,74 @@ def _rate(fn, count: int, min_seconds: float = 1.0) -> float:
             return reps * count / elapsed
 
 
+def _kernel_vs_numpy(n: int = 64, count: int = 4096) -> None:
+    """Wall-clock wingbeats/s of both backends on the same parameter sets (best of 3),
+    and per CPU-second (process time over all threads: on a shared machine the wall
+    figure of the threaded kernel depends on what else runs)."""
+    import time as _t
+
+    from birdsim.physics import kernel
+    from birdsim.tables.cost import forces_and_gradients
+
+    print(f"kernel vs numpy, {count} wingbeats x {n} samples, kernel threads = {kernel.threads()}")
+    print(f"{'model':6s} {'kernel/s':>10s} {'numpy/s':>10s} {'ratio':>6s} | {'kernel/CPU-s':>12s} {'numpy/CPU-s':>12s} | {'grad/s':>8s}")
+    for model in birdsim.MODELS:
+        params, speed = _params(model, count)
+        best = {}
+        for _ in range(3):
+            for be in ("kernel", "numpy"):
+                t0, c0 = _t.perf_counter(), _t.process_time()
+                birdsim.evaluate_cycle(model, params, speed, n=n, backend=be).mean
+                w, c = count / (_t.perf_counter() - t0), count / max(_t.process_time() - c0, 1e-9)
+                bw, bc = best.get(be, (0.0, 0.0))
+                best[be] = (max(bw, w), max(bc, c))
+        m = birdsim.get_model(model)
+        X = np.stack([params[k] for k in m.param_names], axis=-1)
+        grad = _rate(lambda: forces_and_gradients(m, X, speed, birdsim.Bird(), n), count, 0.5)
+        (kw, kc), (nw, nc) = best["kernel"], best["numpy"]
+        print(f"{model:6s} {kw:10.0f} {nw:10.0f} {kw / nw:5.1f}x | {kc:12.0f} {nc:12.0f} | {grad:8.0f}")
+    print("targets (issue 17): m4 kernel >= 2e5/s and >= 4x numpy; m3 kernel >= 4e5/s")
+
+
+def _callback_cost() -> None:
+    """Microseconds per call of the passive aero callback (what every MuJoCo step pays)."""
+    import time as _t
+
+    import mujoco
+
+    from birdsim.mujoco.callback import AeroCallback
+    from birdsim.mujoco.driver import trajectory
+    from birdsim.mujoco.model import build_model
+
+    bird = birdsim.Bird()
+    for name in ("m1", "m4"):
+        m = build_model(name, bird, scene=True)
+        traj = trajectory(m, name, birdsim.get_model(name).guess("cruise"), np.arange(8) * m.opt.timestep, bird,
+                          position_seed=(0, 0, -50), velocity_seed=(0.5, 0, 0.2))
+        d = mujoco.MjData(m)
+        d.qpos[:], d.qvel[:] = traj.qpos[3], traj.qvel[3]
+        mujoco.mj_forward(m, d)
+        cb = AeroCallback(m, name, bird)
+        best = np.inf
+        for _ in range(5):
+            t0 = _t.perf_counter()
+            for _ in range(1000):
+                cb(m, d)
+            best = min(best, (_t.perf_counter() - t0) / 1000)
+        print(f"passive callback {name}: {best * 1e6:6.1f} us per call (climbing body: drag with X and Z parts)")
+
+
 def main() -> None:
+    _kernel_vs_numpy()
+    _callback_cost()
     n = 64
-    print(f"wingbeat evaluations per second, {n} samples each (mean forces and power of one wing)")
+    print(f"numpy path: wingbeat evaluations per second, {n} samples each (mean forces and power of one wing)")
     print(f"{'model':6s} {'batched':>12s} {'one-at-a-time':>14s} {'plain loop':>11s} {'batch/one':>10s} {'batch/plain':>12s}")
     for model in birdsim.MODELS:
         params, speed = _params(model, 4096)
-        batched = _rate(lambda: birdsim.evaluate_cycle(model, params, speed, n=n).mean, 4096)
+        batched = _rate(lambda: birdsim.evaluate_cycle(model, params, speed, n=n, backend="numpy").mean, 4096)
         single_p = {k: float(v[0]) for k, v in params.items()}
-        one = _rate(lambda: birdsim.evaluate_cycle(model, single_p, float(speed[0]), n=n).mean, 1, 0.5)
+        one = _rate(lambda: birdsim.evaluate_cycle(model, single_p, float(speed[0]), n=n, backend="numpy").mean, 1, 0.5)
         if model != "m4":  # the appendix transcription covers the single-panel models
             times = np.linspace(0, 2 * np.pi, n, endpoint=False)
             plain = _rate(lambda: flapcost_histories(model, single_p, float(speed[0]), times), 1, 0.5)

@@ -12,9 +12,11 @@ import time
 
 import numpy as np
 
-from birdsim.tables import build as B
+from birdsim.physics.bird import Bird
+from birdsim.tables import sweeps as B
 from birdsim.tables.build import BuildConfig, Grid, build_table, solve_slice
 from birdsim.tables.cost import forces
+from birdsim.tables.smoothness import table_smoothness
 from birdsim.physics.kinematics import MODELS, get_model
 
 TARGETS = {"base": 10.0, "m4": 60.0}  # seconds, issue 3
@@ -60,11 +62,11 @@ def batched_gradient_ratio(model: str = "m4") -> None:
     reps = 100
     t0 = time.perf_counter()
     for _ in range(reps):
-        forces(m, X, 0.5, B.Bird(), 32)
+        forces(m, X, 0.5, Bird(), 32)
     t1 = time.perf_counter()
     for _ in range(reps):
         for row in X:
-            forces(m, row[None], 0.5, B.Bird(), 32)
+            forces(m, row[None], 0.5, Bird(), 32)
     t2 = time.perf_counter()
     one, many = (t1 - t0) / reps, (t2 - t1) / reps
     print(f"{model} gradient, {len(X)} wingbeats at n=32: batched {1e3 * one:.2f} ms, one by one {1e3 * many:.2f} ms -> {many / one:.1f}x")
@@ -77,12 +79,16 @@ def full_tables(models: list[str]) -> None:
         t = build_table(BuildConfig(model, Grid.default(11)), jobs=jobs)
         dt, cpu = time.perf_counter() - t0, _cpu_all() - c0
         c = t.meta["counts"]
+        rp = t.meta.get("regularising_pass", {})
+        sm = table_smoothness(t)
         target = f" (target < {TARGETS[model]:.0f} s: {'met' if dt < TARGETS[model] else 'MISSED'})" if model in TARGETS else ""
         print(
             f"{model}: 11^3 table in {dt:.1f} s on {jobs} processes = {1331 / dt:.0f} cells/s{target}; "
             f"{cpu:.1f} CPU s (= {cpu / jobs:.1f} s on {jobs} idle cores); "
             f"{c['ok']} ok, {c['unreachable']} unreachable, {c['failed']} failed; "
-            f"{t.evaluations.sum() / 1331:.0f} wingbeats evaluated per cell"
+            f"{t.evaluations.sum() / 1331:.0f} wingbeats evaluated per cell; "
+            f"regularising pass {rp.get('seconds', 0):.1f} s of it ({rp.get('cells_resolved', 0)} cells re-solved), "
+            f"zig-zag share {100 * sm.zigzag_share:.1f} %"
         )
 
 

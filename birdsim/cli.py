@@ -7,6 +7,7 @@ import argparse
 import importlib
 import sys
 
+from birdsim.commands.common import translate
 from birdsim.errors import BirdsimError
 
 #: Subcommand modules, in the order ``birdsim --help`` lists them.
@@ -18,9 +19,29 @@ COMMAND_MODULES = (
     "birdsim.commands.render",
     "birdsim.commands.fly",
     "birdsim.commands.crosscheck",
+    "birdsim.commands.export",
+    "birdsim.commands.bird",
+    "birdsim.commands.params",
     "birdsim.commands.envelope",
+    "birdsim.commands.validate",
 )
 
+
+#: The library names Python arguments at the start of its messages; per subcommand, the
+#: flag each one is on the command line (see ``commands.common.translate``).
+FLAG_NAMES: dict[str, dict[str, str]] = {
+    "forces": {"model ": "--model ", "parameter ": "--param ", "speed=": "--speed=", "n=": "--samples "},
+    "tables": {
+        "model ": "--model ", "screen=": "--screen ", "starts=": "--starts ", "relax=": "--relax ",
+        "reach_tol=": "--reach-tol ", "cost weight power=": "--power-weight ", "cost weight distance=": "--distance ",
+        "Fx=": "--Fx=", "Fz=": "--Fz=", "V=": "--V=", "path (json) ": "--out (json) ", "path ": "--out ",
+    },
+    "render": {"model ": "--model ", "path ": "--out "},
+    "report": {"out=": "--out ", "only=": "--only "},
+    "crosscheck": {"model ": "--model "},
+}
+#: Python hints inside a message and their flags.
+FLAG_HINTS = {"force=True (--force on the command line)": "--force", "force=True": "--force", "clip=True": "--clip"}
 
 #: What ``birdsim --help`` says first (the module docstring is for developers).
 DESCRIPTION = (
@@ -56,7 +77,8 @@ def main(argv: list[str] | None = None) -> int:
     try:
         return int(args.func(args) or 0)
     except BirdsimError as exc:
-        print(f"birdsim {args.command}: error: {exc}", file=sys.stderr)
+        message = translate(str(exc), FLAG_NAMES.get(args.command, {}), FLAG_HINTS)
+        print(f"birdsim {args.command}: error: {message}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:
         print(f"birdsim {args.command}: interrupted", file=sys.stderr)

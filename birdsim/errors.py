@@ -1,7 +1,11 @@
 """Typed exceptions for user errors.
 
 Every message is one line that names the argument, the value and what is allowed.
-The command line prints it without a traceback and exits with status 2.
+The library names its Python arguments and starts the message with the name
+(``speed=nan is invalid; ...``, ``model 'm9' is unknown; ...``, ``path='b.toml' does
+not exist; ...``); the command line maps that name to the flag the user typed
+(``birdsim.cli.FLAG_NAMES``, ``birdsim.commands.common.flag_names``), prints the line
+without a traceback and exits with status 2.
 """
 
 from __future__ import annotations

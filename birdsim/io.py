@@ -9,11 +9,26 @@ from pathlib import Path
 from birdsim.errors import BirdsimError
 
 
-def check_output(path: Path, force: bool, arg: str = "--out") -> Path:
-    """Refuse an existing output without ``force`` and an output whose folder cannot be made."""
+def check_output(path: Path, force: bool, arg: str = "path") -> Path:
+    """Check that ``path`` can be written, before any work.
+
+    Args:
+        path: the output file.
+        force: whether an existing file may be overwritten.
+        arg: how the message names the output: the caller's Python argument (the CLI
+            passes its flag, or maps the name to it).
+
+    Returns:
+        ``path`` as a :class:`Path`; its folder exists afterwards.
+
+    Raises:
+        BirdsimError: one line when the file exists (without ``force``), is a folder,
+            or its folder cannot be made or written into (probed with a real file:
+            permission bits do not bind root).
+    """
     path = Path(path)
     if path.exists() and not force:
-        raise BirdsimError(f"{arg} {str(path)!r} exists; allowed: a new path, or --force to overwrite")
+        raise BirdsimError(f"{arg} {str(path)!r} exists; allowed: a new path, or force=True to overwrite")
     if path.exists() and path.is_dir():
         raise BirdsimError(f"{arg} {str(path)!r} is a directory; allowed: a file path")
     try:
@@ -23,6 +38,10 @@ def check_output(path: Path, force: bool, arg: str = "--out") -> Path:
         raise BirdsimError(f"{arg} {str(path)!r} cannot be created: {why}") from None
     if not os.access(path.parent, os.W_OK):
         raise BirdsimError(f"{arg} {str(path)!r} is not writable; allowed: a path in a writable folder")
+    try:
+        os.unlink(temporary_sibling(path))
+    except OSError as exc:
+        raise BirdsimError(f"{arg} {str(path)!r} is not writable: {exc.strerror}; allowed: a path in a writable folder") from None
     return path
 
 

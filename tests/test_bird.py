@@ -46,7 +46,7 @@ def test_bad_files_and_keys(tmp_path):
     bad.write_text("wingspan = 2.0")
     with pytest.raises(BirdConfigError, match="'wingspan' is unknown"):
         Bird.from_toml(bad)
-    with pytest.raises(BirdConfigError, match="--set strips='x' is not an integer"):
+    with pytest.raises(BirdConfigError, match="overrides: strips='x' is not an integer"):
         Bird().with_overrides({"strips": "x"})
     with pytest.raises(BirdConfigError, match="names no bird field"):
         Bird().with_overrides({"wingspan": "2"})

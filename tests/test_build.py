@@ -4,6 +4,7 @@ shipped tables (rebuilt corners, optimiser quality, the regimes of sec. 4.1)."""
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from concurrent.futures import Executor, Future, ThreadPoolExecutor
 from pathlib import Path
 
@@ -115,6 +116,105 @@ def test_interrupted_build_resumes_from_checkpoints(tmp_path, small_base):
     np.testing.assert_array_equal(t.params, small_base.params)  # same answer as uninterrupted
 
 
+def test_a_failed_final_write_keeps_the_checkpoints_and_resumes_to_the_same_table(tmp_path, monkeypatch, small_base):
+    """Defect: the checkpoints were deleted before the final save, so a failed save (disk
+    full, unwritable target, Ctrl-C) lost the whole build."""
+    import birdsim.io
+    from birdsim.tables.lookup import LookupTable
+
+    cfg = BuildConfig("base", SMALL)
+    ckpt, out = tmp_path / ".t.build", tmp_path / "t.npz"
+    real_save = LookupTable.save
+
+    def disk_full(self, path, force=False):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(LookupTable, "save", disk_full)
+    with pytest.raises(BirdsimError, match=r"--out .*t.npz' could not be written: No space left on device; .*run the same command again"):
+        build_table(cfg, jobs=1, checkpoint_dir=ckpt, out=out)
+    assert not out.exists() and len(list(ckpt.glob("*.npz"))) == len(SMALL.V) + len(SMALL.Fx)
+    monkeypatch.setattr(LookupTable, "save", real_save)
+    again = FailingAfter(0)
+    t = build_table(cfg, executor=again, checkpoint_dir=ckpt, out=out)
+    assert again.submitted == []  # nothing recomputed
+    assert not ckpt.exists()
+    written = load_table(out)
+    for name in ("params", "cost", "achieved", "status_code", "evaluations", "converged"):
+        np.testing.assert_array_equal(getattr(written, name), getattr(small_base, name))
+        np.testing.assert_array_equal(getattr(t, name), getattr(small_base, name))
+    # a write interrupted half-way (second file) also keeps them
+    calls = []
+
+    def second_write_fails(path, data):
+        calls.append(path)
+        if len(calls) == 2:
+            raise KeyboardInterrupt
+        return real_write(path, data)
+
+    import birdsim.tables.lookup as lookup_module
+
+    real_write = birdsim.io.write_atomic
+    monkeypatch.setattr(lookup_module, "write_atomic", second_write_fails)
+    with pytest.raises(KeyboardInterrupt):
+        build_table(cfg, jobs=1, checkpoint_dir=ckpt, out=out, force=True)
+    assert len(list(ckpt.glob("*.npz"))) == len(SMALL.V) + len(SMALL.Fx)
+
+
+def test_checkpoints_of_another_version_or_configuration_are_discarded_with_a_reason(tmp_path, monkeypatch):
+    import birdsim
+
+    cfg = BuildConfig("base", SMALL)
+    ckpt = tmp_path / "ck"
+    Checkpoints(ckpt, cfg.digest(), cfg.stamp()).save("slice_V000", {"params": np.zeros(1)})
+    same = Checkpoints(ckpt, cfg.digest(), cfg.stamp())
+    assert same.discarded is None and (ckpt / "slice_V000.npz").exists()
+    monkeypatch.setattr(birdsim, "__version__", "9.9.9")
+    assert cfg.stamp()["package_version"] == "9.9.9"
+    upgraded = Checkpoints(ckpt, cfg.digest(), cfg.stamp())
+    assert upgraded.discarded is not None and "birdsim 0.1.0 (this is 9.9.9)" in upgraded.discarded
+    assert "starts afresh" in upgraded.discarded and not (ckpt / "slice_V000.npz").exists()
+    monkeypatch.undo()
+    # the optimiser's fixed settings and the solver settings are in the digest too
+    import birdsim.tables.optimize as optimize
+
+    d0 = cfg.digest()
+    monkeypatch.setattr(optimize, "FD_STEP", 1e-7)
+    assert cfg.digest() != d0
+    monkeypatch.undo()
+    assert BuildConfig("base", SMALL, settings=BuildSettings(maxiter=50)).digest() != d0
+    other = BuildConfig("base", SMALL, settings=BuildSettings(maxiter=50))
+    Checkpoints(ckpt, d0, cfg.stamp()).save("slice_V000", {"params": np.zeros(1)})
+    changed = Checkpoints(ckpt, other.digest(), other.stamp())
+    assert "another configuration" in changed.discarded
+
+
+def test_the_same_table_twice_and_on_one_or_two_processes_is_bitwise_identical(small_base):
+    again = build_table(BuildConfig("base", SMALL), jobs=1)
+    pooled = build_table(BuildConfig("base", SMALL), jobs=2)
+    for t in (again, pooled):
+        for name in ("params", "cost", "cost_fractions", "achieved", "status_code", "evaluations", "converged"):
+            a, b = getattr(t, name), getattr(small_base, name)
+            assert a.dtype == b.dtype and a.tobytes() == b.tobytes(), name
+
+
+@pytest.mark.parametrize(
+    "argv, flag",
+    [(["--screen", "0"], "--screen 0"), (["--starts", "-1"], "--starts -1"), (["--relax", "0"], "--relax 0"),
+     (["--relax", "nan"], "--relax"), (["--reach-tol", "0"], "--reach-tol 0"), (["--power-weight", "-1"], "--power-weight -1"),
+     (["--distance", "inf"], "--distance"), (["--smooth-tol", "-1"], "--smooth-tol -1"), (["--jobs", "0"], "--jobs 0"), (["--size", "1"], "--size 1")],
+)
+def test_build_option_errors_name_the_flag(tmp_path, capsys, argv, flag):
+    from birdsim.cli import main
+
+    out = tmp_path / "t.npz"
+    assert main(["tables", "build", "--model", "base", "--out", str(out), "--quiet", *argv]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and flag in err, err
+    internal = ("screen=", "starts=", "relax=", "reach_tol=", "distance=", "power=", "cost weight")
+    assert not any(f" {name}" in err for name in internal), err  # the user typed flags, not fields
+    assert not any(tmp_path.iterdir())
+
+
 def test_checkpoints_never_clear_a_foreign_folder_and_recompute_damaged_files(tmp_path):
     mine = tmp_path / "mine"
     mine.mkdir()
@@ -140,7 +240,7 @@ def test_checkpoints_never_clear_a_foreign_folder_and_recompute_damaged_files(tm
         (empty / "slice_V000.npz").write_bytes(full[:cut])
         assert ck.load("slice_V000") is None
     assert Checkpoints(empty, "other").load("slice_V000") is None  # another configuration clears it
-    assert not any(empty.iterdir()) or (empty / "config.sha").read_text().strip() == "other"
+    assert (empty / "config.sha").read_text().splitlines()[0] == "other"
 
 
 def test_any_executor_gives_the_same_table(small_base):
@@ -192,18 +292,24 @@ def test_rebuilt_corner_matches_the_shipped_table(model):
     # slice (the sweep starts there), so rebuilding them over every V repeats the build's
     # forward sweep exactly; the later passes only accept cheaper answers (in the full
     # build also from neighbours outside the corner, so a corner that missed a cheaper
-    # branch would show here).  Costs agree to 1e-6 (solver tolerance, plus last-bit
-    # differences of batched sin/cos that SLSQP can amplify where the optimum is flat).
+    # branch would show here).  The corner is rebuilt without the regularising pass: the
+    # shipped cells then cost at most smooth_tol more (the pass's tie-break) and never
+    # less than 1e-6 below (solver tolerance, plus last-bit differences of batched
+    # sin/cos that SLSQP can amplify where the optimum is flat).
     t = shipped(model)
     cfg = config_from_meta(t)
-    cfg = BuildConfig(cfg.model, sub_grid(cfg.grid, [9, 10], [0, 1], range(11)), cfg.bird, cfg.weights, cfg.settings)
+    tol = cfg.settings.smooth_tol
+    settings = replace(cfg.settings, smooth_tol=0.0)
+    cfg = BuildConfig(cfg.model, sub_grid(cfg.grid, [9, 10], [0, 1], range(11)), cfg.bird, cfg.weights, settings)
     corner = build_table(cfg, jobs=1)
-    np.testing.assert_allclose(corner.cost, t.cost[9:, :2, :], atol=1e-6)
+    diff = t.cost[9:, :2, :] - corner.cost
+    assert diff.min() >= -1e-6 and diff.max() <= tol + 1e-6
     np.testing.assert_array_equal(corner.status, t.status[9:, :2, :])
-    # parameters: equal where the optimum is sharp; a flat direction (e.g. the wrist lag
-    # when the wrist amplitude is zero) may wander without changing the cost
+    # parameters: equal where the optimum is sharp and the pass left the cell alone; a
+    # flat direction (e.g. the wrist lag when the wrist amplitude is zero) may wander
+    same = np.abs(diff) < 1e-6
     close = np.abs(corner.params - t.params[9:, :2, :]) < 1e-3
-    assert close.mean() > 0.9
+    assert close[same].mean() > 0.9
 
 
 @pytest.mark.parametrize("model", MODELS)
@@ -212,15 +318,17 @@ def test_fresh_multistart_never_beats_the_table(model):
     # cost (costs are O(0.01-1)): the builder keeps the warm-start branch unless another
     # start beats it by 1e-4 (by design), and over 260 sampled cells of all five tables
     # (docs/tables.md) the worst loss was 1.3e-3, at an m2 cell with zero force demand
-    # where the cost is power only and the sweep direction is nearly flat.
+    # where the cost is power only and the sweep direction is nearly flat; plus the
+    # regularising pass's tolerance (smooth_tol: a smoother wingbeat may cost that much more).
     t = shipped(model)
+    margin = 2e-3 + t.meta["solver"].get("smooth_tol", 0.0)
     rng = np.random.default_rng(2024 + MODELS.index(model))
     for _ in range(3):
         i, j, k = (int(x) for x in rng.integers(0, 11, 3))
         demand = (t.axes["Fx"][i], t.axes["Fz"][j], t.axes["V"][k])
         prob = ForceProblem(model, *demand, n=64)
         fresh = multistart(prob, random_starts(prob, 12, seed=int(rng.integers(1 << 30))))
-        assert t.cost[i, j, k] <= fresh.cost + 2e-3, (demand, t.cost[i, j, k], fresh.cost, fresh.x)
+        assert t.cost[i, j, k] <= fresh.cost + margin, (demand, t.cost[i, j, k], fresh.cost, fresh.x)
 
 
 def regime(t, Fx, Fz, V):
@@ -254,7 +362,7 @@ def test_regimes_of_sec_4_1(model):
 @pytest.mark.parametrize("model", MODELS)
 def test_fresh_multistart_never_beats_the_table_over_many_cells(model):
     # the same check as above over 25 cells per model (seconds per model); the
-    # same 2e-3 margin and reasoning
+    # same margin and reasoning
     t = shipped(model)
     rng = np.random.default_rng(77 + MODELS.index(model))
     worst = 0.0
@@ -264,7 +372,7 @@ def test_fresh_multistart_never_beats_the_table_over_many_cells(model):
         prob = ForceProblem(model, *demand, n=64)
         fresh = multistart(prob, random_starts(prob, 16, seed=int(rng.integers(1 << 30))))
         worst = max(worst, t.cost[i, j, k] - fresh.cost)
-    assert worst <= 2e-3, worst
+    assert worst <= 2e-3 + t.meta["solver"].get("smooth_tol", 0.0), worst
 
 
 def _slow_slice(cfg, k):  # a V slice that would take half a minute
@@ -280,6 +388,7 @@ def test_interrupted_build_stops_its_workers_at_once(tmp_path, monkeypatch):
     import time
 
     import birdsim.tables.build as build
+    import birdsim.tables.runner as runner
 
     pools = []
 
@@ -295,7 +404,7 @@ def test_interrupted_build_stops_its_workers_at_once(tmp_path, monkeypatch):
         time.sleep(0.5)  # the workers are asleep in _slow_slice
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(build, "as_completed", interrupted)
+    monkeypatch.setattr(runner, "as_completed", interrupted)
     t0 = time.perf_counter()
     with pytest.raises(KeyboardInterrupt):
         build_table(BuildConfig("base", SMALL), jobs=2, checkpoint_dir=tmp_path / "ckpt")
@@ -304,3 +413,44 @@ def test_interrupted_build_stops_its_workers_at_once(tmp_path, monkeypatch):
     for p in workers:
         p.join(timeout=5)
     assert not any(p.is_alive() for p in workers)
+
+
+# ---- the climb axis (issue 11) ----------------------------------------------------------------
+
+
+def test_grid_with_a_climb_axis():
+    g = Grid.parse("V=0|1", size=3, climb=True)
+    assert g.axis_names == ("Fx", "Fz", "V", "climb") and g.shape == (3, 3, 2, 7)
+    assert g.climb[0] == -0.5 and g.climb[-1] == 0.5 and g.climb[3] == 0.0
+    assert Grid.parse("climb=-0.2:0.2:3").climb == (-0.2, 0.0, 0.2)
+    assert "climb" not in Grid.default().to_dict()  # level-flight digests are those of before
+    with pytest.raises(BirdsimError, match=r"--grid climb=\[0.1, 0.0\] is invalid"):
+        Grid.parse("climb=0.1|0")
+
+
+def test_a_climb_table_continues_the_level_table_and_records_the_axis(tmp_path):
+    level = Grid.parse("Fx=0|0.25,Fz=-0.25|0,V=0.5|0.9")
+    climbing = Grid(level.Fx, level.Fz, level.V, (-0.2, 0.0, 0.2))
+    settings = BuildSettings(smooth_tol=0.0)
+    t3 = build_table(BuildConfig("base", level, settings=settings), jobs=1)
+    t4 = build_table(BuildConfig("base", climbing, settings=settings), jobs=1, out=tmp_path / "c.npz")
+    # climb = 0: the same slices and V passes; the climb passes only keep answers cheaper
+    # at the search resolution (1e-9: n = 32 search vs the n = 64 check)
+    assert np.all(t4.cost[..., 1] <= t3.cost + 1e-9)
+    np.testing.assert_array_equal(t4.status[..., 1], t3.status)
+    back = load_table(tmp_path / "c.npz")
+    assert back.axis_names[-1] == "climb" and back.meta["grid"]["climb"] == [-0.2, 0.0, 0.2]
+    assert config_from_meta(back).grid == climbing
+    # the stored forces are those of the climbing bird: re-evaluate one cell independently
+    prob = ForceProblem("base", 0.25, -0.25, 0.9, n=64, climb=0.2)
+    np.testing.assert_allclose(prob.achieved(back.params[1, 0, 1, 2])[:2], back.achieved[1, 0, 1, 2, :2], atol=1e-12)
+    # climbing costs more lift than descending for the same demand where both are reachable
+    ok = (back.status[..., 0] == "ok") & (back.status[..., 2] == "ok")
+    assert ok.any() and np.mean(back.cost[..., 2][ok]) > np.mean(back.cost[..., 0][ok])
+    # optimiser quality on the new axis as on the others: cells off climb = 0 are not
+    # beaten by a fresh 12-start multi-start by more than the margin of the shipped-table test
+    for cell in ((0, 0, 1, 0), (1, 1, 0, 2), (0, 1, 1, 2)):
+        demand = tuple(back.axes[a][i] for a, i in zip(back.axis_names, cell))
+        prob = ForceProblem("base", *demand[:3], n=64, climb=demand[3])
+        fresh = multistart(prob, random_starts(prob, 12, seed=sum(cell)))
+        assert back.cost[cell] <= fresh.cost + 2e-3, (demand, back.cost[cell], fresh.cost)

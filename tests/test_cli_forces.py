@@ -34,7 +34,6 @@ def test_forces_geometry_override_changes_result(capsys):
     [
         (["--model", "m9", "--speed", "0", *HOVER], "model 'm9' is unknown"),
         (["--model", "m1", "--speed", "0", *HOVER, "--param", "sweep=0.1"], "'sweep' is unknown"),
-        (["--model", "m1", "--speed", "0", "--param", "pitch=0.1"], "flap_amp is missing"),
         (["--model", "m1", "--speed", "0", *HOVER[:-1], "twist_amp=2"], "out of bounds"),
         (["--model", "m1", "--speed", "nan", *HOVER], "speed=nan is invalid"),
         (["--model", "m1", "--speed", "-1", *HOVER], "speed=-1.0 is invalid"),
@@ -44,6 +43,8 @@ def test_forces_geometry_override_changes_result(capsys):
         (["--model", "m1", "--speed", "0", *HOVER[:-1], "twist_amp=x"], "not a number; allowed"),
         (["--model", "m1", "--speed", "0", *HOVER, "--bird", "/nonexistent.toml"], "does not exist"),
         (["--model", "m1", "--speed", "0", *HOVER, "--samples", "0"], "--samples 0 is invalid; allowed: an integer >= 2"),
+        (["--model", "m1", "--speed", "0", *HOVER, "--climb", "nan"], "--climb nan is invalid"),
+        (["--model", "m1", "--speed", "0", *HOVER, "--climb", "up"], "--climb='up' is not a number"),
     ],
 )
 def test_forces_bad_input_one_line(args, text, capsys):
@@ -68,3 +69,32 @@ def test_examples_table(capsys):
     assert main(["examples"]) == 0
     out = capsys.readouterr().out
     assert out.count("\n") == 12 and " 88 m4" in out
+
+
+def test_forces_fills_missing_parameters_from_the_defaults(capsys):
+    """A parameter not given takes the model's default (hover at V = 0, cruise otherwise),
+    the output says which, and the result equals giving them all."""
+    import json
+
+    from birdsim.physics.kinematics import get_model
+
+    assert main(["forces", "--model", "m3", "--speed", "0.5", "--param", "pitch=0.2", "--json"]) == 0
+    partial = json.loads(capsys.readouterr().out)
+    cruise = get_model("m3").guess("cruise")
+    assert partial["filled"] == {k: v for k, v in cruise.items() if k != "pitch"}
+    full = ["--param", "pitch=0.2"] + [a for k, v in partial["filled"].items() for a in ("--param", f"{k}={v!r}")]
+    assert main(["forces", "--model", "m3", "--speed", "0.5", *full, "--json"]) == 0
+    given = json.loads(capsys.readouterr().out)
+    assert given["filled"] == {} and given["mean"] == partial["mean"]
+    assert main(["forces", "--model", "m1", "--speed", "0", "--param", "pitch=0.1"]) == 0
+    assert "filled from the model's hover defaults (not given): flap_amp = 1.5708, twist_amp = 0.785398" in capsys.readouterr().out
+
+
+def test_forces_climb_matches_api(capsys):
+    assert main(["forces", "--model", "m1", "--speed", "0.4", "--climb", "-0.3", *HOVER, "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    c = evaluate_cycle("m1", dict(pitch=1.5, flap_amp=1.5, twist_amp=0.7), 0.4, climb=-0.3)
+    assert out["climb"] == -0.3 and out["body_drag_z"] == pytest.approx(float(c.body_drag_z), abs=1e-15)
+    for k in ("Fx", "Fz", "P"):
+        assert out["mean"][k] == pytest.approx(float(getattr(c.mean, k)), abs=1e-15)
+    assert out["body_drag_z"] < 0  # sinking: the air comes from below, the drag pushes up

@@ -67,3 +67,17 @@ def test_zero_cost_has_zero_fractions():
 def test_bad_weight_names_itself(bad):
     with pytest.raises(BirdsimError, match="cost weight power="):
         CostWeights(power=bad)
+
+
+def test_climb_threads_through_cost_and_force_problem():
+    from birdsim.tables.optimize import ForceProblem
+
+    m = get_model("m3")
+    X = np.array([[0.3, 0.8, 0.3, 0.2]])
+    b = evaluate_cost(m, X, 0.1, -0.2, 0.5, climb=0.3)
+    c = evaluate_cycle("m3", {k: X[0, i] for i, k in enumerate(m.param_names)}, 0.5, climb=0.3).mean
+    assert float(b.Fz[0]) == float(c.Fz) and float(b.Fx[0]) == float(c.Fx)
+    prob = ForceProblem(m, 0.1, -0.2, 0.5, climb=0.3, n=64)
+    assert prob.achieved(X[0]) == (float(c.Fx), float(c.Fz), float(c.P))
+    level = evaluate_cost(m, X, 0.1, -0.2, 0.5)
+    assert float(level.Fz[0]) != float(b.Fz[0])

@@ -111,3 +111,28 @@ def test_strips_are_applied_along_the_span():
     # right wing offsets point to -y (outward), left to +y, symmetric about the CP
     np.testing.assert_allclose(cb.offsets[0], -cb.offsets[1])
     np.testing.assert_allclose(cb.areas.sum(axis=1), bird.semispan * bird.chord)
+
+
+@pytest.mark.parametrize("theta, v, climb", [(0.4, 0.7, 0.3), (0.2, 0.5, -0.4), (1.2, 0.0, 0.6), (0.4, 0.7, 0.0)])
+def test_body_drag_of_a_climbing_body_is_the_cores(theta, v, climb):
+    # The held body meets the air at (V, 0, climb) in the MuJoCo world (z up): the callback's
+    # body drag (from the true air-relative velocity) must be evaluate_cycle's (Dx, Dz) for
+    # that climb, turned into MuJoCo axes (C = diag(1, -1, -1)).  Same formula, different
+    # arithmetic: 1e-12.
+    from birdsim import evaluate_cycle
+
+    bird = Bird()
+    params = {"pitch": theta, "flap_amp": 0.0, "twist_amp": 0.0}
+    m = held_model("m1", params, v, bird)
+    m.opt.wind[2] = -climb  # the air moves down past a climbing body
+    d = mujoco.MjData(m)
+    set_pose(m, d, {}, pitch=theta, position_seed=(0, 0, -2), forward=False)
+    mujoco.mj_forward(m, d)
+    cb = AeroCallback(m, "m1", bird)
+    d.qfrc_passive[:] = 0.0
+    cb._apply_body_drag(m, d)
+    cyc = evaluate_cycle("m1", params, v, climb=climb, bird=bird)
+    expected = np.array([float(cyc.body_drag_x), 0.0, -float(cyc.body_drag_z)])
+    np.testing.assert_allclose(d.qfrc_passive[:3], expected, rtol=0, atol=1e-12)
+    if climb > 0:
+        assert expected[2] < 0  # a climbing body is pushed down

@@ -53,3 +53,19 @@ def test_no_table_for_this_bird_is_one_line(tmp_path):
     ) as exc:
         shipped_table(odd, "m3", PACKAGE_TABLES)
     assert "\n" not in str(exc.value)
+
+
+def test_tables_build_reduces_an_si_bird(tmp_path):
+    # `tables build --bird pigeon.toml` builds for the pigeon's reduced bird: the table is
+    # in table units (here 8 reachable cells of Fz -0.2/-0.1, which in newtons would be a
+    # fiftieth of the pigeon's weight) and serves the SI pigeon
+    from birdsim.cli import main
+
+    out = tmp_path / "p.npz"
+    grid = "Fx=0:0.1:2,Fz=-0.2:-0.1:2,V=0.4:0.5:2"
+    argv = ["tables", "build", "--model", "base", "--bird", "models/pigeon.toml", "--grid", grid]
+    assert main([*argv, "--out", str(out), "--jobs", "1", "--quiet"]) == 0
+    t = load_table(out)
+    assert t.bird == reduced_bird(PIGEON)
+    t.require_bird(PIGEON)
+    assert (t.status_code == 0).all()

@@ -108,7 +108,7 @@ def test_save_load_round_trip_and_no_silent_overwrite(tmp_path):
         for name in ("params", "cost", "cost_fractions", "achieved", "status_code", "evaluations"):
             np.testing.assert_array_equal(getattr(u, name), getattr(t, name))
         assert u.meta["note"] == "synthetic"
-    with pytest.raises(BirdsimError, match="exists; allowed: a new path, or --force"):
+    with pytest.raises(BirdsimError, match="exists; allowed: a new path, or force=True"):
         t.save(npz)
     t.save(npz, force=True)
     assert not list(tmp_path.glob(".*partial*"))  # atomic writes leave no temporaries
@@ -244,3 +244,49 @@ def test_cli_refuses_to_overwrite(tmp_path, capsys):
     t.save(tmp_path / "base")
     assert main(["tables", "build", "--model", "base", "--out", str(tmp_path / "base.npz")]) == 2
     assert "exists; allowed: a new path, or --force" in capsys.readouterr().err
+
+
+# ---- the optional climb axis (issue 11) ------------------------------------------------------
+
+
+def synthetic_climb(shape=(3, 3, 3, 4)) -> tuple[LookupTable, np.ndarray]:
+    """A 4-axis table affine in (Fx, Fz, V, climb): reproduced exactly by the lookup."""
+    axes = {"Fx": np.linspace(-0.5, 0.5, shape[0]), "Fz": np.linspace(-0.5, 0.0, shape[1]),
+            "V": np.linspace(0, 1, shape[2]), "climb": np.linspace(-0.5, 0.5, shape[3])}
+    D = np.stack(np.meshgrid(*axes.values(), indexing="ij"), axis=-1)
+    coef = np.array([[1.0, 0.2, -0.3, 0.4], [0.5, -1.0, 0.1, -0.2], [0.0, 0.3, 0.7, 0.1]])
+    params = D @ coef.T + np.array([0.8, 0.9, 0.3])
+    return LookupTable("base", Bird(), birdsim.get_model("base").param_names, axes, params, D[..., 2] ** 2,
+                       np.full(shape + (4,), 0.25), D[..., :3].copy(), np.zeros(shape, np.uint8),
+                       np.ones(shape, np.int64)), coef
+
+
+def test_a_climb_axis_is_interpolated_saved_and_loaded(tmp_path):
+    t, coef = synthetic_climb()
+    assert t.axis_names == ("Fx", "Fz", "V", "climb") and t.has_climb and t.shape == (3, 3, 3, 4)
+    rng = np.random.default_rng(1)
+    for _ in range(20):
+        d = np.array([rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0), rng.uniform(0, 1), rng.uniform(-0.5, 0.5)])
+        out = t.lookup(Fx=d[0], Fz=d[1], V=d[2], climb=d[3])
+        np.testing.assert_allclose(list(out.values()), coef @ d + [0.8, 0.9, 0.3], atol=1e-12)
+    with pytest.raises(TableError, match=r"climb=0.7 is outside the table grid; allowed: \[-0.5, 0.5\]"):
+        t.lookup(Fx=0, Fz=-0.2, V=0.5, climb=0.7)
+    with pytest.raises(TableError, match="climb=nan is not finite"):
+        t.lookup(Fx=0, Fz=-0.2, V=0.5, climb=float("nan"))
+    npz, js = t.save(tmp_path / "c.npz")
+    back = load_table(npz)
+    assert back.axis_names == t.axis_names
+    np.testing.assert_allclose(json.loads(js.read_text())["axes"]["climb"], [-0.5, -1 / 6, 1 / 6, 0.5], atol=1e-15)
+    np.testing.assert_array_equal(back.params, t.params)
+    assert t.status_at(0, -0.25, 0.5, climb=0.1) == "ok"
+
+
+def test_a_level_flight_table_answers_climb_zero_only():
+    t, _ = synthetic()
+    assert not t.has_climb and t.axis_names == AXES
+    assert t.lookup(Fx=0.1, Fz=-0.2, V=0.3, climb=0.0) == t.lookup(0.1, -0.2, 0.3)
+    with pytest.raises(TableError, match=r"climb=0.1 is outside the table grid; allowed: 0 \(a table without a climb axis"):
+        t.lookup(Fx=0.1, Fz=-0.2, V=0.3, climb=0.1)
+    assert t.lookup(Fx=0.1, Fz=-0.2, V=0.3, climb=0.1, clip=True) == t.lookup(0.1, -0.2, 0.3)
+    with pytest.raises(TableError, match="climb=inf is not finite"):
+        t.lookup_many(0.1, -0.2, 0.3, climb=np.inf)

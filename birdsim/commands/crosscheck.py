@@ -22,6 +22,9 @@ from birdsim.commands.common import add_bird_arguments, bird_from_args
 
 FORCE_NOTE = "whole bird (2 wings + body drag), seed earth axes (Fz < 0 is up)"
 FIGURE_SUFFIXES = (".png", ".pdf", ".svg")
+#: Largest ``--samples`` (MuJoCo steps per wingbeat) and ``--random`` (cases per model).
+MAX_SAMPLES = 10_000
+MAX_RANDOM = 10_000
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -56,10 +59,12 @@ def run(args: argparse.Namespace) -> int:
     from birdsim.mujoco.crosscheck import crosscheck
 
     models = list(MODELS) if args.model == "all" else [get_model(args.model).name]
-    if args.samples < 2:
-        raise BirdsimError(f"--samples {args.samples} is invalid; allowed: an integer >= 2")
-    if args.random < 0:
-        raise BirdsimError(f"--random {args.random} is invalid; allowed: an integer >= 0")
+    if not 2 <= args.samples <= MAX_SAMPLES:
+        raise BirdsimError(f"--samples {args.samples} is invalid; allowed: an integer in [2, {MAX_SAMPLES}]")
+    if not 0 <= args.random <= MAX_RANDOM:
+        raise BirdsimError(f"--random {args.random} is invalid; allowed: an integer in [0, {MAX_RANDOM}]")
+    if args.seed < 0:
+        raise BirdsimError(f"--seed {args.seed} is invalid; allowed: an integer >= 0")
     if args.figure and Path(args.figure).suffix.lower() not in FIGURE_SUFFIXES:
         raise BirdsimError(f"--figure {args.figure!r} has an unknown suffix; allowed: a path ending in {', '.join(FIGURE_SUFFIXES)}")
     figure = check_output(Path(args.figure), args.force, "--figure") if args.figure else None

@@ -58,6 +58,9 @@ def load_table_for(bird, model: str, table_arg: str | None):
 
     if table_arg:
         path = Path(table_arg)
+        npz = path if path.suffix in (".npz", ".json") else path.with_name(path.name + ".npz")
+        if not npz.with_suffix(".npz").exists():
+            raise BirdsimError(f"--table {str(path)!r} does not exist; allowed: a table file (.npz) written by `birdsim tables build`")
     else:
         try:
             from birdsim.tables.shipped import shipped_table

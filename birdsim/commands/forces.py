@@ -4,12 +4,15 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 
 from birdsim.physics.cycle import evaluate_cycle
-from birdsim.errors import BirdsimError, ParameterError
+from birdsim.errors import BirdsimError
 from birdsim.physics.kinematics import get_model
 from birdsim.commands.common import add_bird_arguments, bird_from_args, parse_pairs
 
+#: Most samples per wingbeat ``--samples`` accepts (the histories are N long per strip).
+MAX_SAMPLES = 100_000
 FORCE_NOTE = "right wing + body drag (the dissertation's flapcost force); whole_bird = 2 wings + body"
 
 
@@ -17,7 +20,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("forces", help="mean Fx, Fy, Fz and P of one wingbeat", description=__doc__)
     p.add_argument("--model", required=True, help="base, m1, m2, m3 or m4")
     p.add_argument("--speed", required=True, help="flight speed V >= 0 (non-dimensional)")
-    p.add_argument("--param", action="append", metavar="NAME=VALUE", help="a wingbeat parameter (radians)")
+    p.add_argument("--climb", default="0", help="vertical speed relative to the air, positive up (default 0)")
+    p.add_argument("--param", action="append", metavar="NAME=VALUE", help="a wingbeat parameter (radians); any not given is filled from the model's defaults (birdsim params)")
     p.add_argument("--samples", type=int, default=64, help="samples per wingbeat (default 64)")
     p.add_argument("--appendix-grid", action="store_true", help="the dissertation's grid: 11 samples, t=0 and t=T")
     p.add_argument("--json", action="store_true", help="print JSON (keys mean.Fx, mean.Fy, mean.Fz, mean.P)")
@@ -40,31 +44,40 @@ def run(args: argparse.Namespace) -> int:
     for name, value in raw.items():
         model.spec(name)  # unknown name -> one clear line
         params[name] = _float(f"--param {name}", value)
-    missing = [n for n in model.param_names if n not in params]
-    if missing:
-        raise ParameterError(f"--param {missing[0]} is missing for model {model.name}; required: {', '.join(model.param_names)}")
     speed = _float("--speed", args.speed)
-    if not args.appendix_grid and args.samples < 2:
-        raise BirdsimError(f"--samples {args.samples} is invalid; allowed: an integer >= 2")
+    # a parameter not given is filled from the model's defaults (hover at V = 0, else cruise)
+    regime = "hover" if speed == 0 else "cruise"
+    filled = {n: v for n, v in model.guess(regime).items() if n not in params}
+    params.update(filled)
+    climb = _float("--climb", args.climb)
+    if not math.isfinite(climb):
+        raise BirdsimError(f"--climb {args.climb} is invalid; allowed: a finite number (positive up)")
+    if not args.appendix_grid and not 2 <= args.samples <= MAX_SAMPLES:
+        raise BirdsimError(f"--samples {args.samples} is invalid; allowed: an integer >= 2 and <= {MAX_SAMPLES}")
     n, endpoint = (11, True) if args.appendix_grid else (args.samples, False)
-    cyc = evaluate_cycle(model, params, speed, bird=bird, n=n, endpoint=endpoint)
+    cyc = evaluate_cycle(model, params, speed, climb=climb, bird=bird, n=n, endpoint=endpoint)
     out = {
         "model": model.name,
         "speed": speed,
+        "climb": climb,
         "params": params,
         "samples": n,
+        "filled": filled,
         "force": FORCE_NOTE,
         "mean": cyc.mean.as_dict(),
         "whole_bird": cyc.whole_bird_mean.as_dict(),
         "panels": {k: v.as_dict() for k, v in cyc.panel_mean.items()},
         "body_drag_x": float(cyc.body_drag_x),
+        "body_drag_z": float(cyc.body_drag_z),
     }
-    if len(cyc.joint_power) > 1:
-        out["joint_power"] = {g: float(v.mean()) for g, v in cyc.joint_power.items()}
+    if len(cyc.joint_power_mean) > 1:
+        out["joint_power"] = {g: float(v) for g, v in cyc.joint_power_mean.items()}
     if args.json:
         print(json.dumps(out, indent=2))
         return 0
-    print(f"model {model.name}, V = {speed:g}, " + ", ".join(f"{k} = {v:g}" for k, v in params.items()))
+    print(f"model {model.name}, V = {speed:g}, climb = {climb:g}, " + ", ".join(f"{k} = {v:g}" for k, v in params.items()))
+    if filled:
+        print(f"filled from the model's {regime} defaults (not given): " + ", ".join(f"{k} = {v:g}" for k, v in filled.items()))
     print(f"force: {FORCE_NOTE}")
     print(f"{'':12s}{'Fx':>10s}{'Fy':>10s}{'Fz':>10s}{'P':>10s}")
     rows = [("mean", out["mean"]), ("whole bird", out["whole_bird"])]

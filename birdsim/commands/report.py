@@ -5,7 +5,6 @@ checked against our numbers.  Needs the optional extra ``pip install birdsim[plo
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 
 from birdsim.commands.common import add_bird_arguments, bird_from_args
 
@@ -28,7 +27,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 def run(args: argparse.Namespace) -> int:
     from birdsim.report.report import build_report
 
-    sections = build_report(Path(args.out), quick=args.quick, force=args.force, bird=bird_from_args(args), only=args.only)
+    sections = build_report(args.out, quick=args.quick, force=args.force, bird=bird_from_args(args), only=args.only, progress=None)
     figures = sum(len(s.entries) for s in sections)
     print(f"report: {figures} figures in {args.out}/ (open {args.out}/index.html)")
     for s in sections:

@@ -23,6 +23,7 @@ on a path).
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
@@ -84,6 +85,62 @@ def demand_from_acceleration(
     return wing_x + dx_table, wing_z
 
 
+#: Airspeed [omega s] above which :func:`air_path_demand` turns the table by the whole
+#: flight-path angle; below it the turn fades out quadratically (at hover the direction of
+#: the flow means nothing).
+CLIMB_SPEED = 0.2
+
+
+def air_path_demand(
+    ax_up: Any,
+    az_up: Any,
+    vx: Any,
+    vz: Any,
+    bird: Bird,
+    pitch: Any,
+    *,
+    climb_speed: float = CLIMB_SPEED,
+) -> tuple[Any, Any, Any, Any]:
+    """The table demand for climbing or descending flight read in the air-path frame.
+
+    Tables are built for level flight. Flying along an air path inclined by
+    ``gamma = atan2(vz, vx)`` is level flight turned by gamma: the wings see the same flow
+    when the body pitch is the table's plus gamma. So the needed aerodynamic force
+    ``m (a - g)`` is turned into the air-path frame and looked up at the airspeed
+    ``hypot(vx, vz)`` (gamma faded by ``min(1, (speed / climb_speed)^2)``; no turn when
+    ``vx < 0``). In level flight this is :func:`demand_from_acceleration` exactly.
+
+    Args (floats, or arrays that broadcast):
+        ax_up, az_up: acceleration [omega^2 s], x forward, z up.
+        vx, vz: velocity relative to the air [omega s].
+        bird: the bird (reduced internally).
+        pitch: the body pitch the table would give [rad] (gamma is taken off it for the
+            body drag, which the table computes at the table's own pitch).
+        climb_speed: the fade-out speed of the turn [omega s].
+
+    Returns:
+        (Fx_table, Fz_table, V_table, gamma): the table force (one wing + body drag, seed
+        axes), the table's speed and the turn angle [rad] to add to the table's pitch;
+        floats for scalar arguments, else arrays.
+    """
+    rb = reduced_bird(bird)
+    m, grav = rb.mass, rb.gravity
+    scalar = all(np.ndim(a) == 0 for a in (ax_up, az_up, vx, vz, pitch))
+    ax, az, vx, vz, pitch = (np.asarray(a, dtype=float) for a in (ax_up, az_up, vx, vz, pitch))
+    speed = np.hypot(vx, vz)
+    gamma = np.where(speed > 0, np.arctan2(vz, vx), 0.0)
+    gamma = gamma * np.minimum(1.0, (speed / climb_speed) ** 2)
+    gamma = np.where(vx < 0, 0.0, gamma)
+    f_x, f_z = m * ax, m * (az + grav)  # aerodynamic force needed, world (z up)
+    c, s = np.cos(gamma), np.sin(gamma)
+    w_x, w_z = c * f_x + s * f_z, -s * f_x + c * f_z  # in the air-path frame
+    v_table = np.where(gamma != 0.0, speed, vx)
+    fx, fz = demand_from_acceleration(w_x / m, w_z / m - grav, v_table, 0.0, rb, pitch - gamma)
+    if scalar:
+        return float(fx), float(fz), float(v_table), float(gamma)
+    return fx, fz, v_table, gamma
+
+
 def path_demands(path: FlightPath, bird: Bird, table: Any, t: Any) -> dict[str, np.ndarray]:
     """The feed-forward schedule of a path: the table demands at reduced times ``t``.
 
@@ -128,8 +185,6 @@ def path_schedule(path: FlightPath, bird: Bird, table: Any, *, per_beat: int = 4
     Returns:
         A :class:`birdsim.flight.manoeuvre.Manoeuvre` with the path's name and duration.
     """
-    import math
-
     from birdsim.flight.manoeuvre import PERCH_HEIGHT, Keyframe, Manoeuvre
     from birdsim.flight.path import PERCH_Z
 
@@ -155,4 +210,11 @@ def path_schedule(path: FlightPath, bird: Bird, table: Any, *, per_beat: int = 4
     return Manoeuvre(path.name, tuple(keyframes), path.duration_beats, path.description, perch)
 
 
-__all__ = ["body_drag_earth", "demand_from_acceleration", "path_demands", "path_schedule"]
+__all__ = [
+    "CLIMB_SPEED",
+    "air_path_demand",
+    "body_drag_earth",
+    "demand_from_acceleration",
+    "path_demands",
+    "path_schedule",
+]

@@ -249,6 +249,29 @@ def envelope(table: LookupTable, bird: Bird) -> Envelope:
     )
 
 
+def achieved_miss(table: LookupTable, Fx: Any, Fz: Any, V: Any) -> np.ndarray:
+    """How far the table's achieved force (interpolated like its parameters) misses each
+    demand: ``max(|Fx_achieved - Fx|, |Fz_achieved - Fz|)``, demands outside the grid
+    measured against the clipped lookup (table force units)."""
+    r = table.lookup_many(Fx=Fx, Fz=Fz, V=V, clip=True)
+    return np.maximum(np.abs(r["achieved_Fx"] - Fx), np.abs(r["achieved_Fz"] - Fz))
+
+
+def room(
+    table: LookupTable, Fx: Any, Fz: Any, V: Any, delta: float, tol: float = 0.01
+) -> np.ndarray:
+    """Whether every demand moved by up to ``delta`` in Fx and Fz (the 8 neighbours on the
+    square of half-side delta) is still met within ``tol`` by the table's achieved force:
+    the room a feedback controller has around a feed-forward demand."""
+    Fx, Fz, V = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (Fx, Fz, V)))
+    ok = achieved_miss(table, Fx, Fz, V) <= tol
+    for ex in (-1, 0, 1):
+        for ez in (-1, 0, 1):
+            if ex or ez:
+                ok &= achieved_miss(table, Fx + ex * delta, Fz + ez * delta, V) <= tol
+    return ok
+
+
 def path_reach(
     path: Any, bird: Bird, table: LookupTable, samples_per_beat: int = 32
 ) -> dict[str, np.ndarray]:
@@ -261,17 +284,35 @@ def path_reach(
         samples_per_beat: samples per wingbeat over ``[0, duration]``.
 
     Returns:
-        :func:`birdsim.flight.demand.path_demands` at the samples, plus ``t`` (reduced
-        time), ``t_beats`` and ``ok`` (bool: the demand lies in a cell whose corners are
-        all ok, negative speeds are not).
+        :func:`birdsim.flight.demand.path_demands` at the samples (earth-axes reading),
+        plus ``t`` (reduced time), ``t_beats``, ``ok`` (bool: the demand lies in a cell
+        whose corners are all ok, negative speeds are not), and the air-path reading of
+        the same samples (:func:`birdsim.flight.demand.air_path_demand`, what the
+        controller looks up): ``Fx_air``, ``Fz_air``, ``V_air`` and ``ok_air``.
     """
-    from birdsim.flight.demand import path_demands
+    from birdsim.flight.demand import air_path_demand, path_demands
 
     n = int(math.ceil(path.duration_beats * samples_per_beat)) + 1
     t_beats = np.linspace(0.0, path.duration_beats, n)
     d = path_demands(path, bird, table, t_beats * 2.0 * math.pi)
     ok = reachable(table, d["Fx"], d["Fz"], d["V"]) & (d["V"] >= -1e-12)
-    return {**d, "t": t_beats * 2.0 * math.pi, "t_beats": t_beats, "ok": ok}
+    args = (d["ax"], d["az"], d["vx"], d["vz"], bird)
+    pitch = d["pitch"]
+    for _ in range(4):  # the drag's pitch: the table's plus the turn
+        fx, fz, v, gamma = air_path_demand(*args, pitch)
+        pitch = table.lookup_many(Fx=fx, Fz=fz, V=np.maximum(v, 0.0), clip=True)["pitch"] + gamma
+    air = np.stack([fx, fz, v], axis=1)
+    ok_air = reachable(table, air[:, 0], air[:, 1], air[:, 2]) & (air[:, 2] >= -1e-12)
+    return {
+        **d,
+        "t": t_beats * 2.0 * math.pi,
+        "t_beats": t_beats,
+        "ok": ok,
+        "Fx_air": air[:, 0],
+        "Fz_air": air[:, 1],
+        "V_air": air[:, 2],
+        "ok_air": ok_air,
+    }
 
 
-__all__ = ["Envelope", "envelope", "path_reach", "reachable", "trim_drag"]
+__all__ = ["Envelope", "achieved_miss", "envelope", "path_reach", "reachable", "room", "trim_drag"]

@@ -5,15 +5,16 @@ bird with the same reduced bird, mass ratio and reduced gravity: the seed bird o
 ``models/seed-bird.toml`` and the pigeon of ``models/pigeon.toml`` fly the same presets.
 They were laid out inside the envelope of the demo table (docs/flight.md, "Manoeuvres as
 paths"): ``tests/test_presets.py`` checks that every sample's feed-forward demand lies in
-table cells whose corners are all reachable.
+table cells whose corners are all reachable, read in earth axes and in the air-path frame
+(:func:`birdsim.flight.demand.air_path_demand`), with room for the controller.
 
 * ``hover``: in place, 6 semispans up, for 8 wingbeats.
 * ``cruise``: straight and level at :data:`CRUISE_SPEED`, 6 semispans up, 10 wingbeats.
 * ``take-off``: from rest on the perch, forward and up to cruise speed and height
-  (18 wingbeats).
-* ``landing``: from cruise, down and slower, to rest on the perch (30 wingbeats: below
-  V = 0.2 the demo table decelerates the bird by at most about 0.004 omega^2 s, 0.34 g
-  for the pigeon; docs/flight.md).
+  (26 wingbeats).
+* ``landing``: from cruise, down at cruise speed, then braking nearly level, to rest on
+  the perch (40 wingbeats: below V = 0.2 the demo table brakes the bird by at most
+  about 0.003-0.006 omega^2 s, 0.3-0.5 g for the pigeon; docs/flight.md).
 """
 
 from __future__ import annotations
@@ -61,33 +62,33 @@ def _presets() -> dict[str, FlightPath]:
     )
     take_off = FlightPath(
         "take-off",
-        18.0,
+        26.0,
         True,
         False,
         (
             _K(0.0, PERCH_Z, V=0.0, regime="take-off"),
-            _K(5.0, PERCH_Z + 0.5, V=0.2),
-            _K(11.0, 4.3, V=0.4, regime="climb-out"),
-            _K(15.0, zc - 0.2, V=vc),
-            _K(17.0, zc, V=vc, regime="cruise"),
+            _K(9.0, 2.0, V=0.3, regime="climb-out"),
+            _K(21.0, zc - 0.4, V=0.47),
+            _K(25.0, zc, V=vc, regime="cruise"),
         ),
         "from rest on the perch, forward and up to cruise: speed first, then height",
     )
     landing = FlightPath(
         "landing",
-        30.0,
+        40.0,
         False,
         True,
         (
             _K(0.0, zc, V=vc, regime="cruise"),
-            _K(1.0, zc, V=vc),
-            _K(6.0, zc - 0.6, V=0.4, regime="approach"),
-            _K(11.5, 3.4, V=0.27),
-            _K(17.0, 2.3, V=0.14, regime="flare"),
-            _K(23.0, 1.9, V=0.06),
-            _K(29.0, PERCH_Z, V=0.0, regime="perched"),
+            _K(1.0, zc, V=vc, regime="descent"),
+            _K(11.0, 2.4, V=vc),
+            _K(16.0, 2.15, V=0.42, regime="braking"),
+            _K(22.0, 2.0, V=0.26),
+            _K(28.0, 1.8, V=0.12, regime="approach"),
+            _K(33.0, 1.7, V=0.04),
+            _K(39.0, PERCH_Z, V=0.0, regime="perched"),
         ),
-        "from cruise, down and slower, to rest on the perch",
+        "from cruise: down at cruise speed, then brake nearly level, to rest on the perch",
     )
     return {p.name: p for p in (hover, cruise, take_off, landing)}
 

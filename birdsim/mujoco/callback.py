@@ -8,9 +8,11 @@ z) and calls the core's element force, ``bird.polar.force_panel`` -- the one
 implementation of the aerodynamics.  The panel force is rotated back and ADDED to
 ``qfrc_passive`` with ``mj_applyFT`` at the site (strips, when ``bird.strips > 1``, are
 points along the site's span axis; their force and moment are applied at the site).
-Body drag (``aero.body_drag_x``, the dissertation's ``-rho/2 V^2 sin(theta)``, with V the
-torso's speed through the air and theta its angle of attack) acts on the torso along the
-torso's air-relative velocity.
+Body drag (``aero.body_drag_magnitude``: ``rho/2 Vt^2 |sin(theta - gamma)|``, with Vt the
+torso's speed through the air and theta - gamma its angle of attack in its pitch plane,
+the climb-aware reading of eq. 7 that ``evaluate_cycle(..., climb=)`` uses) acts on the
+torso opposite its air-relative velocity, so a climbing or sinking free body meets the
+same drag as the core's.
 
 ``mujoco.set_mjcb_passive`` is process-wide: install the callback with the context
 manager :func:`aero_forces` AFTER compiling every model you need (compiling while it is
@@ -28,7 +30,7 @@ from contextlib import contextmanager
 import mujoco
 import numpy as np
 
-from birdsim.physics.aero import body_drag_x
+from birdsim.physics.aero import body_drag_magnitude
 from birdsim.physics.bird import Bird
 from birdsim.errors import BirdsimError
 from birdsim.mujoco.model import aero_sites, span_sign
@@ -110,11 +112,10 @@ class AeroCallback:
             return
         xmat = d.site_xmat[self.torso_site].reshape(3, 3)
         loc = xmat.T @ u
-        attack = np.arctan2(-loc[2], loc[0])  # seed body axes: z down
-        # the seed's Cd = sin(theta) is for theta in [0, pi/2]; |sin| keeps it a drag
-        # (never a thrust) when the free body meets the air nose-down or backwards
-        drag = body_drag_x(speed, abs(attack), self.bird.rho, self.bird.body_drag_area)
-        mujoco.mj_applyFT(m, d, drag * u / speed, np.zeros(3), d.site_xpos[self.torso_site], self.torso_body, d.qfrc_passive)
+        attack = np.arctan2(-loc[2], loc[0])  # theta - gamma (seed body axes: z down)
+        # |sin| keeps it a drag (never a thrust) when the body meets the air nose-down or backwards
+        drag = body_drag_magnitude(speed, attack, self.bird.rho, self.bird.body_drag_area)
+        mujoco.mj_applyFT(m, d, -drag * u / speed, np.zeros(3), d.site_xpos[self.torso_site], self.torso_body, d.qfrc_passive)
 
 
 @contextmanager

@@ -10,6 +10,7 @@ force in wind axes ``(-Cd, 0, -Cl) q S`` (DESIGN.md section 2).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import ClassVar
 
@@ -77,7 +78,9 @@ class SeedPolar(Polar):
         vx2, vz2 = vx * vx, vz * vz
         u2 = vx2 + vz2
         u = np.sqrt(u2)
-        inv_u = np.divide(0.5 * rho * area, u, out=np.zeros_like(u), where=u > 0.0)
+        num = 0.5 * rho * np.asarray(area, dtype=float)
+        # the strips of a heaving (base) wing share one velocity: broadcast against the areas
+        inv_u = np.divide(num, u, out=np.zeros(np.broadcast_shapes(num.shape, u.shape)), where=u > 0.0)
         drag_u2 = self.cd0 * u2 + self.cd_max * vz2
         lift2 = 2.0 * self.cl_max
         fx = inv_u * vx * (lift2 * vz2 - drag_u2)
@@ -123,8 +126,55 @@ def body_drag_x(speed: np.ndarray, pitch: np.ndarray, rho: float, area: float) -
     return -0.5 * rho * np.square(speed) * np.sin(pitch) * area
 
 
+def body_drag_magnitude(speed_total: np.ndarray | float, attack: np.ndarray | float, rho: float, area: float):
+    """``rho/2 Vt^2 |sin(attack)| area``: the body drag's magnitude for a body meeting
+    the air at speed ``Vt`` and angle of attack ``attack = theta - gamma`` (the angle
+    from the body's x axis to its velocity relative to the air, in the pitch plane)."""
+    if isinstance(speed_total, float) and isinstance(attack, float):  # MuJoCo's per-step call
+        return 0.5 * rho * (speed_total * speed_total) * abs(math.sin(attack)) * area
+    return 0.5 * rho * np.square(speed_total) * np.abs(np.sin(attack)) * area
+
+
+def body_drag(
+    speed: np.ndarray, climb: np.ndarray, pitch: np.ndarray, rho: float, area: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """Body drag (Dx, Dz) in seed earth axes for a body moving at ``(V, 0, -climb)``
+    relative to the air (climb positive up).
+
+    ``|D| = rho/2 Vt^2 |sin(theta - gamma)| area`` with ``Vt = sqrt(V^2 + climb^2)`` and
+    the flight-path angle ``gamma = atan2(climb, V)``, opposite the velocity:
+    ``D = -|D| (V, -climb) / Vt``.  Where ``climb == 0`` it is exactly eq. 7
+    (:func:`body_drag_x`, the same floating-point operations) and Dz = 0.
+
+    Args:
+        speed: flight speed V >= 0 (bird units), any shape.
+        climb: vertical speed relative to the air, positive up, broadcast with ``speed``.
+        pitch: body pitch theta [rad].
+        rho: air density; area: the body's drag area.
+
+    Returns:
+        ``(Dx, Dz)``, seed earth axes (Dz > 0 is down: a climbing body is pushed down).
+    """
+    speed, climb, pitch = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (speed, climb, pitch)))
+    level = -0.5 * rho * np.square(speed) * np.sin(pitch) * area
+    if not np.any(climb != 0.0):
+        return level, np.zeros_like(level)
+    vt = np.hypot(speed, climb)
+    gamma = np.arctan2(climb, speed)
+    mag = body_drag_magnitude(vt, pitch - gamma, rho, area)
+    unit = np.divide(1.0, vt, out=np.zeros_like(vt), where=vt > 0.0)
+    dx = np.where(climb == 0.0, level, -mag * unit * speed)
+    dz = np.where(climb == 0.0, 0.0, mag * unit * climb)
+    return dx, dz
+
+
 def induced_velocity(
-    force_earth: np.ndarray, speed: np.ndarray, rho: float, disc_area: float, iterations: int = 60
+    force_earth: np.ndarray,
+    speed: np.ndarray,
+    rho: float,
+    disc_area: float,
+    iterations: int = 60,
+    climb: np.ndarray | None = None,
 ) -> np.ndarray:
     """Actuator-disc (Glauert) induced velocity magnitude for a mean aerodynamic force.
 
@@ -132,13 +182,17 @@ def induced_velocity(
     ``v``; the bird moves at ``speed`` along +X through still air.  ``v`` solves
     ``|F| = 2 rho A v |U + v F_hat|`` with ``U = (speed, 0, 0)`` -- in axial flow this
     is appendix 1A's ``v = -V/2 + sqrt(V^2/4 + F/(2 rho A))``.  Solved by bisection,
-    vectorised over the leading axes.
+    vectorised over the leading axes.  With ``climb`` (positive up) the bird moves at
+    ``U = (speed, 0, -climb)``.
     """
     f = np.asarray(force_earth, dtype=float)
     thrust = np.linalg.norm(f, axis=-1)
     f_hat = np.divide(f, thrust[..., None], out=np.zeros_like(f), where=thrust[..., None] > 0)
     u_along = np.asarray(speed, dtype=float) * f_hat[..., 0]
     u2 = np.square(speed)
+    if climb is not None and np.any(np.asarray(climb) != 0.0):
+        u_along = u_along - np.asarray(climb, dtype=float) * f_hat[..., 2]
+        u2 = u2 + np.square(climb)
 
     def residual(v: np.ndarray) -> np.ndarray:
         return 2.0 * rho * disc_area * v * np.sqrt(u2 + 2.0 * v * u_along + v * v) - thrust

@@ -73,16 +73,16 @@ class Bird:
         positive = ("semispan", "chord", "hand_chord", "rho", "omega", "disc_area", "mass")
         for name in positive:
             v = getattr(self, name)
-            if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+            if not (_is_number(v) and math.isfinite(v) and v > 0):
                 raise BirdConfigError(f"bird.{name}={v!r} is invalid; allowed: a finite number > 0")
         fractions = ("hand_span_fraction", "cp_span_fraction")
         for name in fractions:
             v = getattr(self, name)
-            if not (isinstance(v, (int, float)) and 0.0 <= v <= 1.0):
+            if not (_is_number(v) and 0.0 <= v <= 1.0):
                 raise BirdConfigError(f"bird.{name}={v!r} is invalid; allowed: a number in [0, 1]")
         for name in ("wrist_twist_ratio", "body_drag_area", "gravity"):
             v = getattr(self, name)
-            if not (isinstance(v, (int, float)) and math.isfinite(v) and v >= 0):
+            if not (_is_number(v) and math.isfinite(v) and v >= 0):
                 raise BirdConfigError(f"bird.{name}={v!r} is invalid; allowed: a finite number >= 0")
         if not (isinstance(self.strips, int) and not isinstance(self.strips, bool) and 1 <= self.strips <= 10_000):
             raise BirdConfigError(f"bird.strips={self.strips!r} is invalid; allowed: an integer in [1, 10000]")
@@ -125,14 +125,34 @@ class Bird:
 
     @classmethod
     def from_toml(cls, path: str | Path) -> "Bird":
+        """Read a bird from a TOML file of :class:`Bird` fields (``[polar]`` a table).
+
+        Args:
+            path: the TOML file.
+
+        Returns:
+            The bird; fields the file leaves out keep their defaults.
+
+        Raises:
+            BirdConfigError: one line starting ``path='...'`` when the file is missing,
+                a folder, unreadable, not TOML, or holds an unknown or invalid field.
+        """
+        if not str(path).strip():
+            raise BirdConfigError(f"path={str(path)!r} is empty; allowed: a readable TOML file")
         p = Path(path)
+        arg = f"path={str(p)!r}"
         try:
             data = tomllib.loads(p.read_text())
         except FileNotFoundError:
-            raise BirdConfigError(f"--bird {str(p)!r} does not exist; allowed: a readable TOML file") from None
-        except (OSError, tomllib.TOMLDecodeError) as exc:
-            raise BirdConfigError(f"--bird {str(p)!r} is not valid TOML: {exc}") from None
-        return cls.from_dict(data)
+            raise BirdConfigError(f"{arg} does not exist; allowed: a readable TOML file") from None
+        except IsADirectoryError:
+            raise BirdConfigError(f"{arg} is a folder; allowed: a readable TOML file") from None
+        except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
+            raise BirdConfigError(f"{arg} is not valid TOML: {exc}") from None
+        try:
+            return cls.from_dict(data)
+        except BirdConfigError as exc:
+            raise BirdConfigError(f"{arg}: {exc}") from None
 
     def to_toml(self, path: str | Path) -> None:
         import tomli_w
@@ -146,6 +166,16 @@ class Bird:
 
         ``polar.NAME`` sets a coefficient of the polar; ``polar.kind`` switches to another
         polar, which starts from its own default coefficients.
+
+        Args:
+            overrides: field name -> value as text (``{"strips": "20"}``).
+
+        Returns:
+            The new bird (this one is unchanged).
+
+        Raises:
+            BirdConfigError: one line starting ``overrides: NAME=...`` for an unknown
+                field, a value of the wrong type or a value out of bounds.
         """
         top: dict[str, Any] = {}
         polar = self.polar.to_dict()
@@ -159,18 +189,26 @@ class Bird:
                 polar[sub] = raw if sub == "kind" else _parse_number(key, raw)
                 continue
             if key not in types or key == "polar":
-                raise BirdConfigError(f"--set {key}={raw} names no bird field; allowed: {', '.join(sorted(types))}")
+                raise BirdConfigError(f"overrides: {key}={raw} names no bird field; allowed: {', '.join(sorted(types))}")
             top[key] = _parse_value(key, raw, types[key])
-        if polar != self.polar.to_dict():
-            top["polar"] = polar_from_dict(polar)
-        return replace(self, **top)
+        try:
+            if polar != self.polar.to_dict():
+                top["polar"] = polar_from_dict(polar)
+            return replace(self, **top)
+        except BirdConfigError as exc:  # "bird.strips=0 is invalid" -> "overrides: strips=0 is invalid"
+            raise BirdConfigError(f"overrides: {str(exc).removeprefix('bird.')}") from None
+
+
+def _is_number(v: Any) -> bool:
+    """An int or float, not a bool (TOML's ``true`` is no length)."""
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
 
 
 def _parse_number(key: str, raw: str) -> float:
     try:
         return float(raw)
     except ValueError:
-        raise BirdConfigError(f"--set {key}={raw!r} is not a number") from None
+        raise BirdConfigError(f"overrides: {key}={raw!r} is not a number") from None
 
 
 def _parse_value(key: str, raw: str, kind: type) -> Any:
@@ -179,12 +217,12 @@ def _parse_value(key: str, raw: str, kind: type) -> Any:
             return True
         if raw.lower() in ("0", "false", "no", "off"):
             return False
-        raise BirdConfigError(f"--set {key}={raw!r} is not a boolean; allowed: true or false")
+        raise BirdConfigError(f"overrides: {key}={raw!r} is not a boolean; allowed: true or false")
     if kind is int:
         try:
             return int(raw)
         except ValueError:
-            raise BirdConfigError(f"--set {key}={raw!r} is not an integer") from None
+            raise BirdConfigError(f"overrides: {key}={raw!r} is not an integer") from None
     if kind is str:
         return raw
     return _parse_number(key, raw)

@@ -2,8 +2,12 @@
 
 ``evaluate_cycle`` is vectorised over time *and* over any batch of parameter sets:
 pass arrays (all broadcastable to one batch shape ``B``) instead of floats and every
-result gains the leading axes ``B``.  It is pure numpy; MuJoCo's passive callback
-calls :func:`element_forces` so that both paths share one implementation.
+result gains the leading axes ``B``.  The means come from the fused kernel
+(:mod:`birdsim.physics.kernel`, the default backend) or from this module's numpy path
+(``backend="numpy"``, the readable reference; it also gives the histories).  MuJoCo's
+passive callback calls the polar of :func:`element_forces`' path, so both share one
+implementation of the aerodynamics.  The result types live in
+:mod:`birdsim.physics.cycle_result`.
 
 Forces follow DESIGN.md's "which force": the histories are those of ONE wing (the
 right) in seed earth axes; ``mean`` adds the body drag to Fx (the dissertation's
@@ -13,12 +17,13 @@ flapcost force); ``whole_bird_mean`` is two mirrored wings plus the body.
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass, field
-from functools import cached_property
+from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
-from birdsim.physics.aero import body_drag_x, induced_velocity
+from birdsim.physics.aero import body_drag, induced_velocity
+from birdsim.physics.cycle_result import Cycle, MeanForces, PanelMeans, _Histories, cycle_mean  # noqa: F401 (re-exported)
 from birdsim.physics.bird import Bird
 from birdsim.errors import BirdsimError
 from birdsim.physics.frames import Vec3, _is_zero, body_to_earth, earth_to_body
@@ -36,104 +41,19 @@ from birdsim.physics.kinematics import (
 )
 
 
-@dataclass(frozen=True)
-class MeanForces:
-    """Cycle means (arrays of the batch shape).  Fx includes the body drag."""
-
-    Fx: np.ndarray
-    Fy: np.ndarray
-    Fz: np.ndarray
-    P: np.ndarray
-
-    def as_dict(self) -> dict[str, float]:
-        return {k: float(getattr(self, k)) for k in ("Fx", "Fy", "Fz", "P")}
-
-
-@dataclass(frozen=True)
-class Cycle:
-    """Histories over one wingbeat (N samples) of the right wing, per panel and in total.
-
-    Shapes: ``B`` is the batch shape of the parameters, N the samples, K the panels.
-    """
-
-    model: str
-    speed: np.ndarray  # B
-    params: dict[str, np.ndarray]  # each B
-    time: np.ndarray  # N
-    endpoint: bool
-    panel_names: tuple[str, ...]
-    panel_force_earth: np.ndarray  # B x K x N x 3, seed earth axes
-    panel_power: np.ndarray  # B x K x N, -F . v_flap (positive: the wing works on the air)
-    joint_power: dict[str, np.ndarray] = field(repr=False)  # group -> B x N
-    body_drag_x: np.ndarray = field(repr=False)  # B
-    cp_position_body: np.ndarray = field(repr=False)  # B x K x N x 3 (first strip element)
-    cp_velocity_body: np.ndarray = field(repr=False)  # B x K x N x 3 flapping velocity
-
-    @property
-    def force_earth(self) -> np.ndarray:
-        """Right-wing force history, B x N x 3 (no body drag)."""
-        return self.panel_force_earth.sum(axis=-3)
-
-    @property
-    def power(self) -> np.ndarray:
-        """Mechanical power history of the right wing, B x N."""
-        return self.panel_power.sum(axis=-2)
-
-    @property
-    def Fx(self) -> np.ndarray:
-        return self.force_earth[..., 0]
-
-    @property
-    def Fy(self) -> np.ndarray:
-        return self.force_earth[..., 1]
-
-    @property
-    def Fz(self) -> np.ndarray:
-        return self.force_earth[..., 2]
-
-    @property
-    def P(self) -> np.ndarray:
-        return self.power
-
-    @cached_property
-    def mean(self) -> MeanForces:
-        """The dissertation's force: right wing + body drag; mean power of the right wing."""
-        f = cycle_mean(self.force_earth, axis=-2)
-        p = cycle_mean(self.power, axis=-1)
-        return MeanForces(f[..., 0] + self.body_drag_x, f[..., 1], f[..., 2], p)
-
-    @cached_property
-    def panel_mean(self) -> dict[str, MeanForces]:
-        """Per-panel means (no body drag)."""
-        f = cycle_mean(self.panel_force_earth, axis=-2)
-        p = cycle_mean(self.panel_power, axis=-1)
-        return {
-            name: MeanForces(f[..., k, 0], f[..., k, 1], f[..., k, 2], p[..., k])
-            for k, name in enumerate(self.panel_names)
-        }
-
-    @cached_property
-    def whole_bird_mean(self) -> MeanForces:
-        """Two mirrored wings plus body drag: ``(2 Fx_wing + drag, 0, 2 Fz_wing)``, power 2 P."""
-        m = self.mean
-        wing_x = m.Fx - self.body_drag_x
-        return MeanForces(2.0 * wing_x + self.body_drag_x, np.zeros_like(m.Fy), 2.0 * m.Fz, 2.0 * m.P)
-
-
-def cycle_mean(x: np.ndarray, axis: int = -1) -> np.ndarray:
-    """Mean over the time axis: the plain mean of the samples.  On the periodic grid
-    (N samples on [0, T)) this is the exact periodic (trapezoidal) mean; on the
-    appendix grid (t = 0 and t = T both sampled) it counts the end point twice,
-    exactly as the dissertation's ``mean`` over ``0:dt:T``."""
-    return np.mean(x, axis=axis)
-
-
 def sample_phases(n: int, endpoint: bool) -> np.ndarray:
     """Phases omega*t of the samples: N uniform on [0, 2 pi) (exact periodic mean), or
     with the end point included (the appendix grid, n = 11)."""
     if not isinstance(n, (int, np.integer)) or isinstance(n, bool) or n < 2:
         raise BirdsimError(f"n={n!r} is invalid; allowed: an integer >= 2 samples per wingbeat")
-    return np.linspace(0.0, 2.0 * np.pi, int(n), endpoint=endpoint)
+    return _phases(int(n), bool(endpoint))
+
+
+@lru_cache(maxsize=32)
+def _phases(n: int, endpoint: bool) -> np.ndarray:
+    out = np.linspace(0.0, 2.0 * np.pi, n, endpoint=endpoint)
+    out.setflags(write=False)  # shared between calls
+    return out
 
 
 @dataclass(frozen=True)
@@ -204,20 +124,41 @@ def evaluate_cycle(
     params: Mapping[str, object],
     speed: object,
     *,
+    climb: object = 0.0,
     bird: Bird | None = None,
     n: int = 64,
     endpoint: bool = False,
     check_bounds: bool = True,
+    backend: str = "kernel",
 ) -> Cycle:
     """Force and power histories of one wingbeat and their means.
 
-    ``params`` maps every parameter name of the model (``birdsim.MODELS[m].param_names``)
-    to a float or an array; arrays broadcast to one batch shape and every result gains
-    it.  ``speed`` (>= 0, float or array) is the flight speed V along +X.  ``n`` samples
-    per wingbeat; ``endpoint=True, n=11`` is the dissertation's appendix grid.
+    Args:
+        model: a model name or :class:`KinematicModel`.
+        params: every parameter name of the model (``birdsim.MODELS[m].param_names``)
+            to a float or an array [rad]; arrays broadcast to one batch shape ``B`` and
+            every result gains it.
+        speed: flight speed V >= 0 relative to the air, along seed earth +X.
+        climb: vertical speed relative to the air, positive up (any sign): the body
+            moves at ``(V, 0, -climb)`` in seed earth axes; 0 is level flight.
+        bird: the bird (default: the seed bird).
+        n: samples per wingbeat; ``endpoint=True, n=11`` is the appendix grid.
+        check_bounds: refuse parameters outside the model's bounds.
+        backend: ``"kernel"`` (default: the fused, compiled kernel of
+            :mod:`birdsim.physics.kernel` computes the means; histories, when read, come
+            from the numpy path) or ``"numpy"`` (the readable reference, everything
+            numpy).  Without a working JIT the kernel falls back to numpy (one warning).
+
+    Returns:
+        A :class:`Cycle`.
+
+    Raises:
+        BirdsimError: bad speed, climb, parameters or shapes (one line).
     """
     m = model if isinstance(model, KinematicModel) else get_model(model)
-    bird = bird or Bird()
+    bird = Bird() if bird is None else bird
+    if not isinstance(bird, Bird):
+        raise BirdsimError(f"bird={bird!r} is invalid; allowed: a birdsim.Bird (Bird.from_toml(path) reads a bird file) or None")
     p = validate_params(m, params, check_bounds=check_bounds)
     try:
         v = np.asarray(speed, dtype=float)
@@ -226,50 +167,120 @@ def evaluate_cycle(
     if not np.all(np.isfinite(v)) or np.any(v < 0):
         bad = float(v[~(np.isfinite(v) & (v >= 0))].flat[0]) if v.ndim else float(v)
         raise BirdsimError(f"speed={bad} is invalid; allowed: a finite number >= 0")
+    vc = _check_climb(climb)
     try:
-        batch = np.broadcast_shapes(v.shape, *(a.shape for a in p.values()))
+        batch = np.broadcast_shapes(v.shape, vc.shape, *(a.shape for a in p.values()))
     except ValueError:
-        shapes = ", ".join(f"{k} {a.shape}" for k, a in {"speed": v, **p}.items())
+        shapes = ", ".join(f"{k} {a.shape}" for k, a in {"speed": v, "climb": vc, **p}.items())
         raise BirdsimError(f"parameter shapes do not broadcast ({shapes}); allowed: arrays of one common shape") from None
     flat = {k: np.broadcast_to(a, batch).reshape(-1) for k, a in p.items()}
     v_flat = np.broadcast_to(v, batch).reshape(-1)
+    climb_flat = np.broadcast_to(vc, batch).reshape(-1)
     phases = sample_phases(n, endpoint)
-
-    air_earth = np.zeros(v_flat.shape + (3,))
-    hist = _histories(m, flat, v_flat, bird, phases, air_earth)
-    if bird.induced_velocity:
-        # Actuator disc (appendix 1A): the disc pushes the air against the mean force of
-        # both wings (seed earth axes); iterate the coupling to a fixed point (damped by
-        # 1/2, which roughly halves the step each time: 8 steps left ~1e-4 in the force)
-        for _ in range(INDUCED_MAX_ITERATIONS):
-            f = 2.0 * hist.force_earth.sum(axis=1).mean(axis=-2)  # two wings, B x 3
-            f[:, 1] = 0.0
-            vi = induced_velocity(f, v_flat, bird.rho, bird.disc_area)
-            norm = np.linalg.norm(f, axis=-1, keepdims=True)
-            f_hat = np.divide(f, norm, out=np.zeros_like(f), where=norm > 0)
-            target = -vi[:, None] * f_hat
-            if np.max(np.abs(target - air_earth), initial=0.0) < INDUCED_TOL:
-                break
-            air_earth = 0.5 * air_earth + 0.5 * target
-            hist = _histories(m, flat, v_flat, bird, phases, air_earth)
+    climbing = bool(np.any(climb_flat != 0.0))
 
     def shaped(a: np.ndarray) -> np.ndarray:
         return a.reshape(batch + a.shape[1:])
 
-    return Cycle(
+    def histories() -> _Histories:
+        air_earth = np.zeros(v_flat.shape + (3,))
+        hist = _histories(m, flat, v_flat, bird, phases, air_earth, climb_flat if climbing else None)
+        if bird.induced_velocity:
+            # Actuator disc (appendix 1A): the disc pushes the air against the mean force of
+            # both wings (seed earth axes); iterate the coupling to a fixed point (damped by
+            # 1/2, which roughly halves the step each time: 8 steps left ~1e-4 in the force)
+            for _ in range(INDUCED_MAX_ITERATIONS):
+                f = 2.0 * hist.force_earth.sum(axis=1).mean(axis=-2)  # two wings, B x 3
+                f[:, 1] = 0.0
+                vi = induced_velocity(f, v_flat, bird.rho, bird.disc_area, climb=climb_flat if climbing else None)
+                norm = np.linalg.norm(f, axis=-1, keepdims=True)
+                f_hat = np.divide(f, norm, out=np.zeros_like(f), where=norm > 0)
+                target = -vi[:, None] * f_hat
+                if np.max(np.abs(target - air_earth), initial=0.0) < INDUCED_TOL:
+                    break
+                air_earth = 0.5 * air_earth + 0.5 * target
+                hist = _histories(m, flat, v_flat, bird, phases, air_earth, climb_flat if climbing else None)
+        return _Histories(
+            shaped(hist.force_earth), shaped(hist.power), {g: shaped(a) for g, a in hist.joint_power.items()},
+            shaped(hist.cp_position), shaped(hist.cp_velocity),
+        )
+
+    if backend not in BACKENDS:
+        raise BirdsimError(f"backend={backend!r} is unknown; allowed: {', '.join(BACKENDS)}")
+    means = None
+    if backend == "kernel":
+        means = _kernel_means(m, flat, v_flat, climb_flat, climbing, bird, phases)
+        if means is not None:
+            means = PanelMeans(
+                shaped(means.force_earth), shaped(means.power), {g: shaped(a) for g, a in means.joint_power.items()}
+            )
+    dx, dz = body_drag(v_flat, climb_flat, flat["pitch"], bird.rho, bird.body_drag_area)
+    cyc = Cycle(
         model=m.name,
         speed=shaped(v_flat),
         params={k: shaped(a) for k, a in flat.items()},
         time=phases / bird.omega,
         endpoint=endpoint,
         panel_names=tuple(panel.name for panel in bird.panels(m.name)),
-        panel_force_earth=shaped(hist.force_earth),
-        panel_power=shaped(hist.power),
-        joint_power={g: shaped(a) for g, a in hist.joint_power.items()},
-        body_drag_x=shaped(body_drag_x(v_flat, flat["pitch"], bird.rho, bird.body_drag_area)),
-        cp_position_body=shaped(hist.cp_position),
-        cp_velocity_body=shaped(hist.cp_velocity),
+        body_drag_x=shaped(dx),
+        climb=shaped(climb_flat),
+        body_drag_z=shaped(dz),
+        histories=histories,
+        panel_means=means,
     )
+    if means is None:
+        cyc._hist  # the numpy path computes its histories now (errors surface here)
+    return cyc
+
+
+BACKENDS = ("kernel", "numpy")
+
+
+def _kernel_means(
+    m: KinematicModel,
+    flat: dict[str, np.ndarray],
+    v: np.ndarray,
+    climb: np.ndarray,
+    climbing: bool,
+    bird: Bird,
+    phases: np.ndarray,
+) -> PanelMeans | None:
+    """Panel means from the fused kernel (flat batch), the induced-velocity coupling
+    iterated exactly as the numpy path does; None where the kernel cannot run."""
+    from birdsim.physics import kernel
+
+    air = np.zeros(v.shape + (3,))
+    out = kernel.means(m, flat, v, climb, air, bird, phases)
+    if out is None:
+        return None
+    if bird.induced_velocity:
+        for _ in range(INDUCED_MAX_ITERATIONS):
+            f = 2.0 * out[0].sum(axis=1)  # two wings, B x 3
+            f[:, 1] = 0.0
+            vi = induced_velocity(f, v, bird.rho, bird.disc_area, climb=climb if climbing else None)
+            norm = np.linalg.norm(f, axis=-1, keepdims=True)
+            f_hat = np.divide(f, norm, out=np.zeros_like(f), where=norm > 0)
+            target = -vi[:, None] * f_hat
+            if np.max(np.abs(target - air), initial=0.0) < INDUCED_TOL:
+                break
+            air = 0.5 * air + 0.5 * target
+            out = kernel.means(m, flat, v, climb, air, bird, phases)
+            if out is None:
+                return None
+    groups = kernel.setup(m, bird).groups
+    return PanelMeans(out[0], out[1], {g: out[2][:, i] for i, g in enumerate(groups)})
+
+
+def _check_climb(climb: object) -> np.ndarray:
+    """``climb`` as a float array; one line naming a non-number or non-finite value."""
+    try:
+        vc = np.asarray(climb, dtype=float)
+    except (TypeError, ValueError):
+        raise BirdsimError(f"climb={climb!r} is not a number; allowed: a finite number (positive up)") from None
+    if not np.all(np.isfinite(vc)):
+        bad = float(vc[~np.isfinite(vc)].flat[0]) if vc.ndim else float(vc)
+        raise BirdsimError(f"climb={bad} is invalid; allowed: a finite number (positive up)")
+    return vc
 
 
 #: The induced-velocity coupling stops when the disc's inflow changes by less than this
@@ -282,15 +293,6 @@ INDUCED_MAX_ITERATIONS = 100
 CHUNK = 256
 
 
-@dataclass(frozen=True)
-class _Histories:
-    force_earth: np.ndarray  # B x K x N x 3
-    power: np.ndarray  # B x K x N
-    joint_power: dict[str, np.ndarray]  # group -> B x N
-    cp_position: np.ndarray  # B x K x N x 3
-    cp_velocity: np.ndarray  # B x K x N x 3
-
-
 def _histories(
     m: KinematicModel,
     p: dict[str, np.ndarray],
@@ -298,6 +300,7 @@ def _histories(
     bird: Bird,
     phases: np.ndarray,
     air_earth: np.ndarray,
+    climb: np.ndarray | None = None,
 ) -> _Histories:
     """Histories for flat (B,) parameter arrays, evaluated chunk by chunk."""
     panels = m.chain_with_geometry(bird)
@@ -309,15 +312,17 @@ def _histories(
     )
     for lo in range(0, b, CHUNK):
         sl = slice(lo, min(lo + CHUNK, b))
-        _chunk({name: a[sl] for name, a in p.items()}, speed[sl], air_earth[sl], m, panels, bird, phases, out, sl)
+        vc = None if climb is None else climb[sl]
+        _chunk({name: a[sl] for name, a in p.items()}, speed[sl], vc, air_earth[sl], m, panels, bird, phases, out, sl)
     return out
 
 
-def _chunk(p, speed, air_earth, m, panels, bird, phases, out: _Histories, sl: slice) -> None:
+def _chunk(p, speed, climb, air_earth, m, panels, bird, phases, out: _Histories, sl: slice) -> None:
     pitch_b = p["pitch"][:, None, None]
     states = joint_states(m, p, bird, phases, trailing=1)
-    # the body relative to the air, in body axes: (V - w_air) rotated by the pitch
-    rel_earth = tuple(c[:, None, None] for c in (speed - air_earth[:, 0], -air_earth[:, 1], -air_earth[:, 2]))
+    # the body relative to the air, in body axes: ((V, 0, -climb) - w_air) rotated by the pitch
+    rel_z = -air_earth[:, 2] if climb is None else -climb - air_earth[:, 2]
+    rel_earth = tuple(c[:, None, None] for c in (speed - air_earth[:, 0], -air_earth[:, 1], rel_z))
     air_body = earth_to_body(pitch_b, rel_earth)
     for k, (chain, span, chord) in enumerate(panels):
         r, w = strip_positions(span, bird.cp_span_fraction, bird.strips)

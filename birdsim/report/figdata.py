@@ -2,7 +2,7 @@
 
 Every function here evaluates the physics core (``evaluate_cycle``) on a whole grid of
 parameter sets in one batched call (chunked to bound memory), or reads the polar
-directly.  ``birdsim/plots.py`` draws these arrays; ``birdsim/report.py`` compares
+directly.  ``birdsim/report/plots.py`` draws these arrays; ``birdsim/report/claims.py`` compares
 them with what the dissertation printed.  Forces are the dissertation's force (right
 wing + body drag, seed earth axes, Fz < 0 is up) unless a name says otherwise.
 """

@@ -1,5 +1,5 @@
 """Figures of the dissertation's analysis (matplotlib, Agg backend), one function per
-figure family.  The numbers come from ``birdsim/figdata.py`` (and the tables and
+figure family.  The numbers come from ``birdsim/report/figdata.py`` (and the tables and
 optimisers); these functions only draw.  matplotlib is an optional extra: without it
 every function raises one clear :class:`BirdsimError` naming ``pip install birdsim[plots]``.
 

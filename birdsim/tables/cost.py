@@ -22,8 +22,10 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
+from birdsim.physics import kernel
+from birdsim.physics.aero import body_drag
 from birdsim.physics.bird import Bird
-from birdsim.physics.cycle import evaluate_cycle
+from birdsim.physics.cycle import evaluate_cycle, sample_phases
 from birdsim.errors import BirdsimError
 from birdsim.physics.kinematics import KinematicModel
 
@@ -102,16 +104,136 @@ def other_cost(
 
 
 def forces(
-    model: KinematicModel, X: np.ndarray, speed: np.ndarray | float, bird: Bird, n: int = 64
+    model: KinematicModel,
+    X: np.ndarray,
+    speed: np.ndarray | float,
+    bird: Bird,
+    n: int = 64,
+    climb: np.ndarray | float = 0.0,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Achieved mean (Fx, Fz, P) of the parameter rows ``X`` (B x d), one batched cycle evaluation.
+    """Achieved mean (Fx, Fz, P) of the parameter rows ``X`` (B x d), one batched cycle
+    evaluation at speed V and ``climb`` (vertical speed relative to the air, up).
 
     Bounds are not checked: optimisers probe a hair outside them for finite differences.
     """
     X = np.asarray(X, dtype=float)
+    if X.ndim == 2 and not bird.induced_velocity:
+        out = _kernel_forces(model, X, speed, bird, n, climb)
+        if out is not None:
+            return out
     params = {name: X[..., i] for i, name in enumerate(model.param_names)}
-    mean = evaluate_cycle(model, params, speed, bird=bird, n=n, check_bounds=False).mean
+    mean = evaluate_cycle(model, params, speed, climb=climb, bird=bird, n=n, check_bounds=False).mean
     return (np.asarray(mean.Fx, dtype=float), np.asarray(mean.Fz, dtype=float), np.asarray(mean.P, dtype=float))
+
+
+#: Central-difference step (rad) of the fallback gradients (no compiled kernel, or
+#: induced velocity on): truncation ~h^2 times the third derivative, round-off ~1e-16/h.
+FD_STEP = 1e-6
+
+
+def forces_and_gradients(
+    model: KinematicModel,
+    X: np.ndarray,
+    speed: np.ndarray | float,
+    bird: Bird,
+    n: int = 64,
+    climb: np.ndarray | float = 0.0,
+) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]:
+    """Mean (Fx, Fz, P) of the rows of ``X`` (B x d) and their exact gradients.
+
+    Args:
+        model: the kinematic model; ``X`` columns in ``model.param_names`` order [rad].
+        speed, climb: flight speed and climb rate (broadcast against the rows).
+        bird: the bird; n: samples per wingbeat.
+
+    Returns:
+        ``((Fx, Fz, P), (dFx, dFz, dP))``: values of shape B, gradients B x d (force
+        and power units per radian).  Forward-mode derivatives from the fused kernel
+        (:func:`birdsim.physics.kernel.means_and_gradients`) plus the analytic body-drag
+        term; central differences (one batched call) where the kernel cannot run
+        (no JIT, a polar it does not know, or induced velocity on).
+    """
+    X = np.atleast_2d(np.asarray(X, dtype=float))
+    B, d = X.shape
+    v = np.ascontiguousarray(np.broadcast_to(np.asarray(speed, dtype=float), (B,)))
+    vc = np.ascontiguousarray(np.broadcast_to(np.asarray(climb, dtype=float), (B,)))
+    flat = {name: np.ascontiguousarray(X[:, i]) for i, name in enumerate(model.param_names)}
+    out = kernel.means_and_gradients(model, flat, v, vc, bird, sample_phases(n, False))
+    if out is None:
+        steps = FD_STEP * np.eye(d)
+        Y = np.concatenate([X, (X[:, None, :] + steps).reshape(-1, d), (X[:, None, :] - steps).reshape(-1, d)])
+        rep = np.concatenate([v, np.repeat(v, d), np.repeat(v, d)])
+        rep_c = np.concatenate([vc, np.repeat(vc, d), np.repeat(vc, d)])
+        F = forces(model, Y, rep, bird, n, rep_c)
+        vals = tuple(f[:B] for f in F)
+        grads = tuple((f[B : B + B * d] - f[B + B * d :]).reshape(B, d) / (2 * FD_STEP) for f in F)
+        return vals, grads  # type: ignore[return-value]
+    w, g = out
+    pitch = flat["pitch"]
+    dx, dz = body_drag(v, vc, pitch, bird.rho, bird.body_drag_area)
+    ddx, ddz = _body_drag_pitch_derivative(v, vc, pitch, bird.rho, bird.body_drag_area)
+    ip = model.param_names.index("pitch")
+    gx, gz = g[:, 0].copy(), g[:, 2].copy()
+    gx[:, ip] += ddx
+    gz[:, ip] += ddz
+    return (w[:, 0] + dx, w[:, 2] + dz, w[:, 3].copy()), (gx, gz, g[:, 3].copy())
+
+
+def _body_drag_pitch_derivative(
+    speed: np.ndarray, climb: np.ndarray, pitch: np.ndarray, rho: float, area: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """d(Dx, Dz)/d(pitch) of :func:`birdsim.physics.aero.body_drag`."""
+    level = -0.5 * rho * np.square(speed) * np.cos(pitch) * area
+    vt = np.hypot(speed, climb)
+    attack = pitch - np.arctan2(climb, speed)
+    dmag = 0.5 * rho * np.square(vt) * np.sign(np.sin(attack)) * np.cos(attack) * area
+    unit = np.divide(1.0, vt, out=np.zeros_like(vt), where=vt > 0.0)
+    level_flight = climb == 0.0
+    return np.where(level_flight, level, -dmag * unit * speed), np.where(level_flight, 0.0, dmag * unit * climb)
+
+
+def other_cost_gradient(
+    model: KinematicModel,
+    X: np.ndarray,
+    speed: np.ndarray | float,
+    weights: CostWeights,
+    previous: np.ndarray | None = None,
+) -> np.ndarray:
+    """Gradient of :func:`other_cost` with respect to the rows of ``X`` (B x d)."""
+    X = np.asarray(X, dtype=float)
+    out = np.zeros(X.shape)
+    if weights.orientation > 0 and uses_orientation_cost(model):
+        ip = model.param_names.index("pitch")
+        out[..., ip] += weights.orientation * (np.asarray(speed) == 0.0)
+    if weights.distance > 0 and previous is not None:
+        diff = X - np.asarray(previous, dtype=float)
+        norm = np.linalg.norm(diff, axis=-1, keepdims=True)
+        out += weights.distance * np.divide(diff, norm, out=np.zeros_like(diff), where=norm > 0)
+    return out
+
+
+def _kernel_forces(
+    model: KinematicModel, X: np.ndarray, speed: np.ndarray | float, bird: Bird, n: int, climb: np.ndarray | float
+) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+    """The lean path of :func:`forces`: the kernel's means without building a Cycle
+    (the same numbers as ``evaluate_cycle(...).mean``); None where the kernel cannot
+    run.  Non-finite parameters give NaN rows (a table cell then fails), not an error."""
+    B = X.shape[0]
+    try:
+        v = np.ascontiguousarray(np.broadcast_to(np.asarray(speed, dtype=float), (B,)))
+        vc = np.ascontiguousarray(np.broadcast_to(np.asarray(climb, dtype=float), (B,)))
+    except ValueError:
+        return None  # let evaluate_cycle name the shapes
+    flat = {name: np.ascontiguousarray(X[:, i]) for i, name in enumerate(model.param_names)}
+    out = kernel.means(model, flat, v, vc, np.zeros((B, 3)), bird, sample_phases(n, False))
+    if out is None:
+        return None
+    f, p = out[0].sum(axis=-2), out[1].sum(axis=-1)
+    if not vc.any():  # level flight: eq. 7, the same operations as aero.body_drag
+        dx = -0.5 * bird.rho * np.square(v) * np.sin(flat["pitch"]) * bird.body_drag_area
+        return f[:, 0] + dx, f[:, 2] + np.zeros_like(dx), p
+    dx, dz = body_drag(v, vc, flat["pitch"], bird.rho, bird.body_drag_area)
+    return f[:, 0] + dx, f[:, 2] + dz, p
 
 
 def breakdown_from_forces(
@@ -150,10 +272,12 @@ def evaluate_cost(
     bird: Bird | None = None,
     previous: np.ndarray | None = None,
     n: int = 64,
+    climb: np.ndarray | float = 0.0,
 ) -> CostBreakdown:
-    """Every cost term of the parameter rows ``X`` (B x d) for demands (Fx_d, Fz_d) at speed V."""
+    """Every cost term of the parameter rows ``X`` (B x d) for demands (Fx_d, Fz_d) at
+    speed V and ``climb`` (positive up)."""
     weights = weights or CostWeights()
     bird = bird or Bird()
-    Fx, Fz, P = forces(model, X, speed, bird, n)
+    Fx, Fz, P = forces(model, X, speed, bird, n, climb)
     other = other_cost(model, X, speed, weights, previous)
     return breakdown_from_forces(Fx, Fz, P, Fx_demand, Fz_demand, weights, other)

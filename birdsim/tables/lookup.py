@@ -1,4 +1,5 @@
-"""Lookup tables of optimal wingbeats over the demand grid (Fx, Fz, V).
+"""Lookup tables of optimal wingbeats over the demand grid (Fx, Fz, V), optionally with
+a fourth axis ``climb`` (vertical speed relative to the air, positive up).
 
 A table holds, per cell of the grid, the optimal parameters of one kinematic model,
 the cost and its fractions, the achieved force and power, a status and the number of
@@ -7,9 +8,10 @@ same stem: ``<name>.npz`` (arrays) and ``<name>.json`` (metadata, human readable
 including the SHA-256 of the ``.npz`` so that a mismatched pair is detected).
 
 Forces are the dissertation's (right wing + body drag, seed earth axes, Fz < 0 up).
-Interpolation is multilinear over (Fx, Fz, V) (scipy's RegularGridInterpolator):
+Interpolation is multilinear over (Fx, Fz, V[, climb]) (scipy's RegularGridInterpolator):
 it reproduces the grid values exactly at the nodes, is monotone between them and
-never overshoots the parameter bounds.
+never overshoots the parameter bounds.  A table without a climb axis is for level
+flight: it answers climb = 0 only.
 """
 
 from __future__ import annotations
@@ -34,6 +36,8 @@ from birdsim.physics.kinematics import MODELS
 #: Bump when the file layout changes; tables of another version are refused on load.
 TABLE_FORMAT_VERSION = 1
 AXES = ("Fx", "Fz", "V")
+#: The optional fourth axis (after V): vertical speed relative to the air, positive up.
+CLIMB = "climb"
 STATUS_NAMES = ("ok", "unreachable", "failed")
 ACHIEVED_NAMES = ("Fx", "Fz", "P")
 
@@ -44,8 +48,8 @@ class TableError(BirdsimError):
 
 @dataclass(frozen=True, eq=False)
 class LookupTable:
-    """Optimal wingbeats of ``model`` over the grid ``axes`` (Fx, Fz, V), arrays indexed
-    ``[i_Fx, i_Fz, i_V, ...]``."""
+    """Optimal wingbeats of ``model`` over the grid ``axes`` (Fx, Fz, V and optionally
+    climb), arrays indexed ``[i_Fx, i_Fz, i_V, (i_climb,) ...]``."""
 
     model: str
     bird: Bird
@@ -61,7 +65,9 @@ class LookupTable:
     converged: np.ndarray | None = None  # nFx x nFz x nV, SLSQP's own convergence flag of the kept answer
 
     def __post_init__(self) -> None:
-        shape = tuple(len(self.axes[a]) for a in AXES)
+        if not all(a in self.axes for a in AXES) or set(self.axes) - set(AXES + (CLIMB,)):
+            raise TableError(f"table axes {sorted(self.axes)} are invalid; allowed: Fx, Fz, V and optionally climb")
+        shape = tuple(len(self.axes[a]) for a in self.axis_names)
         d = len(self.param_names)
         expected = {
             "params": shape + (d,),
@@ -78,7 +84,7 @@ class LookupTable:
             got = np.shape(getattr(self, name))
             if got != want:
                 raise TableError(f"table array {name} has shape {got}; expected {want} for grid {shape} and {d} parameters")
-        for a in AXES:
+        for a in self.axis_names:
             ax = np.asarray(self.axes[a], dtype=float)
             if ax.ndim != 1 or ax.size < 2 or np.any(np.diff(ax) <= 0) or not np.all(np.isfinite(ax)):
                 raise TableError(f"table axis {a}={ax.tolist()} is invalid; allowed: >= 2 finite increasing values")
@@ -100,8 +106,17 @@ class LookupTable:
     # ---- views -----------------------------------------------------------------------
 
     @property
-    def shape(self) -> tuple[int, int, int]:
-        return tuple(len(self.axes[a]) for a in AXES)  # type: ignore[return-value]
+    def axis_names(self) -> tuple[str, ...]:
+        """("Fx", "Fz", "V") or ("Fx", "Fz", "V", "climb")."""
+        return AXES + ((CLIMB,) if CLIMB in self.axes else ())
+
+    @property
+    def has_climb(self) -> bool:
+        return CLIMB in self.axes
+
+    @property
+    def shape(self) -> tuple[int, ...]:
+        return tuple(len(self.axes[a]) for a in self.axis_names)
 
     @property
     def status(self) -> np.ndarray:
@@ -110,8 +125,8 @@ class LookupTable:
 
     @property
     def demands(self) -> np.ndarray:
-        """The demanded (Fx, Fz, V) of every cell, nFx x nFz x nV x 3."""
-        return np.stack(np.meshgrid(*(self.axes[a] for a in AXES), indexing="ij"), axis=-1)
+        """The demanded (Fx, Fz, V[, climb]) of every cell, grid shape x number of axes."""
+        return np.stack(np.meshgrid(*(self.axes[a] for a in self.axis_names), indexing="ij"), axis=-1)
 
     @property
     def force_error(self) -> np.ndarray:
@@ -146,10 +161,12 @@ class LookupTable:
 
     # ---- interpolation ---------------------------------------------------------------
 
-    def _points(self, Fx: Any, Fz: Any, V: Any, clip: bool) -> tuple[np.ndarray, tuple[int, ...]]:
-        values = {"Fx": Fx, "Fz": Fz, "V": V}
+    def _points(self, Fx: Any, Fz: Any, V: Any, clip: bool, climb: Any = 0.0) -> tuple[np.ndarray, tuple[int, ...]]:
+        values = {"Fx": Fx, "Fz": Fz, "V": V, CLIMB: climb}
         arrays = {}
-        for a in AXES:
+        if not self.has_climb:
+            self._level_only(climb, clip)
+        for a in self.axis_names:
             try:
                 arr = np.asarray(values[a], dtype=float)
             except (TypeError, ValueError):
@@ -165,41 +182,73 @@ class LookupTable:
                 out = (arr < lo - 1e-12) | (arr > hi + 1e-12)
                 if np.any(out):
                     bad = float(arr[out].flat[0]) if arr.ndim else float(arr)
-                    raise TableError(f"{a}={bad:g} is outside the table grid; allowed: [{lo:g}, {hi:g}] (or clip=True / --clip)")
+                    raise TableError(f"{a}={bad:g} is outside the table grid; allowed: [{lo:g}, {hi:g}] (or clip=True)")
                 arr = np.clip(arr, lo, hi)
             arrays[a] = arr
-        b = np.broadcast_arrays(*(arrays[a] for a in AXES))
+        b = np.broadcast_arrays(*(arrays[a] for a in self.axis_names))
         return np.stack([x.ravel() for x in b], axis=-1), b[0].shape
+
+    def _level_only(self, climb: Any, clip: bool) -> None:
+        """A table without a climb axis answers climb = 0 (or anything, clipped to 0)."""
+        try:
+            arr = np.asarray(climb, dtype=float)
+        except (TypeError, ValueError):
+            raise TableError(f"climb={climb!r} is not a number") from None
+        if not np.all(np.isfinite(arr)):
+            raise TableError(f"climb={arr[~np.isfinite(arr)].flat[0] if arr.ndim else float(arr)} is not finite; allowed: 0 (this table has no climb axis)")
+        if not clip and np.any(np.abs(arr) > 1e-12):
+            bad = float(arr[np.abs(arr) > 1e-12].flat[0]) if arr.ndim else float(arr)
+            raise TableError(
+                f"climb={bad:g} is outside the table grid; allowed: 0 (a table without a climb axis is for level flight; "
+                "build one with `birdsim tables build --climb`, or clip=True / --clip)"
+            )
 
     def _interpolator(self) -> RegularGridInterpolator:
         cached = self.__dict__.get("_rgi")
         if cached is None:
-            grid = tuple(np.asarray(self.axes[a], dtype=float) for a in AXES)
+            grid = tuple(np.asarray(self.axes[a], dtype=float) for a in self.axis_names)
             values = np.concatenate([self.params, self.achieved, self.cost[..., None]], axis=-1)
             cached = RegularGridInterpolator(grid, values, method="linear")
             object.__setattr__(self, "_rgi", cached)
         return cached
 
-    def lookup_many(self, Fx: Any, Fz: Any, V: Any, clip: bool = False) -> dict[str, np.ndarray]:
+    def lookup_many(self, Fx: Any, Fz: Any, V: Any, clip: bool = False, *, climb: Any = 0.0) -> dict[str, np.ndarray]:
         """Vectorised lookup: arrays (broadcast together) in, a dict of arrays of their
         shape out: every parameter plus ``achieved_Fx``, ``achieved_Fz``, ``achieved_P``
-        and ``cost`` (interpolated).  Out-of-grid demands raise unless ``clip``."""
-        pts, shape = self._points(Fx, Fz, V, clip)
+        and ``cost`` (interpolated).  Out-of-grid demands raise unless ``clip``;
+        ``climb`` (positive up) other than 0 needs a table with a climb axis."""
+        pts, shape = self._points(Fx, Fz, V, clip, climb)
         vals = self._interpolator()(pts)
         d = len(self.param_names)
         names = list(self.param_names) + [f"achieved_{n}" for n in ACHIEVED_NAMES] + ["cost"]
         return {n: vals[:, k].reshape(shape) for k, n in enumerate(names[: d + 4])}
 
-    def lookup(self, Fx: float, Fz: float, V: float, clip: bool = False) -> dict[str, float]:
-        """The interpolated optimal parameters (radians) for one demand."""
-        out = self.lookup_many(Fx, Fz, V, clip)
+    def lookup(self, Fx: float, Fz: float, V: float, clip: bool = False, *, climb: float = 0.0) -> dict[str, float]:
+        """The interpolated optimal parameters for one demand.
+
+        Args:
+            Fx, Fz: demanded mean force, the dissertation's (right wing + body drag, seed
+                earth axes, Fz < 0 up), in the table's force units.
+            V: flight speed, in the table's speed units.
+            clip: clip a demand outside the grid to its edge instead of refusing it.
+            climb: vertical speed relative to the air, positive up, in the table's speed
+                units (0 = level flight; a table without a climb axis answers only 0).
+
+        Returns:
+            Parameter name -> value (radians), multilinear between the grid nodes.
+
+        Raises:
+            TableError: a demand that is not a finite number, or outside the grid
+                without ``clip`` (one line naming ``Fx``, ``Fz`` or ``V``).
+        """
+        out = self.lookup_many(Fx, Fz, V, clip, climb=climb)
         return {n: float(out[n]) for n in self.param_names}
 
-    def status_at(self, Fx: float, Fz: float, V: float, clip: bool = False) -> str:
+    def status_at(self, Fx: float, Fz: float, V: float, clip: bool = False, *, climb: float = 0.0) -> str:
         """The worst status of the grid cells around a demand (ok < unreachable < failed)."""
-        pts, _ = self._points(Fx, Fz, V, clip)
+        pts, _ = self._points(Fx, Fz, V, clip, climb)
         idx = []
-        for k, a in enumerate(AXES):
+        for k, a in enumerate(self.axis_names):
             ax = self.axes[a]
             i = int(np.clip(np.searchsorted(ax, pts[0, k]) - 1, 0, len(ax) - 2))
             near = [i, i + 1]
@@ -216,12 +265,12 @@ class LookupTable:
         """Write ``<stem>.npz`` and ``<stem>.json`` atomically; refuse to overwrite without ``force``."""
         npz_path, json_path = table_paths(path)
         check_output(npz_path, force)
-        check_output(json_path, force, arg="--out (json)")
+        check_output(json_path, force, arg="path (json)")
         buf = io.BytesIO()
         np.savez_compressed(
             buf,
             format_version=np.array(TABLE_FORMAT_VERSION),
-            **{f"axis_{a}": np.asarray(self.axes[a], dtype=float) for a in AXES},
+            **{f"axis_{a}": np.asarray(self.axes[a], dtype=float) for a in self.axis_names},
             params=self.params,
             cost=self.cost,
             cost_fractions=self.cost_fractions,
@@ -236,7 +285,7 @@ class LookupTable:
             format_version=TABLE_FORMAT_VERSION,
             model=self.model,
             param_names=list(self.param_names),
-            axes={a: [float(x) for x in self.axes[a]] for a in AXES},
+            axes={a: [float(x) for x in self.axes[a]] for a in self.axis_names},
             status_names=list(STATUS_NAMES),
             fraction_names=list(FRACTION_NAMES),
             achieved_names=list(ACHIEVED_NAMES),
@@ -258,8 +307,19 @@ def table_paths(path: str | Path) -> tuple[Path, Path]:
 
 
 def load_table(path: str | Path) -> LookupTable:
-    """Read a table (``.npz`` or ``.json`` path, or the stem); one clear error for a
-    missing, unreadable, mismatched or other-version file."""
+    """Read a table written by :meth:`LookupTable.save` / ``birdsim tables build``.
+
+    Args:
+        path: the ``.npz`` or ``.json`` file, or their common stem.
+
+    Returns:
+        The table (arrays indexed ``[i_Fx, i_Fz, i_V, ...]``).
+
+    Raises:
+        TableError: one line naming the file when either file is missing, unreadable,
+            truncated, not a table, of another format version, or when the two do not
+            belong together (checksum).
+    """
     npz_path, json_path = table_paths(path)
     for p in (npz_path, json_path):
         if not p.is_file():
@@ -292,7 +352,7 @@ def load_table(path: str | Path) -> LookupTable:
             model=str(meta["model"]),
             bird=Bird.from_dict(meta["bird"]),
             param_names=tuple(meta["param_names"]),
-            axes={a: arrays[f"axis_{a}"] for a in AXES},
+            axes={a: arrays[f"axis_{a}"] for a in AXES + (CLIMB,) if a in AXES or f"axis_{a}" in arrays},
             params=arrays["params"],
             cost=arrays["cost"],
             cost_fractions=arrays["cost_fractions"],

@@ -10,9 +10,12 @@ K = 0.  Every solver returns a :class:`Solution`.
 SLSQP (scipy) gets the standard slack-variable reformulation of the absolute values,
 ``min w.s + h(x)  s.t.  -s <= r(x) <= s``, which is smooth, so the kinks of ``|r|``
 (exactly where a reachable demand is met) do not stall the line search.  Gradients
-are central finite differences computed in ONE batched call of the objective (the
-point and 2d perturbed points), which is what makes the vectorised cycle evaluation
-pay off.
+are exact for the wingbeat problem (forward-mode derivatives from the fused kernel,
+:func:`birdsim.tables.cost.forces_and_gradients`) and central finite differences in
+ONE batched call for a plain function.  SLSQP asks for values at line-search trials
+and for gradients only at accepted iterates, so the two are cached separately and a
+trial costs one wingbeat.  A run whose best cost stops improving is ended
+(:data:`STALL_ITERATIONS`) and the best point it visited is returned.
 """
 
 from __future__ import annotations
@@ -25,13 +28,18 @@ from scipy import optimize as so
 from scipy.stats import qmc
 
 from birdsim.physics.bird import Bird
-from birdsim.tables.cost import CostWeights, forces, other_cost
+from birdsim.tables.cost import CostWeights, forces, forces_and_gradients, other_cost, other_cost_gradient
 from birdsim.errors import BirdsimError, check_finite
 from birdsim.physics.kinematics import KinematicModel, get_model
 
 #: Central-difference step (rad) of the batched gradients: truncation error ~h^2 f''',
 #: round-off ~1e-16/h; 1e-6 keeps both below 1e-9 for these O(1) smooth functions.
 FD_STEP = 1e-6
+
+#: A run is ended when its best cost has not dropped by more than STALL_TOL for this
+#: many iterations (SLSQP otherwise spends maxiter oscillating on a kink or a bound).
+STALL_ITERATIONS = 25
+STALL_TOL = 1e-10
 
 
 @dataclass(frozen=True)
@@ -69,6 +77,7 @@ class Problem:
         if self.lower.shape != self.upper.shape or np.any(self.lower > self.upper):
             raise BirdsimError(f"bounds lower={self.lower} upper={self.upper} are invalid; allowed: lower <= upper")
         self.evaluations = 0
+        self.gradient_evaluations = 0  # points whose gradient was asked for
 
     @property
     def dim(self) -> int:
@@ -87,6 +96,20 @@ class Problem:
         R, h = self.parts(X)
         return np.abs(R) @ self.weights + h
 
+    def _parts_and_jacobian(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, float, np.ndarray]:
+        """Central differences of :meth:`parts` in one batched call (point + 2d points)."""
+        d = self.dim
+        steps = FD_STEP * np.eye(d)
+        R, h = self.parts(np.vstack([x[None], x + steps, x - steps]))
+        jr = (R[1 : d + 1] - R[d + 1 :]).T / (2 * FD_STEP)  # K x d
+        gh = (h[1 : d + 1] - h[d + 1 :]) / (2 * FD_STEP)
+        return R[0], jr, float(h[0]), gh
+
+    def parts_and_jacobian(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, float, np.ndarray]:
+        """``(r (K,), dr/dx (K x d), h, dh/dx (d,))`` at one point ``x`` (d,)."""
+        self.gradient_evaluations += 1
+        return self._parts_and_jacobian(np.asarray(x, dtype=float))
+
     def achieved(self, x: np.ndarray) -> tuple[float, float, float]:
         """Achieved (Fx, Fz, P) for a wingbeat problem; NaN for a plain function."""
         return (float("nan"),) * 3
@@ -104,8 +127,11 @@ class FunctionProblem(Problem):
 
 
 class ForceProblem(Problem):
-    """Find the wingbeat of ``model`` that delivers (Fx_d, Fz_d) at speed V for the least
-    cost (:mod:`birdsim.tables.cost`).  ``n`` samples per wingbeat in the search."""
+    """Find the wingbeat of ``model`` that delivers (Fx_d, Fz_d) at speed V and ``climb``
+    (vertical speed relative to the air, positive up) for the least cost
+    (:mod:`birdsim.tables.cost`).  ``n`` samples per wingbeat in the search.  An
+    ``evaluator(X, speed)`` replaces the cycle evaluation; at a climb other than 0 it is
+    called as ``evaluator(X, speed, climb=climb)``."""
 
     def __init__(
         self,
@@ -118,7 +144,8 @@ class ForceProblem(Problem):
         bird: Bird | None = None,
         previous: np.ndarray | None = None,
         n: int = 32,
-        evaluator: Callable[[np.ndarray, float], tuple[np.ndarray, np.ndarray, np.ndarray]] | None = None,
+        evaluator: Callable[..., tuple[np.ndarray, np.ndarray, np.ndarray]] | None = None,
+        climb: float = 0.0,
     ) -> None:
         self.model = model if isinstance(model, KinematicModel) else get_model(model)
         super().__init__(*self.model.bounds)
@@ -129,6 +156,7 @@ class ForceProblem(Problem):
             raise BirdsimError(f"speed={speed!r} is invalid; allowed: a finite number >= 0")
         self.cost_weights = weights or CostWeights()
         self.weights = np.array([self.cost_weights.force_x, self.cost_weights.force_z, self.cost_weights.power])
+        self.climb = check_finite("climb", climb, "a finite number (positive up)")
         self.bird = bird or Bird()
         self.previous = None if previous is None else np.asarray(previous, dtype=float)
         self.n = n
@@ -136,8 +164,10 @@ class ForceProblem(Problem):
 
     def _forces(self, X: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         if self.evaluator is not None:
+            if self.climb != 0.0:
+                return self.evaluator(X, self.speed, climb=self.climb)
             return self.evaluator(X, self.speed)
-        return forces(self.model, X, self.speed, self.bird, self.n)
+        return forces(self.model, X, self.speed, self.bird, self.n, self.climb)
 
     def _parts(self, X: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         Fx, Fz, P = self._forces(X)
@@ -147,6 +177,23 @@ class ForceProblem(Problem):
     def achieved(self, x: np.ndarray) -> tuple[float, float, float]:
         Fx, Fz, P = self._forces(np.atleast_2d(x))
         return float(Fx[0]), float(Fz[0]), float(P[0])
+
+    def _parts_and_jacobian(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, float, np.ndarray]:
+        """Exact: the kernel's forward-mode gradients (or an evaluator's ``gradients``)."""
+        X = x[None]
+        grad_fn = getattr(self.evaluator, "gradients", None) if self.evaluator is not None else None
+        if self.evaluator is not None and grad_fn is None:
+            return super()._parts_and_jacobian(x)  # an evaluator of values only
+        self.evaluations += 1
+        if grad_fn is not None:
+            (Fx, Fz, P), (gx, gz, gp) = grad_fn(X, self.speed, climb=self.climb)
+        else:
+            (Fx, Fz, P), (gx, gz, gp) = forces_and_gradients(self.model, X, self.speed, self.bird, self.n, self.climb)
+        r = np.array([Fx[0] - self.Fx_demand, Fz[0] - self.Fz_demand, P[0]])
+        jr = np.stack([gx[0], gz[0], gp[0]])
+        h = other_cost(self.model, X, self.speed, self.cost_weights, self.previous)
+        gh = other_cost_gradient(self.model, X, self.speed, self.cost_weights, self.previous)
+        return r, jr, float(h[0]), gh[0]
 
     def achieved_from(self, r: np.ndarray) -> tuple[float, float, float]:
         """(Fx, Fz, P) from the residuals of one point."""
@@ -174,54 +221,93 @@ def _finish(
     return Solution(x, cost, method, bool(converged), str(message), problem.evaluations - evals0, int(nit), Fx, Fz, P)
 
 
-def slsqp(problem: Problem, x0: Sequence[float], *, maxiter: int = 100, ftol: float = 1e-10) -> Solution:
-    """Bounded SLSQP from ``x0`` with slack variables for the absolute values and
-    batched central-difference gradients."""
+def slsqp(
+    problem: Problem, x0: Sequence[float], *, maxiter: int = 100, ftol: float = 1e-10, stall: int = STALL_ITERATIONS
+) -> Solution:
+    """Bounded SLSQP from ``x0`` with slack variables for the absolute values.
+
+    Values and gradients are cached by point: line-search trials cost values only,
+    accepted iterates one gradient evaluation.  The run ends after ``stall`` iterations
+    without a drop of the best cost by more than :data:`STALL_TOL`; the best point
+    visited is returned (``converged`` False, ``message`` says why).
+    """
     d, w = problem.dim, problem.weights
     K = w.size
     lo, hi = problem.lower, problem.upper
     x0 = np.clip(np.asarray(x0, dtype=float), lo, hi)
     evals0 = problem.evaluations
-    steps = FD_STEP * np.eye(d)
-    cache: dict[bytes, tuple[np.ndarray, np.ndarray, float, np.ndarray]] = {}
+    values: dict[bytes, tuple[np.ndarray, float]] = {}
+    grads: dict[bytes, tuple[np.ndarray, np.ndarray]] = {}
 
-    def parts_grad(z: np.ndarray) -> tuple[np.ndarray, np.ndarray, float, np.ndarray]:
+    def point(z: np.ndarray) -> tuple[np.ndarray, bytes]:
         x = np.clip(z[:d], lo, hi)
-        key = x.tobytes()
-        if key not in cache:
-            R, h = problem.parts(np.vstack([x[None], x + steps, x - steps]))
-            jr = (R[1 : d + 1] - R[d + 1 :]).T / (2 * FD_STEP)  # K x d
-            gh = (h[1 : d + 1] - h[d + 1 :]) / (2 * FD_STEP)
-            cache.clear()
-            cache[key] = (R[0], jr, float(h[0]), gh)
-        return cache[key]
+        return x, x.tobytes()
+
+    def val(z: np.ndarray) -> tuple[np.ndarray, float]:
+        x, key = point(z)
+        if key not in values:
+            if len(values) > 256:
+                values.clear()
+            R, h = problem.parts(x[None])
+            values[key] = (R[0], float(h[0]))
+        return values[key]
+
+    def grad(z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        x, key = point(z)
+        if key not in grads:
+            r, jr, h, gh = problem.parts_and_jacobian(x)
+            grads.clear()
+            grads[key] = (jr, gh)
+            values.setdefault(key, (r, h))
+        return grads[key]
 
     def fun(z: np.ndarray) -> float:
-        return float(w @ z[d:] + parts_grad(z)[2])
+        return float(w @ z[d:] + val(z)[1])
 
     def jac(z: np.ndarray) -> np.ndarray:
-        return np.concatenate([parts_grad(z)[3], w])
+        return np.concatenate([grad(z)[1], w])
 
     def cons(z: np.ndarray) -> np.ndarray:
-        r = parts_grad(z)[0]
+        r = val(z)[0]
         return np.concatenate([z[d:] - r, z[d:] + r])
 
     def cons_jac(z: np.ndarray) -> np.ndarray:
-        jr = parts_grad(z)[1]
+        jr = grad(z)[0]
         eye = np.eye(K)
         return np.block([[-jr, eye], [jr, eye]])
 
-    r0 = parts_grad(np.concatenate([x0, np.zeros(K)]))[0]
+    best: dict[str, object] = {"cost": np.inf, "x": x0, "since": 0}
+
+    def track(z: np.ndarray) -> None:
+        x, _ = point(z)
+        r, h = val(z)
+        c = float(np.abs(r) @ w + h)
+        if c < float(best["cost"]) - STALL_TOL:  # type: ignore[arg-type]
+            best.update(cost=c, x=x, since=0)
+        else:
+            if c < float(best["cost"]):  # type: ignore[arg-type]
+                best.update(cost=c, x=x)
+            best["since"] = int(best["since"]) + 1  # type: ignore[call-overload]
+            if int(best["since"]) >= stall:  # type: ignore[call-overload]
+                raise StopIteration
+
+    r0 = val(np.concatenate([x0, np.zeros(K)]))[0]
     z0 = np.concatenate([x0, np.abs(r0)])
+    track(z0)
     bounds = list(zip(lo, hi)) + [(0.0, None)] * K
     constraints = [{"type": "ineq", "fun": cons, "jac": cons_jac}] if K else []
     res = so.minimize(
-        fun, z0, jac=jac, method="SLSQP", bounds=bounds, constraints=constraints, options={"maxiter": maxiter, "ftol": ftol}
+        fun, z0, jac=jac, method="SLSQP", bounds=bounds, constraints=constraints,
+        options={"maxiter": maxiter, "ftol": ftol}, callback=track,
     )
-    x = np.clip(res.x[:d], lo, hi)
-    known = cache.get(x.tobytes())
-    parts = (known[0], known[2]) if known is not None else None
-    return _finish(problem, x, "slsqp", res.success, res.message, evals0, res.nit, parts)
+    stalled = res.status == 99  # the callback raised StopIteration
+    x, _ = point(res.x)
+    r, h = val(np.concatenate([x, np.zeros(K)]))
+    if float(np.abs(r) @ w + h) > float(best["cost"]):  # type: ignore[arg-type]
+        x = np.asarray(best["x"])
+        r, h = val(np.concatenate([x, np.zeros(K)]))
+    message = f"no progress in {stall} iterations" if stalled else res.message
+    return _finish(problem, x, "slsqp", res.success and not stalled, message, evals0, res.nit, (r, h))
 
 
 def multistart(problem: Problem, starts: np.ndarray, **kwargs: object) -> Solution:

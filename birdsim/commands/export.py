@@ -1,0 +1,97 @@
+"""``birdsim export``: a flight to USD, BVH or CSV for animation tools (docs/export.md).
+
+SOURCE is a preset, a manoeuvre .toml (flown by the kinematic playback exactly as
+``birdsim render`` flies it) or a flight log .npz from ``birdsim fly``."""
+
+from __future__ import annotations
+
+import argparse
+import time
+from pathlib import Path
+
+from birdsim.errors import BirdsimError
+from birdsim.commands.common import add_bird_arguments, bird_from_args
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    from birdsim.flight.manoeuvre import PRESETS
+
+    p = sub.add_parser("export", help="export a flight to USD, BVH or CSV (for Blender, Maya, Houdini...)", description=__doc__)
+    p.add_argument("source", metavar="SOURCE", help=f"a preset ({', '.join(PRESETS)}), a manoeuvre .toml or a flight log .npz")
+    p.add_argument("--format", required=True, metavar="FMT", help="usd (needs birdsim[usd]), bvh or csv")
+    p.add_argument("--out", required=True, metavar="PATH", help="output file (.usd/.usda/.usdc, .bvh, .csv)")
+    p.add_argument("--fps", default="30", metavar="N", help="frames per second of animation (default 30)")
+    p.add_argument("--model", default=None, help="kinematic model for a manoeuvre (default m4; a log names its own)")
+    p.add_argument("--table", metavar="FILE", help="lookup table for a manoeuvre (default tables/<model>.npz)")
+    p.add_argument("--seconds", metavar="S", help="animation length for a manoeuvre (default: the whole manoeuvre)")
+    p.add_argument("--beat-rate", metavar="HZ", help="wingbeats per second of animation (default: real time for an SI bird, 2 for the seed bird)")
+    p.add_argument("--metres-per-unit", default="1", metavar="M", help="metres per bird length unit (default 1: the pigeon in metres, the seed bird's semispan as 1 m)")
+    p.add_argument("--force", action="store_true", help="overwrite an existing output file")
+    add_bird_arguments(p)
+    p.set_defaults(func=run)
+
+
+def _positive(arg: str, raw: str | None) -> float | None:
+    import math
+
+    if raw is None:
+        return None
+    try:
+        v = float(raw)
+    except ValueError:
+        raise BirdsimError(f"{arg} {raw!r} is not a number; allowed: a number > 0") from None
+    if not (math.isfinite(v) and v > 0):
+        raise BirdsimError(f"{arg} {raw!r} is invalid; allowed: a number > 0")
+    return v
+
+
+def run(args: argparse.Namespace) -> int:
+    from birdsim import export
+    from birdsim.commands.render import _load_table, check_writable
+    from birdsim.export.frames import check_fps
+
+    # every cheap check first: a mistake costs nothing and writes nothing
+    export.check_format(args.format, Path(args.out))
+    fps = check_fps(args.fps)
+    beat_rate = _positive("--beat-rate", args.beat_rate)
+    metres = _positive("--metres-per-unit", args.metres_per_unit)
+    seconds = _positive("--seconds", args.seconds)
+    out = Path(args.out)
+    if args.format == "usd":
+        from birdsim.export.usd import require_usd
+
+        require_usd()
+    if args.format == "bvh":
+        from birdsim.export.bvh import require_bvh
+
+        require_bvh()
+    check_writable(out, args.force)
+    wall0 = time.perf_counter()
+    if args.source.lower().endswith(".npz"):
+        from birdsim.export.flightlog import frames_from_log, read_flight_log
+
+        log = read_flight_log(args.source)
+        if args.model and args.model != log.model:
+            raise BirdsimError(f"--model {args.model!r} differs from the log's model {log.model!r}; allowed: omit --model for a log")
+        for arg, value in (("--table", args.table), ("--seconds", args.seconds), ("--bird", args.bird), ("--set", args.set)):
+            if value:
+                raise BirdsimError(f"{arg} does not apply to a flight log (it records its bird and length); allowed: omit {arg}")
+        frames = frames_from_log(log, fps=fps, beat_rate=beat_rate, metres_per_unit=metres)  # type: ignore[arg-type]
+    else:
+        from birdsim.export.frames import from_playback
+        from birdsim.flight.manoeuvre import get_manoeuvre
+        from birdsim.physics.kinematics import get_model
+
+        manoeuvre = get_manoeuvre(args.source)
+        model = get_model(args.model or "m4").name
+        table_path = Path(args.table) if args.table else Path("tables") / f"{model}.npz"
+        table = _load_table(table_path, model, explicit=bool(args.table))
+        bird = bird_from_args(args) if (args.bird or args.set) else None
+        frames = from_playback(manoeuvre, table, bird=bird, model=model, fps=fps, beat_rate=beat_rate, seconds=seconds, metres_per_unit=metres)  # type: ignore[arg-type]
+    path = export.write(frames, args.format, out)
+    size = path.stat().st_size
+    print(
+        f"wrote {path} ({args.format}, {frames.frames} frames @ {fps:g} fps = {(frames.frames - 1) / fps:.2f} s, "
+        f"{size / 1e6:.2f} MB, model {frames.model}, bird {frames.bird.name}, in {time.perf_counter() - wall0:.1f} s)"
+    )
+    return 0

@@ -1,0 +1,236 @@
+"""Forward-mode dual numbers through the wingbeat chain: the exact derivatives of the
+cycle means with respect to every wingbeat parameter, compiled by numba.
+
+Each quantity is an array ``[value, d/dp_1, ..., d/dp_d]``.  Every joint's sinusoid is
+affine in the parameters (:func:`birdsim.physics.kernel.joint_derivatives`), so the
+derivatives of the joint angles are exact; rotations, the polar and the power carry
+them with the product and chain rules.  Called through
+:func:`birdsim.physics.kernel.means_and_gradients`; conventions as in
+:mod:`birdsim.physics.kernel` (the same chain encoding and rotations).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from birdsim.physics.jit import jit as _jit
+
+
+# ---- forward-mode dual numbers: value in [0], d/d(param i) in [1 + i] ----------------
+
+
+@_jit
+def _drot(V, axis, c, s, sg):
+    """Rotate the dual 3-vector V (3 x D) in place by the passive rotation (c, sg*s)."""
+    if axis == 1:
+        i1, i2, e = 0, 2, sg
+    elif axis == 0:
+        i1, i2, e = 1, 2, -sg
+    else:
+        i1, i2, e = 0, 1, -sg
+    a0, b0, c0, s0 = V[i1, 0], V[i2, 0], c[0], e * s[0]
+    for i in range(1, V.shape[1]):
+        ai, bi, ci, si = V[i1, i], V[i2, i], c[i], e * s[i]
+        V[i1, i] = c0 * ai + ci * a0 - (s0 * bi + si * b0)
+        V[i2, i] = s0 * ai + si * a0 + c0 * bi + ci * b0
+    V[i1, 0] = c0 * a0 - s0 * b0
+    V[i2, 0] = s0 * a0 + c0 * b0
+
+
+@_jit
+def _dpolar(polar, coeffs, vx, vz, area, rho, gx, gz):
+    """Dual version of :func:`_polar_force`: panel-axes force of an element into gx, gz."""
+    D = vx.shape[0]
+    x, z = vx[0], vz[0]
+    if polar == 0:
+        lift2, cd0, cdm = 2.0 * coeffs[0], coeffs[1], coeffs[2]
+        x2, z2 = x * x, z * z
+        u2 = x2 + z2
+        u = math.sqrt(u2)
+        h = 0.5 * rho * area
+        A = h / u if u > 0.0 else 0.0
+        drag = cd0 * u2 + cdm * z2
+        Cx = lift2 * z2 - drag
+        Cz = lift2 * x2 + drag
+        for i in range(1, D):
+            xi, zi = vx[i], vz[i]
+            u2i = 2.0 * (x * xi + z * zi)
+            Ai = -h * (u2i / (2.0 * u)) / u2 if u > 0.0 else 0.0
+            dragi = cd0 * u2i + cdm * 2.0 * z * zi
+            Cxi = lift2 * 2.0 * z * zi - dragi
+            Czi = lift2 * 2.0 * x * xi + dragi
+            gx[i] = Ai * x * Cx + A * xi * Cx + A * x * Cxi
+            gz[i] = -(Ai * z * Cz + A * zi * Cz + A * z * Czi)
+        gx[0] = A * x * Cx
+        gz[0] = -A * z * Cz
+        return
+    alpha = math.atan2(z, x)
+    a = (alpha + 0.5 * math.pi) % math.pi - 0.5 * math.pi
+    k1, k2 = 180.0 / math.pi, math.pi / 180.0
+    deg = abs(a) * k1
+    sg = 1.0 if a > 0.0 else (-1.0 if a < 0.0 else (0.0 if a == 0.0 else a))
+    arg1 = (2.13 * deg - 7.20) * k2
+    arg2 = (2.04 * deg - 9.82) * k2
+    cl = sg * (0.225 + 1.58 * math.sin(arg1))
+    cd = 1.92 - 1.55 * math.cos(arg2)
+    u2 = x * x + z * z
+    qa = 0.5 * rho * u2 * area
+    ca, sa = math.cos(alpha), math.sin(alpha)
+    fx0 = -cd * ca + cl * sa
+    fz0 = -cd * sa - cl * ca
+    for i in range(1, D):
+        xi, zi = vx[i], vz[i]
+        al_i = (x * zi - z * xi) / u2 if u2 > 0.0 else 0.0
+        deg_i = sg * al_i * k1
+        cl_i = sg * 1.58 * math.cos(arg1) * 2.13 * k2 * deg_i
+        cd_i = 1.55 * math.sin(arg2) * 2.04 * k2 * deg_i
+        qa_i = rho * area * (x * xi + z * zi)
+        ca_i, sa_i = -sa * al_i, ca * al_i
+        gx[i] = qa_i * fx0 + qa * (-cd_i * ca - cd * ca_i + cl_i * sa + cl * sa_i)
+        gz[i] = qa_i * fz0 + qa * (-cd_i * sa - cd * sa_i - cl_i * ca - cl * ca_i)
+    gx[0] = qa * fx0
+    gz[0] = qa * fz0
+
+
+@_jit
+def _grad_kernel(
+    lo, hi, pitch, speed, climb, amp, phase, bias, const, damp, dphase, dbias, ip, phases, omega, rho,
+    kind, joint, axis, group, span, length, radius, area, strips, polar, coeffs, out,
+):
+    J, N, K = amp.shape[1], phases.shape[0], kind.shape[0]
+    D = damp.shape[1] + 1
+    ct, stt = np.cos(phases), np.sin(phases)
+    for b in range(lo, hi):
+        cph = np.cos(phase[b])
+        sph = np.sin(phase[b])
+        cq = np.zeros((J, D))
+        sq = np.zeros((J, D))
+        qv = np.zeros((J, D))
+        qd = np.zeros((J, D))
+        CP = np.zeros(D)
+        SP = np.zeros(D)
+        CP[0], SP[0] = math.cos(pitch[b]), math.sin(pitch[b])
+        CP[1 + ip], SP[1 + ip] = -SP[0], CP[0]
+        rx, rz = speed[b], -climb[b]
+        A = np.zeros((3, D))
+        for i in range(D):
+            A[0, i] = CP[i] * rx - SP[i] * rz
+            A[2, i] = SP[i] * rx + CP[i] * rz
+        for j in range(J):
+            if const[j]:
+                q = bias[b, j]
+                c, s = math.cos(q), math.sin(q)
+                qv[j, 0], cq[j, 0], sq[j, 0] = q, c, s
+                for i in range(1, D):
+                    qv[j, i] = dbias[j, i - 1]
+                    cq[j, i] = -s * dbias[j, i - 1]
+                    sq[j, i] = c * dbias[j, i - 1]
+        p = np.zeros((3, D))
+        vs = np.zeros((3, D))
+        vw = np.zeros((3, D))
+        vf = np.zeros((3, D))
+        v = np.zeros((3, D))
+        g = np.zeros((3, D))
+        dv = np.zeros((3, D))
+        gx = np.zeros(D)
+        gz = np.zeros(D)
+        acc = np.zeros((4, D))
+        for t in range(N):
+            for j in range(J):
+                if not const[j]:
+                    sarg = stt[t] * cph[j] + ct[t] * sph[j]
+                    carg = ct[t] * cph[j] - stt[t] * sph[j]
+                    am = amp[b, j]
+                    q = am * sarg + bias[b, j]
+                    c, s = math.cos(q), math.sin(q)
+                    qv[j, 0], cq[j, 0], sq[j, 0] = q, c, s
+                    qd[j, 0] = (am * omega) * carg
+                    for i in range(1, D):
+                        dq = damp[j, i - 1] * sarg + am * carg * dphase[j, i - 1] + dbias[j, i - 1]
+                        qv[j, i] = dq
+                        cq[j, i] = -s * dq
+                        sq[j, i] = c * dq
+                        qd[j, i] = omega * (damp[j, i - 1] * carg - am * sarg * dphase[j, i - 1])
+            for k in range(K):
+                L = length[k]
+                for e in range(strips[k]):
+                    p[:, :] = 0.0
+                    vs[:, :] = 0.0
+                    vw[:, :] = 0.0
+                    p[1, 0] = radius[k, e]
+                    for il in range(L - 1, -1, -1):
+                        kd = kind[k, il]
+                        if kd == 0:
+                            p[1, 0] += span[k, il]
+                            continue
+                        j = joint[k, il]
+                        a = axis[k, il]
+                        dv[:, :] = 0.0
+                        if kd == 2:
+                            for i in range(D):
+                                p[a, i] += qv[j, i]
+                                dv[a, i] = qd[j, i]
+                        else:
+                            _drot(p, a, cq[j], sq[j], -1.0)
+                            _drot(vs, a, cq[j], sq[j], -1.0)
+                            _drot(vw, a, cq[j], sq[j], -1.0)
+                            # dv = qd * (e_a x p)
+                            if a == 0:
+                                r1, r2, o1, o2 = 1, 2, 2, 1  # (0, -z, y)
+                                sg1, sg2 = -1.0, 1.0
+                            elif a == 1:
+                                r1, r2, o1, o2 = 0, 2, 2, 0  # (z, 0, -x)
+                                sg1, sg2 = 1.0, -1.0
+                            else:
+                                r1, r2, o1, o2 = 0, 1, 1, 0  # (-y, x, 0)
+                                sg1, sg2 = -1.0, 1.0
+                            w0, a1, a2 = qd[j, 0], p[o1, 0], p[o2, 0]
+                            for i in range(D):
+                                if i == 0:
+                                    dv[r1, 0] = sg1 * w0 * a1
+                                    dv[r2, 0] = sg2 * w0 * a2
+                                else:
+                                    dv[r1, i] = sg1 * (w0 * p[o1, i] + qd[j, i] * a1)
+                                    dv[r2, i] = sg2 * (w0 * p[o2, i] + qd[j, i] * a2)
+                        grp = vs if group[k, il] == 0 else vw
+                        if True:
+                            for cc in range(3):
+                                for i in range(D):
+                                    grp[cc, i] += dv[cc, i]
+                    for cc in range(3):
+                        for i in range(D):
+                            vf[cc, i] = vs[cc, i] + vw[cc, i]
+                            v[cc, i] = A[cc, i] + vf[cc, i]
+                    for il in range(L):
+                        if kind[k, il] == 1:
+                            j = joint[k, il]
+                            _drot(v, axis[k, il], cq[j], sq[j], 1.0)
+                    _dpolar(polar, coeffs, v[0], v[2], area[k, e], rho, gx, gz)
+                    for i in range(D):
+                        g[0, i], g[1, i], g[2, i] = gx[i], 0.0, gz[i]
+                    for il in range(L - 1, -1, -1):
+                        if kind[k, il] == 1:
+                            j = joint[k, il]
+                            _drot(g, axis[k, il], cq[j], sq[j], -1.0)
+                    c0, s0 = CP[0], SP[0]
+                    g0x, g0z = g[0, 0], g[2, 0]
+                    acc[0, 0] += c0 * g0x + s0 * g0z
+                    acc[1, 0] += g[1, 0]
+                    acc[2, 0] += -s0 * g0x + c0 * g0z
+                    pw = 0.0
+                    for cc in range(3):
+                        pw += g[cc, 0] * vf[cc, 0]
+                    acc[3, 0] -= pw
+                    for i in range(1, D):
+                        acc[0, i] += c0 * g[0, i] + CP[i] * g0x + s0 * g[2, i] + SP[i] * g0z
+                        acc[1, i] += g[1, i]
+                        acc[2, i] += -(s0 * g[0, i] + SP[i] * g0x) + c0 * g[2, i] + CP[i] * g0z
+                        pw = 0.0
+                        for cc in range(3):
+                            pw += g[cc, 0] * vf[cc, i] + g[cc, i] * vf[cc, 0]
+                        acc[3, i] -= pw
+        for r in range(4):
+            for i in range(D):
+                out[b, r, i] = acc[r, i] / N

@@ -1,0 +1,58 @@
+"""`birdsim export`: the happy path per format and every bad input as one line, exit 2,
+nothing written."""
+
+import sys
+
+import numpy as np
+import pytest
+
+from birdsim.cli import main
+
+from test_export_flightlog import synth_log
+
+
+def run(capsys, *argv):
+    code = main(list(argv))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+@pytest.mark.parametrize("fmt, suffix", [("csv", ".csv"), ("bvh", ".bvh"), ("usd", ".usda")])
+def test_export_each_format(tmp_path, capsys, fmt, suffix):
+    out = tmp_path / f"cruise{suffix}"
+    code, text, err = run(capsys, "export", "cruise", "--format", fmt, "--out", str(out), "--seconds", "1")
+    assert code == 0, err
+    assert out.is_file() and "wrote" in text and "31 frames" in text
+    code, _, err = run(capsys, "export", "cruise", "--format", fmt, "--out", str(out), "--seconds", "1")
+    assert code == 2 and "--force" in err and err.count("\n") == 1
+
+
+def test_export_a_flight_log(tmp_path, capsys):
+    log = synth_log(tmp_path / "f.npz", beats=1.0)
+    out = tmp_path / "f.csv"
+    code, text, err = run(capsys, "export", str(log), "--format", "csv", "--out", str(out))
+    assert code == 0, err
+    assert "16 frames" in text  # one wingbeat at 2 per second and 30 fps, both ends
+
+
+def _bad(tmp_path, capsys, *argv, match):
+    code, out, err = run(capsys, "export", *argv)
+    assert code == 2, err
+    assert match in err and err.count("\n") == 1 and "Traceback" not in err
+    assert not [p for p in tmp_path.rglob("*") if p.suffix in (".usd", ".usda", ".bvh", ".csv") or ".partial" in p.name]
+
+
+def test_bad_inputs(tmp_path, capsys, monkeypatch):
+    o = str(tmp_path / "x.usd")
+    _bad(tmp_path, capsys, "cruise", "--format", "fbx", "--out", o, match="--format 'fbx' is unknown")
+    _bad(tmp_path, capsys, "cruise", "--format", "usd", "--out", o, "--fps", "0", match="--fps '0'")
+    _bad(tmp_path, capsys, "cruise", "--format", "bvh", "--out", o, match="does not end in .bvh")
+    (tmp_path / "ro").mkdir(mode=0o500)
+    if not __import__("os").access(tmp_path / "ro", __import__("os").W_OK):  # root writes anywhere
+        _bad(tmp_path, capsys, "cruise", "--format", "usd", "--out", str(tmp_path / "ro" / "x.usd"), match="not writable")
+    (tmp_path / "file").write_text("")
+    _bad(tmp_path, capsys, "cruise", "--format", "csv", "--out", str(tmp_path / "file" / "x.csv"), match="cannot be created")
+    np.savez(tmp_path / "other.npz", a=np.arange(3))
+    _bad(tmp_path, capsys, str(tmp_path / "other.npz"), "--format", "csv", "--out", str(tmp_path / "o.csv"), match="not a birdsim flight log")
+    monkeypatch.setitem(sys.modules, "pxr", None)  # usd-core not installed
+    _bad(tmp_path, capsys, "cruise", "--format", "usd", "--out", o, match="birdsim[usd]")
