@@ -42,7 +42,7 @@ def test_cruise_and_hover(bird):
     assert rms(np.hypot(ex, ez)) <= 0.05 and not r.arrays["saturated"].any()
 
 
-@pytest.mark.parametrize("bird", ["seed", pytest.param("pigeon", marks=pytest.mark.slow)])
+@pytest.mark.parametrize("bird", ["seed", "pigeon"])
 def test_take_off_and_landing(bird):
     r, tb, ex, ez = flight("take-off", bird)
     assert rms(np.hypot(ex, ez)) <= 0.1 and not r.arrays["saturated"].any()
