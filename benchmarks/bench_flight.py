@@ -19,17 +19,28 @@ BEATS = 20.0
 
 def main() -> None:
     bird = Bird.from_toml("models/seed-bird.toml")
-    for model, table_file, speed in (("m4", "tables/m4.npz", 0.9), ("m3", "tables/seed-m3.npz", 0.5)):
+    for model, table_file, speed in (
+        ("m4", "tables/m4.npz", 0.9),
+        ("m3", "tables/seed-m3.npz", 0.5),
+    ):
         table = load_table(table_file)
         for steps in (128, 512):
             config = SimConfig(steps_per_beat=steps)
             path = FlightPath("cruise", BEATS, False, False, (PathKeyframe(0.0, 6.0, V=speed),))
-            fly(FlightPath("warm", 1.0, False, False, (PathKeyframe(0.0, 6.0, V=speed),)), table, bird, model, config=config)
+            fly(
+                FlightPath("warm", 1.0, False, False, (PathKeyframe(0.0, 6.0, V=speed),)),
+                table,
+                bird,
+                model,
+                config=config,
+            )
             w0, c0 = time.perf_counter(), time.process_time()
             fly(path, table, bird, model, config=config)
             wall, cpu = time.perf_counter() - w0, time.process_time() - c0
             # the flight includes two probe wingbeats for the trimmed start
-            print(f"{model} period/{steps}: {BEATS / wall:6.1f} wingbeats per wall second, {BEATS / cpu:6.1f} per CPU second ({BEATS:g} wingbeats + 2 probe)")
+            print(
+                f"{model} period/{steps}: {BEATS / wall:6.1f} wingbeats per wall second, {BEATS / cpu:6.1f} per CPU second ({BEATS:g} wingbeats + 2 probe)"
+            )
 
 
 if __name__ == "__main__":

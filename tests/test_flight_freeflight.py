@@ -33,7 +33,9 @@ def table():
 
 
 def straight(beats: float) -> FlightPath:
-    return FlightPath("straight", beats, False, False, (PathKeyframe(0.0, Z, V=V, regime="cruise"),))
+    return FlightPath(
+        "straight", beats, False, False, (PathKeyframe(0.0, Z, V=V, regime="cruise"),)
+    )
 
 
 def errors(result):
@@ -70,7 +72,9 @@ def test_open_loop_drifts(table, cruise):
     assert open_loop.open_loop and not cruise.open_loop
 
 
-@pytest.mark.parametrize("wind", [(0.0, 0.3 * V), (0.3 * V, 0.0), (0.0, -0.3 * V)], ids=["up", "head", "down"])
+@pytest.mark.parametrize(
+    "wind", [(0.0, 0.3 * V), (0.3 * V, 0.0), (0.0, -0.3 * V)], ids=["up", "head", "down"]
+)
 def test_gust_recovery(table, wind):
     t0, beats = 2.0, 12.0
     r = fly(straight(beats), table, BIRD, "m4", gusts=[Gust(t0, 1.0, *wind)])
@@ -98,7 +102,12 @@ def test_same_flight_twice_is_identical(table):
 def test_gains_come_from_the_wingbeat():
     g = gains_for(BIRD, 2.0)
     wn = 1.0 / (TWO_PI * 2.0)
-    assert math.isclose(g.omega_n, wn) and math.isclose(g.kp, 3 * wn**2) and math.isclose(g.kd, 3 * wn) and math.isclose(g.ki, wn**3)
+    assert (
+        math.isclose(g.omega_n, wn)
+        and math.isclose(g.kp, 3 * wn**2)
+        and math.isclose(g.kd, 3 * wn)
+        and math.isclose(g.ki, wn**3)
+    )
     pigeon = Bird(omega=50.0, semispan=0.33, chord=0.12, rho=1.2, mass=0.48, gravity=9.81)
     assert math.isclose(gains_for(pigeon, 2.0).omega_n, 50.0 / (TWO_PI * 2.0))  # per second
     pd = gains_for(BIRD, 2.0, integral=False)
@@ -122,7 +131,16 @@ def test_steady_climb_uses_the_table_turned_into_the_air_path(table, vz):
     cruise target with the body pitched by gamma (without the turn the same flight's
     RMS error was ~0.15, measured)."""
     span = 8 * TWO_PI
-    path = FlightPath("climb", 8, False, False, (PathKeyframe(0, 4.0, x=0.0, vx=V, vz=vz), PathKeyframe(8, 4.0 + vz * span, x=V * span, vx=V, vz=vz)))
+    path = FlightPath(
+        "climb",
+        8,
+        False,
+        False,
+        (
+            PathKeyframe(0, 4.0, x=0.0, vx=V, vz=vz),
+            PathKeyframe(8, 4.0 + vz * span, x=V * span, vx=V, vz=vz),
+        ),
+    )
     r = fly(path, table, BIRD, "m4")
     tb, ex, ez = errors(r)
     assert np.sqrt(np.mean((ex**2 + ez**2)[tb >= 2])) <= 0.03

@@ -19,7 +19,10 @@ from birdsim.flight.presets import CRUISE_SPEED, DEMO_MODEL, PATH_PRESETS
 from birdsim.physics.bird import Bird
 from birdsim.tables.lookup import load_table
 
-BIRDS = {"seed": ("models/seed-bird.toml", "tables/seed-m3.npz"), "pigeon": ("models/pigeon.toml", "tables/pigeon-m3.npz")}
+BIRDS = {
+    "seed": ("models/seed-bird.toml", "tables/seed-m3.npz"),
+    "pigeon": ("models/pigeon.toml", "tables/pigeon-m3.npz"),
+}
 
 
 def flight(name: str, bird: str = "seed"):
@@ -48,6 +51,13 @@ def test_take_off_and_landing(bird):
     assert rms(np.hypot(ex, ez)) <= 0.1 and not r.arrays["saturated"].any()
     r, tb, ex, ez = flight("landing", bird)
     assert rms(np.hypot(ex, ez)) <= 0.1 and not r.arrays["saturated"].any()
-    info = summary({**r.arrays, "omega": np.array(1.0), "model": np.array("m3"), "bird": np.array('name = "seed"\n')})
+    info = summary(
+        {
+            **r.arrays,
+            "omega": np.array(1.0),
+            "model": np.array("m3"),
+            "bird": np.array('name = "seed"\n'),
+        }
+    )
     assert math.hypot(ex[-1], ez[-1]) <= 0.1  # on the perch
     assert info["final_mean_speed"] <= 0.05 * CRUISE_SPEED  # at rest (wingbeat mean; reduced units)

@@ -22,7 +22,15 @@ from birdsim.physics.cycle import evaluate_cycle
 from birdsim.physics.kinematics import get_model
 
 BIRD = Bird(mass=30.0, gravity=0.012)  # models/seed-bird.toml
-CRUISE = {"pitch": 0.0, "flap_amp": 0.55, "twist_amp": 0.25, "stroke_plane": 0.1, "wrist_amp": 0.3, "wrist_bias": 0.1, "wrist_lag": 1.2}
+CRUISE = {
+    "pitch": 0.0,
+    "flap_amp": 0.55,
+    "twist_amp": 0.25,
+    "stroke_plane": 0.1,
+    "wrist_amp": 0.3,
+    "wrist_bias": 0.1,
+    "wrist_lag": 1.2,
+}
 
 
 def _params(model: str = "m4", values: dict | None = None) -> np.ndarray:
@@ -115,7 +123,9 @@ def test_heavy_bird_flies_the_core_mean_force(monkeypatch):
     mean_world = (fb.P - fb.total_mass * np.array([0.9, 0.0, 0.0])) / (n * fb.h)
     core = evaluate_cycle("m4", CRUISE, 0.9, bird=fb.red, n=n).whole_bird_mean  # seed axes
     expected = np.array([float(core.Fx), -float(core.Fz)])
-    np.testing.assert_allclose(mean_world[[0, 2]], expected, atol=2e-5 * np.abs(expected).max())  # what is left: the body moves by 1e-6
+    np.testing.assert_allclose(
+        mean_world[[0, 2]], expected, atol=2e-5 * np.abs(expected).max()
+    )  # what is left: the body moves by 1e-6
     assert abs(expected[1]) > 0.1  # a real lift, not two zeros
 
 

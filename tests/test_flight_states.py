@@ -17,7 +17,10 @@ from birdsim.render.options import RenderOptions
 @pytest.fixture(scope="module")
 def log(tmp_path_factory):
     path = tmp_path_factory.mktemp("log") / "c.npz"
-    assert main(["fly", "cruise", "--out", str(path), "--seconds", str(2 * 2 * math.pi), "--quiet"]) == 0
+    assert (
+        main(["fly", "cruise", "--out", str(path), "--seconds", str(2 * 2 * math.pi), "--quiet"])
+        == 0
+    )
     return path
 
 
@@ -30,7 +33,9 @@ def test_states_resample_the_log(log):
     # instants on the log's own samples reproduce them; quaternions stay unit
     t_log = data["t"] * float(data["omega"]) / (2 * math.pi)
     k = 16  # instant 16 = 16 / 60 wingbeats: between samples 17 and 18 of 64 per wingbeat
-    np.testing.assert_allclose(st.qpos[k, :3], resample(t_log, data["qpos"][:, :3], np.array([st.t_beats[k]]))[0])
+    np.testing.assert_allclose(
+        st.qpos[k, :3], resample(t_log, data["qpos"][:, :3], np.array([st.t_beats[k]]))[0]
+    )
     np.testing.assert_allclose(np.linalg.norm(st.qpos[:, 3:7], axis=1), 1.0, atol=1e-12)
     assert st.reference_path.shape == (t_log.size, 3)
     lines = " ".join(str(x) for x in st.overlay_at(0))

@@ -13,9 +13,21 @@ from birdsim.errors import BirdsimError
 
 def add_flight_arguments(p: argparse.ArgumentParser) -> None:
     """The free-flight options of ``birdsim render``."""
-    p.add_argument("--kinematic", action="store_true", help="prescribed playback of the table (no simulation): the body follows the path exactly")
-    p.add_argument("--gust", action="append", default=[], metavar="T0:DURATION:WX:WZ", help="free flight: a gust (see birdsim fly)")
-    p.add_argument("--open-loop", action="store_true", help="free flight: feed-forward only (no feedback)")
+    p.add_argument(
+        "--kinematic",
+        action="store_true",
+        help="prescribed playback of the table (no simulation): the body follows the path exactly",
+    )
+    p.add_argument(
+        "--gust",
+        action="append",
+        default=[],
+        metavar="T0:DURATION:WX:WZ",
+        help="free flight: a gust (see birdsim fly)",
+    )
+    p.add_argument(
+        "--open-loop", action="store_true", help="free flight: feed-forward only (no feedback)"
+    )
 
 
 def is_log(name: str) -> bool:
@@ -37,7 +49,9 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
     options = options_from_args(args)
     if is_log(args.manoeuvre):
         if args.gust or args.open_loop:
-            raise BirdsimError("--gust/--open-loop do not apply to a flight log; allowed: a manoeuvre name or file with them")
+            raise BirdsimError(
+                "--gust/--open-loop do not apply to a flight log; allowed: a manoeuvre name or file with them"
+            )
         log = load_log(args.manoeuvre, "LOG")
         name = str(log.get("manoeuvre", "")) or Path(args.manoeuvre).stem
         default_out = Path("renders") / f"{_slug(Path(args.manoeuvre).stem)}.mp4"
@@ -59,7 +73,11 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
         from birdsim.render.options import MAX_SECONDS, RenderError
 
         omega = float(log["omega"]) if reference is None else None
-        beats = float(log["t"][-1]) * omega / (2 * 3.141592653589793) if reference is None else float(reference.duration_beats)
+        beats = (
+            float(log["t"][-1]) * omega / (2 * 3.141592653589793)
+            if reference is None
+            else float(reference.duration_beats)
+        )
         if beats / options.beats_per_second > MAX_SECONDS:
             raise RenderError(
                 f"{name!r} lasts {beats:g} wingbeats = {beats / options.beats_per_second:g} s of video at --beat-rate "
@@ -75,22 +93,33 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
         check_writable(Path(args.sheet), args.force, "--sheet")
     resolve_gl(args.gl)
     if reference is not None:
+        from birdsim.commands.common import parse_pairs
         from birdsim.flight.flightlog import log_arrays
         from birdsim.flight.freeflight import fly
-
-        from birdsim.commands.common import parse_pairs
 
         bird = load_bird(args.bird)
         overrides = parse_pairs(getattr(args, "set", None), "--set")
         bird = bird.with_overrides(overrides) if overrides else bird
         if bird.gravity <= 0:
-            raise BirdsimError(f"--bird {bird.name!r} has gravity={bird.gravity:g}; allowed: a bird file with gravity > 0 for free flight (or --kinematic)")
+            raise BirdsimError(
+                f"--bird {bird.name!r} has gravity={bird.gravity:g}; allowed: a bird file with gravity > 0 for free flight (or --kinematic)"
+            )
         table = load_table_for(bird, model, args.table)
-        beats = reference.duration_beats if options.seconds is None else options.seconds * options.beats_per_second
-        result = fly(reference, table, bird, model, beats=beats, gusts=gusts, open_loop=args.open_loop)
+        beats = (
+            reference.duration_beats
+            if options.seconds is None
+            else options.seconds * options.beats_per_second
+        )
+        result = fly(
+            reference, table, bird, model, beats=beats, gusts=gusts, open_loop=args.open_loop
+        )
         log = log_arrays(result, name)
         log["bird_obj"] = bird
-    states = flight_states(log, dataclasses.replace(options, seconds=None) if reference is not None else options, title=name)
+    states = flight_states(
+        log,
+        dataclasses.replace(options, seconds=None) if reference is not None else options,
+        title=name,
+    )
 
     from birdsim.render.renderer import render_states
 

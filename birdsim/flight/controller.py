@@ -27,7 +27,7 @@ feed-forward (a_ref, v_ref) only.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any, Protocol
 
@@ -64,7 +64,9 @@ class Gains:
     ki: float
 
 
-def gains_for(bird: Bird, time_constant_beats: float = TIME_CONSTANT_BEATS, *, integral: bool = True) -> Gains:
+def gains_for(
+    bird: Bird, time_constant_beats: float = TIME_CONSTANT_BEATS, *, integral: bool = True
+) -> Gains:
     """Gains from the wingbeat: ``omega_n = omega / (2 pi N)``.
 
     With integral action the closed loop ``s^3 + Kd s^2 + Kp s + Ki`` has a triple pole
@@ -152,7 +154,15 @@ class Controller:
             (default birdsim.flight.demand.demand_from_acceleration).
     """
 
-    def __init__(self, table: Any, bird: Bird, gains: Gains, *, open_loop: bool = False, to_table: ToTable | None = None):
+    def __init__(
+        self,
+        table: Any,
+        bird: Bird,
+        gains: Gains,
+        *,
+        open_loop: bool = False,
+        to_table: ToTable | None = None,
+    ):
         if to_table is None:
             from birdsim.flight.demand import demand_from_acceleration as to_table
         self.table = table
@@ -165,8 +175,14 @@ class Controller:
         self.lo = {k: float(np.min(axes[k])) for k in ("Fx", "Fz", "V")}
         self.hi = {k: float(np.max(axes[k])) for k in ("Fx", "Fz", "V")}
 
-    def command(self, ref: Any, est: tuple[np.ndarray, np.ndarray, float] | None, integral: np.ndarray, pitch: float,
-                wind: tuple[float, float] = (0.0, 0.0)) -> Command:
+    def command(
+        self,
+        ref: Any,
+        est: tuple[np.ndarray, np.ndarray, float] | None,
+        integral: np.ndarray,
+        pitch: float,
+        wind: tuple[float, float] = (0.0, 0.0),
+    ) -> Command:
         """The wingbeat for reference state ``ref`` (PathState), the error estimate
         ``est`` (ErrorWindow.estimate(); None = feed-forward only) and the wind
         ``(wx, wz)`` (reduced, world x forward, z up)."""
@@ -209,17 +225,28 @@ class Controller:
             cmd.params[self.names.index("pitch")] += gamma
         return cmd
 
-    def lookup_table_force(self, fx: float, fz: float, v_air: float, a_cmd: tuple[float, float] = (0.0, 0.0)) -> Command:
+    def lookup_table_force(
+        self, fx: float, fz: float, v_air: float, a_cmd: tuple[float, float] = (0.0, 0.0)
+    ) -> Command:
         """The table's wingbeat for a table-force demand (clipped; saturated flag)."""
         if not (math.isfinite(fx) and math.isfinite(fz) and math.isfinite(v_air)):
-            raise BirdsimError(f"non-finite demand Fx={fx}, Fz={fz}, V={v_air}; allowed: finite path states")
+            raise BirdsimError(
+                f"non-finite demand Fx={fx}, Fz={fz}, V={v_air}; allowed: finite path states"
+            )
         used = {"Fx": fx, "Fz": fz, "V": v_air}
         clipped = {k: min(max(v, self.lo[k]), self.hi[k]) for k, v in used.items()}
-        saturated = abs(clipped["Fx"] - fx) > 1e-9 or abs(clipped["Fz"] - fz) > 1e-9 or abs(clipped["V"] - v_air) > V_CLIP_TOLERANCE
+        saturated = (
+            abs(clipped["Fx"] - fx) > 1e-9
+            or abs(clipped["Fz"] - fz) > 1e-9
+            or abs(clipped["V"] - v_air) > V_CLIP_TOLERANCE
+        )
         raw = self.table.lookup_many(clipped["Fx"], clipped["Fz"], clipped["V"], clip=True)
         params = np.array([float(raw[n]) for n in self.names])
         if "achieved_Fx" in raw:  # the cells' achieved forces, interpolated like the parameters
-            miss = max(abs(float(raw["achieved_Fx"]) - clipped["Fx"]), abs(float(raw["achieved_Fz"]) - clipped["Fz"]))
+            miss = max(
+                abs(float(raw["achieved_Fx"]) - clipped["Fx"]),
+                abs(float(raw["achieved_Fz"]) - clipped["Fz"]),
+            )
             saturated = saturated or miss > REACH_TOLERANCE
         return Command(fx, fz, v_air, params, bool(saturated), a_cmd)
 

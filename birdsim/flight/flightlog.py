@@ -102,8 +102,29 @@ def save_log(arrays: dict[str, np.ndarray], path: str | Path, force: bool = Fals
     return path
 
 
-REQUIRED = ("t", "x", "z", "vx", "vz", "x_ref", "z_ref", "pitch", "Fx_demand", "Fz_demand", "V_air", "saturated", "pitch_moment",
-            "qpos", "qvel", "mass", "gravity", "model", "bird", "omega", "param_names")
+REQUIRED = (
+    "t",
+    "x",
+    "z",
+    "vx",
+    "vz",
+    "x_ref",
+    "z_ref",
+    "pitch",
+    "Fx_demand",
+    "Fz_demand",
+    "V_air",
+    "saturated",
+    "pitch_moment",
+    "qpos",
+    "qvel",
+    "mass",
+    "gravity",
+    "model",
+    "bird",
+    "omega",
+    "param_names",
+)
 
 
 def load_log(path: str | Path, arg: str = "LOG") -> dict[str, Any]:
@@ -116,19 +137,29 @@ def load_log(path: str | Path, arg: str = "LOG") -> dict[str, Any]:
 
     p = Path(path)
     if not p.is_file():
-        raise LogError(f"{arg} {str(p)!r} does not exist; allowed: a flight log written by `birdsim fly --out`")
+        raise LogError(
+            f"{arg} {str(p)!r} does not exist; allowed: a flight log written by `birdsim fly --out`"
+        )
     try:
         with np.load(p, allow_pickle=False) as z:
             data = {k: z[k] for k in z.files}
     except (OSError, ValueError, EOFError, zipfile.BadZipFile) as exc:
-        raise LogError(f"{arg} {str(p)!r} is not a .npz file ({exc}); allowed: a flight log written by `birdsim fly --out`") from None
+        raise LogError(
+            f"{arg} {str(p)!r} is not a .npz file ({exc}); allowed: a flight log written by `birdsim fly --out`"
+        ) from None
     if str(data.get("format", "")) != LOG_FORMAT:
-        raise LogError(f"{arg} {str(p)!r} is not a birdsim flight log (no format={LOG_FORMAT!r} marker); allowed: a log written by `birdsim fly --out`")
+        raise LogError(
+            f"{arg} {str(p)!r} is not a birdsim flight log (no format={LOG_FORMAT!r} marker); allowed: a log written by `birdsim fly --out`"
+        )
     if int(data.get("version", -1)) != LOG_VERSION:
-        raise LogError(f"{arg} {str(p)!r} has log version {data.get('version')}; this birdsim reads version {LOG_VERSION}")
+        raise LogError(
+            f"{arg} {str(p)!r} has log version {data.get('version')}; this birdsim reads version {LOG_VERSION}"
+        )
     missing = [k for k in REQUIRED if k not in data]
     if missing:
-        raise LogError(f"{arg} {str(p)!r} lacks array {missing[0]!r}; allowed: a complete flight log")
+        raise LogError(
+            f"{arg} {str(p)!r} lacks array {missing[0]!r}; allowed: a complete flight log"
+        )
     try:
         data["bird_obj"] = Bird.from_dict(tomllib.loads(str(data["bird"])))
     except (ValueError, TypeError) as exc:
@@ -136,7 +167,9 @@ def load_log(path: str | Path, arg: str = "LOG") -> dict[str, Any]:
     return data
 
 
-def summary(arrays: dict[str, Any], *, skip_beats: float = 2.0, phases: Any = None) -> dict[str, Any]:
+def summary(
+    arrays: dict[str, Any], *, skip_beats: float = 2.0, phases: Any = None
+) -> dict[str, Any]:
     """What ``birdsim fly --json`` prints: errors, final state, saturation, power.
 
     Errors are distances |p - p_ref| in the bird's length unit; ``*_after_start`` leaves
@@ -167,7 +200,9 @@ def summary(arrays: dict[str, Any], *, skip_beats: float = 2.0, phases: Any = No
         "bird": Bird.from_dict(__import__("tomllib").loads(str(arrays["bird"]))).name,
         "open_loop": bool(arrays.get("open_loop", False)),
         "samples": int(t_beats.size),
-        "wingbeats": round(float(t_beats[-1] + (t_beats[1] - t_beats[0])), 6) if t_beats.size > 1 else 0.0,
+        "wingbeats": round(float(t_beats[-1] + (t_beats[1] - t_beats[0])), 6)
+        if t_beats.size > 1
+        else 0.0,
         "rms_error": rms(err),
         "max_error": float(err.max()) if err.size else float("nan"),
         "rms_error_after_start": rms(err[late]),
@@ -177,7 +212,11 @@ def summary(arrays: dict[str, Any], *, skip_beats: float = 2.0, phases: Any = No
         "final_reference": [float(arrays["x_ref"][-1]), float(arrays["z_ref"][-1])],
         "final_speed": float(np.hypot(arrays["vx"][-1], arrays["vz"][-1])),
         # the body bobs within a wingbeat: "at rest" is the last wingbeat's mean velocity
-        "final_mean_speed": float(np.hypot(np.mean(np.asarray(arrays["vx"])[last]), np.mean(np.asarray(arrays["vz"])[last]))),
+        "final_mean_speed": float(
+            np.hypot(
+                np.mean(np.asarray(arrays["vx"])[last]), np.mean(np.asarray(arrays["vz"])[last])
+            )
+        ),
         "saturated_samples": int(sat.sum()),
         "wingbeats_saturated": int(len(set(beat_index[sat].tolist()))),
         "mean_power": float(np.mean(arrays["power"])) if "power" in arrays else float("nan"),
@@ -189,8 +228,11 @@ def summary(arrays: dict[str, Any], *, skip_beats: float = 2.0, phases: Any = No
     if phases is not None:
         labels = np.array([phases(float(tb)) for tb in t_beats])
         out["phases"] = {
-            str(lab): {"rms_error": rms(err[labels == lab]), "max_error": float(err[labels == lab].max()),
-                       "wingbeats": float((labels == lab).sum() / max(1, len(t_beats)) * out["wingbeats"])}
+            str(lab): {
+                "rms_error": rms(err[labels == lab]),
+                "max_error": float(err[labels == lab].max()),
+                "wingbeats": float((labels == lab).sum() / max(1, len(t_beats)) * out["wingbeats"]),
+            }
             for lab in dict.fromkeys(labels.tolist())
         }
     return out

@@ -55,9 +55,10 @@ def flight_states(log: dict[str, Any], options: Any, *, title: str = "") -> Any:
     Raises:
         BirdsimError: a log too short to draw (fewer than two samples).
     """
+    import tomllib
+
     from birdsim.mujoco.model import build_model
     from birdsim.render.states import StateSequence
-    import tomllib
 
     bird = log.get("bird_obj") or Bird.from_dict(tomllib.loads(str(log["bird"])))
     red = reduced_bird(bird)
@@ -66,7 +67,9 @@ def flight_states(log: dict[str, Any], options: Any, *, title: str = "") -> Any:
     omega = float(log["omega"])
     t_log = np.asarray(log["t"], dtype=float) * omega / TWO_PI  # wingbeats
     if t_log.size < 2:
-        raise BirdsimError("the flight log has fewer than two samples; allowed: a log of at least one sample interval")
+        raise BirdsimError(
+            "the flight log has fewer than two samples; allowed: a log of at least one sample interval"
+        )
     flown = float(t_log[-1])
     sub = max(1, int(options.trail_substeps))
     seconds = options.seconds if options.seconds is not None else flown / options.beats_per_second
@@ -79,10 +82,21 @@ def flight_states(log: dict[str, Any], options: Any, *, title: str = "") -> Any:
         q = qpos[:, sl]
         qpos[:, sl] = q / np.linalg.norm(q, axis=1, keepdims=True)
     qvel = resample(t_log, np.asarray(log["qvel"], dtype=float), t)
-    ref = np.column_stack([np.asarray(log["x_ref"]) / sc.length, np.zeros(t_log.size), np.asarray(log["z_ref"]) / sc.length])
+    ref = np.column_stack(
+        [
+            np.asarray(log["x_ref"]) / sc.length,
+            np.zeros(t_log.size),
+            np.asarray(log["z_ref"]) / sc.length,
+        ]
+    )
     names = [str(n) for n in np.asarray(log["param_names"]).tolist()]
-    sampled = {k: resample(t_log, np.asarray(log[k], dtype=float), t) for k in ("x", "z", "x_ref", "z_ref", "V_air", "Fx_demand", "Fz_demand", "pitch_moment")}
-    sat = np.asarray(log["saturated"], dtype=bool)[np.clip(np.searchsorted(t_log, t, side="right") - 1, 0, t_log.size - 1)]
+    sampled = {
+        k: resample(t_log, np.asarray(log[k], dtype=float), t)
+        for k in ("x", "z", "x_ref", "z_ref", "V_air", "Fx_demand", "Fz_demand", "pitch_moment")
+    }
+    sat = np.asarray(log["saturated"], dtype=bool)[
+        np.clip(np.searchsorted(t_log, t, side="right") - 1, 0, t_log.size - 1)
+    ]
     params = {n: resample(t_log, np.asarray(log[n], dtype=float), t) for n in names if n in log}
     unit_l = "semispans" if sc.length == 1.0 else "m"
     unit_t = "s" if sc.time != 1.0 else "time units"
@@ -93,8 +107,14 @@ def flight_states(log: dict[str, Any], options: Any, *, title: str = "") -> Any:
         ex = sampled["x"][k] - sampled["x_ref"][k]
         ez = sampled["z"][k] - sampled["z_ref"][k]
         lines: list = [
-            (f"t = {t[k] / omega * TWO_PI:6.2f} {unit_t} ({t[k]:5.2f} wingbeats)   {manoeuvre}   free flight, {loop}, model {model}", WHITE),
-            (f"position error x {ex:+.3f}  z {ez:+.3f} {unit_l}   airspeed {sampled['V_air'][k]:.2f}", WHITE),
+            (
+                f"t = {t[k] / omega * TWO_PI:6.2f} {unit_t} ({t[k]:5.2f} wingbeats)   {manoeuvre}   free flight, {loop}, model {model}",
+                WHITE,
+            ),
+            (
+                f"position error x {ex:+.3f}  z {ez:+.3f} {unit_l}   airspeed {sampled['V_air'][k]:.2f}",
+                WHITE,
+            ),
         ]
         if params:
             half = (len(params) + 1) // 2

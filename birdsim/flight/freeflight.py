@@ -49,22 +49,32 @@ class Gust:
         for name in ("t0", "duration", "wx", "wz"):
             v = getattr(self, name)
             if not (isinstance(v, (int, float)) and math.isfinite(v)):
-                raise GustError(f"--gust {name}={v!r} is not finite; allowed: T0:DURATION:WX:WZ, four finite numbers")
+                raise GustError(
+                    f"--gust {name}={v!r} is not finite; allowed: T0:DURATION:WX:WZ, four finite numbers"
+                )
         if self.t0 < 0 or self.duration < 0:
-            raise GustError(f"--gust T0={self.t0:g}, DURATION={self.duration:g}; allowed: times >= 0 (wingbeats)")
+            raise GustError(
+                f"--gust T0={self.t0:g}, DURATION={self.duration:g}; allowed: times >= 0 (wingbeats)"
+            )
 
 
 def parse_gust(text: str) -> Gust:
     """``"T0:DURATION:WX:WZ"`` -> Gust; one clear line otherwise."""
     parts = str(text).split(":")
     if len(parts) != 4:
-        raise GustError(f"--gust {text!r} has {len(parts)} field(s); allowed: T0:DURATION:WX:WZ (four numbers: wingbeats, wingbeats, velocity x, velocity z)")
+        raise GustError(
+            f"--gust {text!r} has {len(parts)} field(s); allowed: T0:DURATION:WX:WZ (four numbers: wingbeats, wingbeats, velocity x, velocity z)"
+        )
     try:
         vals = [float(p) for p in parts]
     except ValueError:
-        raise GustError(f"--gust {text!r} is not four numbers; allowed: T0:DURATION:WX:WZ, e.g. 4:1:0:0.27") from None
+        raise GustError(
+            f"--gust {text!r} is not four numbers; allowed: T0:DURATION:WX:WZ, e.g. 4:1:0:0.27"
+        ) from None
     if not all(math.isfinite(v) for v in vals):
-        raise GustError(f"--gust {text!r} is not finite; allowed: T0:DURATION:WX:WZ, four finite numbers")
+        raise GustError(
+            f"--gust {text!r} is not finite; allowed: T0:DURATION:WX:WZ, four finite numbers"
+        )
     return Gust(*vals)
 
 
@@ -103,7 +113,9 @@ class DemandSchedule:
         self.name = manoeuvre.name
         self.duration_beats = float(manoeuvre.duration)
         self.x0 = x0
-        self._grid = np.linspace(0.0, self.duration_beats * TWO_PI, max(2, int(self.duration_beats * 64) + 1))
+        self._grid = np.linspace(
+            0.0, self.duration_beats * TWO_PI, max(2, int(self.duration_beats * 64) + 1)
+        )
         v = manoeuvre.demands(self._grid / TWO_PI)["V"]
         dx = np.concatenate([[0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * np.diff(self._grid))])
         self._x = dx
@@ -114,7 +126,11 @@ class DemandSchedule:
 
     def state(self, t: float) -> RefState:
         d = self.manoeuvre.demands(np.array([t, t + 1e-3]) / TWO_PI)
-        x = self.x0 + float(np.interp(t, self._grid, self._x)) + max(0.0, t - self._grid[-1]) * float(d["V"][0])
+        x = (
+            self.x0
+            + float(np.interp(t, self._grid, self._x))
+            + max(0.0, t - self._grid[-1]) * float(d["V"][0])
+        )
         vz = (float(d["z"][1]) - float(d["z"][0])) / 1e-3
         return RefState(x, float(d["z"][0]), float(d["V"][0]), vz, 0.0, 0.0)
 
@@ -173,7 +189,13 @@ def fly(
         raise BirdsimError(f"--seconds gives {beats!r} wingbeats; allowed: a positive finite time")
     gains = gains or gains_for(red)
     demands_only = bool(getattr(reference, "open_loop_demands", False))
-    ctl = Controller(table, red, gains, open_loop=open_loop or demands_only, to_table=to_table or _identity_if(demands_only))
+    ctl = Controller(
+        table,
+        red,
+        gains,
+        open_loop=open_loop or demands_only,
+        to_table=to_table or _identity_if(demands_only),
+    )
     names = ctl.names
     per_beat_ctl = config.control_per_beat
     steps_ctl = config.steps_per_beat // per_beat_ctl
@@ -193,12 +215,26 @@ def fly(
     if "pitch" in names:
         cmd = command(0.0, None, np.zeros(2), float(cmd.params[names.index("pitch")]))
     window = ErrorWindow(config.log_per_beat, TWO_PI)
-    rows: dict[str, list] = {k: [] for k in ("Fx_demand", "Fz_demand", "V_air", "saturated", "x_ref", "z_ref", "params", "pitch")}
+    rows: dict[str, list] = {
+        k: []
+        for k in (
+            "Fx_demand",
+            "Fz_demand",
+            "V_air",
+            "saturated",
+            "x_ref",
+            "z_ref",
+            "params",
+            "pitch",
+        )
+    }
     record: list = []
     with FreeBird(model, bird, cmd.params, config=config, aero=aero, gravity=gravity) as fb:
         h = fb.h
         times = np.arange(steps_ctl) * h
-        pres = fb.schedule.prescribe(times[:1], cmd.params[None, :], np.zeros((1, len(names))), np.zeros((1, len(names))))
+        pres = fb.schedule.prescribe(
+            times[:1], cmd.params[None, :], np.zeros((1, len(names))), np.zeros((1, len(names)))
+        )
         pos0, vel0 = np.array([ref0.x, 0.0, ref0.z]), np.array([ref0.vx, 0.0, ref0.vz])
         integral = np.zeros(2)
         if trim:
@@ -208,8 +244,15 @@ def fly(
                 *_, bias = _trim(fb, reference, cmd.params, pos0, vel0, config, every)
                 limit = INTEGRAL_LIMIT * red.gravity / gains.ki if red.gravity > 0 else np.inf
                 integral = np.clip(bias / gains.ki, -limit, limit)
-                cmd = command(0.0, (np.zeros(2), np.zeros(2), ref0.vx), integral, float(cmd.params[names.index("pitch")]) if "pitch" in names else 0.0)
-                fb.schedule = WingbeatSchedule(fb.m, fb.kin, fb.red, cmd.params, smoothing=config.smoothing_beats * TWO_PI)
+                cmd = command(
+                    0.0,
+                    (np.zeros(2), np.zeros(2), ref0.vx),
+                    integral,
+                    float(cmd.params[names.index("pitch")]) if "pitch" in names else 0.0,
+                )
+                fb.schedule = WingbeatSchedule(
+                    fb.m, fb.kin, fb.red, cmd.params, smoothing=config.smoothing_beats * TWO_PI
+                )
             pos0, vel0, history, _ = _trim(fb, reference, cmd.params, pos0, vel0, config, every)
             for e_pos, e_vel, vx in history:  # the wingbeat before the start, on the orbit
                 window.add(e_pos, e_vel, vx)
@@ -217,10 +260,18 @@ def fly(
         dt_ctl = steps_ctl * h
         for k in range(n_ctl):
             t = fb.time
-            pitch = float(fb.schedule.filter.output[names.index("pitch")]) if "pitch" in names else 0.0
+            pitch = (
+                float(fb.schedule.filter.output[names.index("pitch")]) if "pitch" in names else 0.0
+            )
             est = window.estimate() if window.ep else None
             cmd = command(t, est, integral, pitch)
-            if est is not None and not cmd.saturated and not ctl.open_loop and gains.ki > 0 and np.max(np.abs(est[0])) < INTEGRAL_BAND:
+            if (
+                est is not None
+                and not cmd.saturated
+                and not ctl.open_loop
+                and gains.ki > 0
+                and np.max(np.abs(est[0])) < INTEGRAL_BAND
+            ):
                 # anti-windup: frozen while saturated or far off the path (a gust), and
                 # bounded: the integral only trims the small mismatch between the table's
                 # mean force and the flown one
@@ -252,7 +303,9 @@ def fly(
             if progress is not None:
                 progress((k + 1) / per_beat_ctl)
         projection = fb.projection_max
-    keep = sum(1 for r in record if r[0] <= beats * TWO_PI + 1e-9)  # whole control intervals were flown
+    keep = sum(
+        1 for r in record if r[0] <= beats * TWO_PI + 1e-9
+    )  # whole control intervals were flown
     record = record[:keep]
     rows = {k: v[:keep] for k, v in rows.items()}
     t = np.array([r[0] for r in record])
@@ -286,13 +339,26 @@ def sample_reference(reference: Any, t: np.ndarray) -> dict[str, np.ndarray]:
     fn = getattr(reference, "sample", None)
     if fn is not None:
         s = fn(t)
-        return {k: np.broadcast_to(np.asarray(s[k], dtype=float), t.shape) for k in ("x", "z", "vx", "vz", "ax", "az")}
+        return {
+            k: np.broadcast_to(np.asarray(s[k], dtype=float), t.shape)
+            for k in ("x", "z", "vx", "vz", "ax", "az")
+        }
     states = [reference.state(float(ti)) for ti in t]
-    return {k: np.array([getattr(st, k) for st in states], dtype=float) for k in ("x", "z", "vx", "vz", "ax", "az")}
+    return {
+        k: np.array([getattr(st, k) for st in states], dtype=float)
+        for k in ("x", "z", "vx", "vz", "ax", "az")
+    }
 
 
-def _trim(fb: FreeBird, reference: Any, params: np.ndarray, pos0: np.ndarray, vel0: np.ndarray, config: SimConfig,
-          every: int) -> tuple[np.ndarray, np.ndarray, list, np.ndarray]:
+def _trim(
+    fb: FreeBird,
+    reference: Any,
+    params: np.ndarray,
+    pos0: np.ndarray,
+    vel0: np.ndarray,
+    config: SimConfig,
+    every: int,
+) -> tuple[np.ndarray, np.ndarray, list, np.ndarray]:
     """The start state whose first wingbeat (at the starting wingbeat, no feedback)
     has the reference's mean velocity and mean position.
 
@@ -329,7 +395,9 @@ def _trim(fb: FreeBird, reference: Any, params: np.ndarray, pos0: np.ndarray, ve
     fb.projection_max = 0.0
     e_pos = ref_pos - (pos - dx[None, :] - dv[None, :] * t[:, None])
     e_vel = ref_vel - (vel - dv[None, :])
-    history = [(e_pos[k, [0, 2]], e_vel[k, [0, 2]], float(vel[k, 0] - dv[0])) for k in range(len(t))]
+    history = [
+        (e_pos[k, [0, 2]], e_vel[k, [0, 2]], float(vel[k, 0] - dv[0])) for k in range(len(t))
+    ]
     a_ref = np.array([ref["ax"].mean(), ref["az"].mean()])
     return pos0 - dx, vel0 - dv, history, a_ref - a_flown[[0, 2]]
 
@@ -338,4 +406,14 @@ def _identity_if(flag: bool) -> Any:
     return (lambda *a, **k: (0.0, 0.0)) if flag else None
 
 
-__all__ = ["DemandSchedule", "FlightResult", "Gust", "GustError", "RefState", "fly", "sample_reference", "parse_gust", "wind_at"]
+__all__ = [
+    "DemandSchedule",
+    "FlightResult",
+    "Gust",
+    "GustError",
+    "RefState",
+    "fly",
+    "sample_reference",
+    "parse_gust",
+    "wind_at",
+]

@@ -48,7 +48,6 @@ from birdsim.physics.kinematics import get_model
 from birdsim.physics.units import reduced_bird
 
 
-
 class FlightError(BirdsimError):
     """A simulation that cannot go on (non-finite state)."""
 
@@ -73,7 +72,9 @@ class SimConfig:
                 f"and log_per_beat={self.log_per_beat}"
             )
         if self.log_per_beat < 32:
-            raise BirdsimError(f"log_per_beat={self.log_per_beat}; allowed: at least 32 samples per wingbeat")
+            raise BirdsimError(
+                f"log_per_beat={self.log_per_beat}; allowed: at least 32 samples per wingbeat"
+            )
 
 
 class FreeBird:
@@ -83,8 +84,16 @@ class FreeBird:
     process-wide).  ``aero=False`` / ``gravity=False`` switch either off (tests).
     """
 
-    def __init__(self, model_name: str, bird: Bird, initial_params: np.ndarray, *, config: SimConfig = SimConfig(),
-                 aero: bool = True, gravity: bool = True):
+    def __init__(
+        self,
+        model_name: str,
+        bird: Bird,
+        initial_params: np.ndarray,
+        *,
+        config: SimConfig = SimConfig(),
+        aero: bool = True,
+        gravity: bool = True,
+    ):
         self.kin = get_model(model_name)
         self.bird = bird
         self.red = reduced_bird(bird)
@@ -103,8 +112,16 @@ class FreeBird:
         check = np.zeros((m.nv, m.nv))
         mujoco.mj_fullM(m, self.d, check)
         if not np.allclose(check[:3, :3], self.total_mass * np.eye(3), rtol=1e-12, atol=0):
-            raise BirdsimError("the root's translational mass block is not (mass) I; allowed: a model built by birdsim.mujoco.model")
-        self.schedule = WingbeatSchedule(m, self.kin, self.red, initial_params, smoothing=config.smoothing_beats * self.red.period)
+            raise BirdsimError(
+                "the root's translational mass block is not (mass) I; allowed: a model built by birdsim.mujoco.model"
+            )
+        self.schedule = WingbeatSchedule(
+            m,
+            self.kin,
+            self.red,
+            initial_params,
+            smoothing=config.smoothing_beats * self.red.period,
+        )
         self.cb = AeroCallback(m, self.kin.name, self.red)
         self.cb.enabled = aero
         self.time = 0.0
@@ -118,7 +135,9 @@ class FreeBird:
 
     def __enter__(self) -> "FreeBird":
         if mujoco.get_mjcb_passive() is not None:
-            raise BirdsimError("a MuJoCo passive callback is already installed; allowed: one simulation at a time")
+            raise BirdsimError(
+                "a MuJoCo passive callback is already installed; allowed: one simulation at a time"
+            )
         mujoco.set_mjcb_passive(self.cb)
         self._installed = True
         return self
@@ -146,7 +165,9 @@ class FreeBird:
         self.X = d.subtree_com[self.torso].copy()
         mujoco.mj_forward(m, d)
 
-    def step_many(self, pres: Prescription, wind: np.ndarray, record: list | None = None, every: int = 1) -> None:
+    def step_many(
+        self, pres: Prescription, wind: np.ndarray, record: list | None = None, every: int = 1
+    ) -> None:
         """Advance ``len(pres.qpos)`` steps following ``pres`` (its row k is the
         prescription at ``self.time + k h``) with the wind ``wind`` (world, reduced
         units; held over these steps).  Every ``every``-th step (before stepping) a
@@ -157,7 +178,14 @@ class FreeBird:
         M = self._M
         mass = self.total_mass
         grav = np.array(m.opt.gravity)
-        qpos, qvel, qfrc_applied, qfrc_passive, qfrc_bias, com = d.qpos, d.qvel, d.qfrc_applied, d.qfrc_passive, d.qfrc_bias, d.subtree_com
+        qpos, qvel, qfrc_applied, qfrc_passive, qfrc_bias, com = (
+            d.qpos,
+            d.qvel,
+            d.qfrc_applied,
+            d.qfrc_passive,
+            d.qfrc_bias,
+            d.subtree_com,
+        )
         torso = self.torso
         a = np.empty(m.nv)
         step1, step2, full_m = mujoco.mj_step1, mujoco.mj_step2, mujoco.mj_fullM
@@ -190,7 +218,9 @@ class FreeBird:
             self.time += h
         self.projection_max = proj
         if not (np.all(np.isfinite(qpos)) and np.all(np.isfinite(qvel))):
-            raise FlightError(f"the simulation diverged at t={self.time:.3f} (reduced time): non-finite state")
+            raise FlightError(
+                f"the simulation diverged at t={self.time:.3f} (reduced time): non-finite state"
+            )
 
     def com(self) -> tuple[np.ndarray, np.ndarray]:
         """Centre of mass and its velocity of the whole bird at the current state

@@ -49,7 +49,9 @@ class CascadeFilter:
         self.x1 = np.array(initial, dtype=float)
         self.x2 = self.x1.copy()
 
-    def advance(self, u: np.ndarray, t_rel: np.ndarray, dt: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def advance(
+        self, u: np.ndarray, t_rel: np.ndarray, dt: float
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """p, p', p'' at the instants ``t_rel`` (T,) after now with input ``u`` held, then
         move the state on by ``dt``.  Returns arrays (T, n)."""
         u = np.asarray(u, dtype=float)
@@ -97,7 +99,15 @@ class Prescription:
 class WingbeatSchedule:
     """Smoothed wingbeat parameters of ``kin`` and the prescribed motion they imply."""
 
-    def __init__(self, m: mujoco.MjModel, kin: KinematicModel, bird: Bird, initial: Sequence[float], *, smoothing: float):
+    def __init__(
+        self,
+        m: mujoco.MjModel,
+        kin: KinematicModel,
+        bird: Bird,
+        initial: Sequence[float],
+        *,
+        smoothing: float,
+    ):
         self.m = m
         self.kin = kin
         self.bird = bird
@@ -105,20 +115,26 @@ class WingbeatSchedule:
         self.filter = CascadeFilter(smoothing, np.asarray(initial, dtype=float))
         self.pitch_index = self.names.index("pitch")
 
-    def advance(self, target: Sequence[float], times: np.ndarray, t_now: float, dt: float) -> Prescription:
+    def advance(
+        self, target: Sequence[float], times: np.ndarray, t_now: float, dt: float
+    ) -> Prescription:
         """The prescription at absolute reduced ``times`` (T,), for a target held from
         ``t_now`` for ``dt``; the filter state moves on to ``t_now + dt``."""
         times = np.asarray(times, dtype=float)
         p, dp, ddp = self.filter.advance(np.asarray(target, dtype=float), times - t_now, dt)
         return self.prescribe(times, p, dp, ddp)
 
-    def prescribe(self, times: np.ndarray, p: np.ndarray, dp: np.ndarray, ddp: np.ndarray) -> Prescription:
+    def prescribe(
+        self, times: np.ndarray, p: np.ndarray, dp: np.ndarray, ddp: np.ndarray
+    ) -> Prescription:
         """qpos/qvel/qacc of the wings and torso orientation for parameters p(t) (T, nP)."""
         omega = self.bird.omega
         cols = {n: p[:, i] for i, n in enumerate(self.names)}
         rates = {n: dp[:, i] for i, n in enumerate(self.names)}
         accs = {n: ddp[:, i] for i, n in enumerate(self.names)}
-        angles, jrates, jaccs = joint_derivatives(self.kin, self.bird, cols, rates, accs, omega * times, omega)
+        angles, jrates, jaccs = joint_derivatives(
+            self.kin, self.bird, cols, rates, accs, omega * times, omega
+        )
         t = len(times)
         qpos, qvel, qacc = wing_arrays(self.m, angles, jrates, jaccs, samples=t)
         k = self.pitch_index
