@@ -16,11 +16,13 @@ $(STAMP): pyproject.toml
 setup: $(STAMP)
 	@sh scripts/setup_gl.sh
 
-# the four preset manoeuvres with m4 (tables/m4.npz) into renders/ (regenerated: --force)
+# the four preset manoeuvres in free flight (demo bird models/seed-bird.toml, demo model m3,
+# tables/seed-m3.npz) into renders/ (regenerated: --force); 3 wingbeats per second of video
+# keeps the demo under a minute (take-off and landing are 26 and 40 wingbeats)
 DEMO_MANOEUVRES := hover cruise take-off landing
 demo: setup
 	@for m in $(DEMO_MANOEUVRES); do \
-	  $(BIN)/birdsim render $$m --model m4 --out renders/$$m-m4.mp4 --force || exit $$?; \
+	  $(BIN)/birdsim render $$m --model m3 --beat-rate 3 --out renders/$$m-m3.mp4 --force || exit $$?; \
 	done
 
 test: setup

@@ -17,6 +17,7 @@ COMMAND_MODULES = (
     "birdsim.commands.tables",
     "birdsim.commands.report",
     "birdsim.commands.render",
+    "birdsim.commands.fly",
     "birdsim.commands.crosscheck",
     "birdsim.commands.export",
     "birdsim.commands.bird",

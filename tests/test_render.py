@@ -158,7 +158,7 @@ def test_cli_renders_and_refuses_to_overwrite(tmp_path, capsys):
     table.save(tmp_path / "t")
     out = tmp_path / "clip.mp4"
     sheet = tmp_path / "clip.png"
-    argv = ["render", "cruise", "--table", str(tmp_path / "t.npz"), "--out", str(out), "--size", "128x96", "--fps", "10", "--seconds", "0.5", "--quiet", "--sheet", str(sheet)]
+    argv = ["render", "cruise", "--kinematic", "--table", str(tmp_path / "t.npz"), "--out", str(out), "--size", "128x96", "--fps", "10", "--seconds", "0.5", "--quiet", "--sheet", str(sheet)]
     assert main(argv) == 0
     assert video_info(out)["frames"] == 5
     from PIL import Image
@@ -187,14 +187,14 @@ def test_cli_renders_and_refuses_to_overwrite(tmp_path, capsys):
         (["hover", "--out", "x.avi"], "does not end in .mp4"),
         (["hover", "--table", "/nonexistent/t.npz"], "does not exist"),
         (["hover", "--seconds", "3601"], "--seconds 3601.0 is invalid"),
-        (["hover", "--beat-rate", "0.001"], "= 6000 s of video at --beat-rate 0.001; allowed: at most 3600 s"),
+        (["hover", "--beat-rate", "0.001"], "= 8000 s of video at --beat-rate 0.001; allowed: at most 3600 s"),  # the hover path: 8 wingbeats
         (["hover", "--quality", "ultra"], "--quality 'ultra' is unknown; allowed: draft, good, best"),
         (["hover", "--camera", "drone"], "--camera 'drone' is unknown; allowed: track, chase, side, top, overview"),
         (["hover", "--forces", "0"], "--forces '0' is not a positive number"),
         (["hover", "--forces", "-2"], "--forces '-2' is not a positive number"),
         (["hover", "--forces", "big"], "--forces 'big' is not a positive number"),
         (["hover", "--forces", "inf"], "--forces 'inf' is not a positive number"),
-        (["hover", "--still", "s.png", "--at", "6.5"], "--at '6.5' is outside the clip; allowed: a time in wingbeats in [0, 6]"),
+        (["hover", "--still", "s.png", "--at", "8.5"], "--at '8.5' is outside the clip; allowed: a time in wingbeats in [0, 8]"),
         (["hover", "--still", "s.png", "--at", "-0.1"], "--at '-0.1' is outside the clip"),
         (["hover", "--still", "s.png", "--at", "nan"], "--at 'nan' is outside the clip"),
         (["hover", "--at", "1"], "--at '1' needs --still"),
@@ -211,7 +211,7 @@ def test_bad_input_one_line(tmp_path, capsys, monkeypatch, args, words):
 
 def test_table_for_another_model(tmp_path, capsys):
     small_table("m3").save(tmp_path / "m3")
-    assert main(["render", "hover", "--model", "m4", "--table", str(tmp_path / "m3.npz"), "--out", str(tmp_path / "x.mp4")]) == 2
+    assert main(["render", "hover", "--kinematic", "--model", "m4", "--table", str(tmp_path / "m3.npz"), "--out", str(tmp_path / "x.mp4")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "built for model 'm3', not 'm4'" in err[0]
     assert not (tmp_path / "x.mp4").exists()

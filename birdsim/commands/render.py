@@ -11,6 +11,7 @@ from birdsim.errors import BirdsimError
 from birdsim.render.gl import GL_CHOICES
 from birdsim.flight.manoeuvre import PRESETS
 from birdsim.commands.common import add_bird_arguments, bird_from_args
+from birdsim.commands.render_flight import add_flight_arguments, is_log, run_flight
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -19,8 +20,8 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="render a manoeuvre to MP4 (hover, cruise, take-off, landing or a TOML file)",
         description=__doc__,
     )
-    p.add_argument("manoeuvre", metavar="MANOEUVRE", help=f"a preset ({', '.join(PRESETS)}) or a manoeuvre .toml file")
-    p.add_argument("--model", default="m4", help="kinematic model: base, m1, m2, m3 or m4 (default m4)")
+    p.add_argument("manoeuvre", metavar="MANOEUVRE", help=f"a preset ({', '.join(PRESETS)}), a manoeuvre .toml file or a flight log LOG.npz")
+    p.add_argument("--model", default=None, help="kinematic model: base, m1, m2, m3 or m4 (default: the demo model m3 in free flight, m4 with --kinematic)")
     p.add_argument("--table", metavar="FILE", help="lookup table (default tables/<model>.npz)")
     p.add_argument("--out", metavar="FILE.mp4", help="output video (default renders/<manoeuvre>-<model>.mp4)")
     p.add_argument("--size", default="640x480", metavar="WxH", help="frame size, multiples of 16 (default 640x480)")
@@ -40,6 +41,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--force", action="store_true", help="overwrite an existing output file")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     add_bird_arguments(p)
+    add_flight_arguments(p)
     p.set_defaults(func=run)
 
 
@@ -57,25 +59,14 @@ def _slug(text: str) -> str:
     return re.sub(r"[^A-Za-z0-9_.-]+", "_", text).strip("_") or "manoeuvre"
 
 
-def run(args: argparse.Namespace) -> int:
-    # every cheap check first, so that a mistake costs nothing and writes nothing
-    from birdsim.render.gl import resolve_gl
-    from birdsim.physics.kinematics import get_model
-    from birdsim.flight.manoeuvre import get_manoeuvre
+def _options(args: argparse.Namespace):
+    """RenderOptions from the command line (one clear line for a bad value)."""
     from birdsim.render.renderer import RenderOptions, parse_size
 
-    if args.camera == "list":
-        from birdsim.render.options import CAMERA_HELP
-
-        for name, text in CAMERA_HELP.items():
-            print(f"{name:9s} {text}")
-        return 0
-    manoeuvre = get_manoeuvre(args.manoeuvre)
-    model = get_model(args.model).name
     if args.gl not in GL_CHOICES:
         raise BirdsimError(f"--gl {args.gl!r} is unknown; allowed: {', '.join(GL_CHOICES)}")
     width, height = parse_size(args.size)
-    options = RenderOptions(
+    return RenderOptions(
         width=width,
         height=height,
         fps=_number("--fps", args.fps, int),  # type: ignore[arg-type]
@@ -89,22 +80,49 @@ def run(args: argparse.Namespace) -> int:
         gl=args.gl,
         progress=not args.quiet,
     )
-    seconds = options.duration(manoeuvre)  # a manoeuvre longer than the longest video -> one line
+
+
+def check_still(args: argparse.Namespace, clip_beats: float) -> float | None:
+    """``--still``/``--at``/``--sheet`` checked before any work; the still's time in
+    wingbeats (None when no still is asked for)."""
     if args.at is not None and not args.still:
         raise BirdsimError(f"--at {args.at!r} needs --still FILE.png; allowed: --at with --still")
-    if args.still:
-        at = _at_beats(args.at, seconds * options.beats_per_second)
-        if Path(args.still).suffix.lower() != ".png":
-            raise BirdsimError(f"--still {args.still!r} does not end in .png; allowed: a .png path")
-        check_writable(Path(args.still), args.force, "--still")
-    else:
+    if args.sheet and args.still:
+        raise BirdsimError("--sheet needs a video; allowed: --sheet without --still")
+    if not args.still:
+        return None
+    at = _at_beats(args.at, clip_beats)
+    if Path(args.still).suffix.lower() != ".png":
+        raise BirdsimError(f"--still {args.still!r} does not end in .png; allowed: a .png path")
+    check_writable(Path(args.still), args.force, "--still")
+    return at
+
+
+def run(args: argparse.Namespace) -> int:
+    # every cheap check first, so that a mistake costs nothing and writes nothing
+    from birdsim.render.gl import resolve_gl
+    from birdsim.physics.kinematics import get_model
+    from birdsim.flight.manoeuvre import get_manoeuvre
+
+    if args.camera == "list":
+        from birdsim.render.options import CAMERA_HELP
+
+        for name, text in CAMERA_HELP.items():
+            print(f"{name:9s} {text}")
+        return 0
+    if is_log(args.manoeuvre) or not args.kinematic:  # free flight (the default) or a flight log
+        return run_flight(args, _options)
+    manoeuvre = get_manoeuvre(args.manoeuvre)
+    model = get_model(args.model or "m4").name
+    options = _options(args)
+    seconds = options.duration(manoeuvre)  # a manoeuvre longer than the longest video -> one line
+    at = check_still(args, seconds * options.beats_per_second)
+    if at is None:
         out = Path(args.out) if args.out else Path("renders") / f"{_slug(manoeuvre.name)}-{model}.mp4"
         if out.suffix.lower() != ".mp4":
             raise BirdsimError(f"--out {str(out)!r} does not end in .mp4; allowed: a .mp4 path")
         check_writable(out, args.force)
     if args.sheet:
-        if args.still:
-            raise BirdsimError("--sheet needs a video; allowed: --sheet without --still")
         if Path(args.sheet).suffix.lower() != ".png":
             raise BirdsimError(f"--sheet {args.sheet!r} does not end in .png; allowed: a .png path")
         check_writable(Path(args.sheet), args.force, "--sheet")
@@ -113,7 +131,7 @@ def run(args: argparse.Namespace) -> int:
     table = _load_table(table_path, model, explicit=bool(args.table))
     bird = bird_from_args(args) if (args.bird or args.set) else None
 
-    if args.still:
+    if at is not None:
         from birdsim.render.renderer import render_still
 
         path = render_still(manoeuvre, table, args.still, at, options, bird=bird, model=model, force=args.force)

@@ -286,23 +286,62 @@ def joint_series(
 
     The coefficients' rates come from a central difference of ``joint_motion`` along
     p'(t) (exact for the affine maps the models use, O(h^2) otherwise)."""
+    angles, rates, _ = joint_derivatives(kin, bird, params, param_rates, None, phase, omega)
+    return angles, rates
+
+
+def joint_derivatives(
+    kin: KinematicModel,
+    bird: Bird,
+    params: Mapping[str, np.ndarray],
+    param_rates: Mapping[str, np.ndarray],
+    param_accels: Mapping[str, np.ndarray] | None,
+    phase: np.ndarray,
+    omega: float,
+) -> tuple[dict[str, np.ndarray], dict[str, np.ndarray], dict[str, np.ndarray]]:
+    """Joint angles, rates and (when ``param_accels`` p''(t) is given) accelerations of
+    ``q = a(p) sin(phase + c(p)) + b(p)`` with ``phase' = omega``.
+
+    Args:
+        params, param_rates, param_accels: p(t), p'(t), p''(t) per parameter name (rad,
+            per unit of the bird's time).
+        phase: wingbeat phase (rad), the integral of omega.
+    Returns:
+        (angles, rates, accelerations) per joint name; accelerations are {} without
+        ``param_accels``.  Coefficient derivatives are central differences of
+        ``joint_motion`` along p' and p'' (exact for the affine maps the models use; the
+        curvature term p'^T (d2 c/dp2) p' of a non-affine map is left out).
+    """
     h = 1e-6
     motion = kin.joint_motion(params, bird)
-    plus = kin.joint_motion({k: params[k] + h * param_rates[k] for k in params}, bird)
-    minus = kin.joint_motion({k: params[k] - h * param_rates[k] for k in params}, bird)
+
+    def along(direction: Mapping[str, np.ndarray]) -> dict[str, tuple[np.ndarray, np.ndarray, np.ndarray]]:
+        plus = kin.joint_motion({k: params[k] + h * direction[k] for k in params}, bird)
+        minus = kin.joint_motion({k: params[k] - h * direction[k] for k in params}, bird)
+        return {
+            name: tuple(
+                np.broadcast_to((np.asarray(getattr(plus[name], f), dtype=float) - np.asarray(getattr(minus[name], f), dtype=float)) / (2 * h), shape)
+                for f in ("amp", "phase", "bias")
+            )
+            for name in motion
+        }
+
     shape = np.shape(phase)
-    angles, rates = {}, {}
+    first = along(param_rates)
+    second = along(param_accels) if param_accels is not None else None
+    angles, rates, accels = {}, {}, {}
     for name, s in motion.items():
         a, c, b = (np.broadcast_to(np.asarray(v, dtype=float), shape) for v in (s.amp, s.phase, s.bias))
-        da, dc, db = (
-            np.broadcast_to((np.asarray(getattr(plus[name], f), dtype=float) - np.asarray(getattr(minus[name], f), dtype=float)) / (2 * h), shape)
-            for f in ("amp", "phase", "bias")
-        )
+        da, dc, db = first[name]
         arg = phase + c
         sn, cs = np.sin(arg), np.cos(arg)
         angles[name] = a * sn + b
         rates[name] = da * sn + a * (omega + dc) * cs + db
-    return angles, rates
+        if second is not None:
+            dda, ddc, ddb = second[name]
+            w = omega + dc
+            accels[name] = dda * sn + 2.0 * da * w * cs + a * ddc * cs - a * w * w * sn + ddb
+    return angles, rates, accels
 
 
 def frame_times(seconds: float, fps: int, beats_per_second: float) -> np.ndarray:
@@ -312,4 +351,4 @@ def frame_times(seconds: float, fps: int, beats_per_second: float) -> np.ndarray
     return np.arange(frames) * (beats_per_second / fps)
 
 
-__all__ = ["Playback", "PlaybackConfig", "TableLike", "TableMismatchError", "check_table_model", "frame_times", "joint_series", "play", "table_axes"]
+__all__ = ["Playback", "PlaybackConfig", "TableLike", "TableMismatchError", "check_table_model", "frame_times", "joint_derivatives", "joint_series", "play", "table_axes"]

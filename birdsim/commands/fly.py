@@ -1,0 +1,219 @@
+"""``birdsim fly``: free flight in MuJoCo along a manoeuvre's path, closed loop, with an
+optional flight log (.npz) and a JSON summary."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+from pathlib import Path
+
+from birdsim.errors import BirdsimError
+from birdsim.flight.presets import DEMO_MODEL as DEFAULT_MODEL
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser(
+        "fly",
+        help="fly a manoeuvre in MuJoCo under the bird's own forces (closed loop) and log it",
+        description=__doc__,
+    )
+    p.add_argument(
+        "manoeuvre",
+        metavar="MANOEUVRE",
+        help="a preset (hover, cruise, take-off, landing) or a manoeuvre .toml file",
+    )
+    p.add_argument(
+        "--model",
+        default=DEFAULT_MODEL,
+        help=f"kinematic model: base, m1, m2, m3 or m4 (default {DEFAULT_MODEL})",
+    )
+    p.add_argument("--bird", metavar="FILE.toml", help="the bird (default models/seed-bird.toml)")
+    p.add_argument(
+        "--table",
+        metavar="FILE",
+        help="lookup table (default: the shipped table for the bird and model)",
+    )
+    p.add_argument("--out", metavar="LOG.npz", help="write the flight log here")
+    p.add_argument(
+        "--json",
+        action="store_true",
+        help="print a JSON summary (errors, final state, saturation, power)",
+    )
+    p.add_argument(
+        "--gust",
+        action="append",
+        default=[],
+        metavar="T0:DURATION:WX:WZ",
+        help="wind from T0 for DURATION wingbeats, WX forward and WZ up in the bird's velocity units (repeatable; they add up)",
+    )
+    p.add_argument(
+        "--open-loop",
+        action="store_true",
+        help="feed-forward only (no feedback): see why feedback is needed",
+    )
+    p.add_argument(
+        "--seconds",
+        metavar="S",
+        help="simulated time in the bird's time units (default: the manoeuvre's length)",
+    )
+    p.add_argument("--force", action="store_true", help="overwrite an existing --out")
+    p.add_argument("--quiet", action="store_true", help="no progress bar")
+    p.set_defaults(func=run)
+
+
+def default_bird_path() -> Path:
+    """models/seed-bird.toml (here, else the repository's)."""
+    local = Path("models") / "seed-bird.toml"
+    return (
+        local
+        if local.is_file()
+        else Path(__file__).resolve().parents[2] / "models" / "seed-bird.toml"
+    )
+
+
+def load_bird(arg: str | None):
+    from birdsim.physics.bird import Bird
+
+    if arg:
+        return Bird.from_toml(arg)
+    path = default_bird_path()
+    return Bird.from_toml(path) if path.is_file() else Bird()
+
+
+def load_table_for(bird, model: str, table_arg: str | None):
+    """The table: --table, else the shipped one for this bird and model; refused with
+    one line when built for another model or another reduced bird."""
+    from birdsim.physics.units import same_reduced_bird
+    from birdsim.tables.lookup import load_table
+
+    if table_arg:
+        path = Path(table_arg)
+        npz = path if path.suffix in (".npz", ".json") else path.with_name(path.name + ".npz")
+        if not npz.with_suffix(".npz").exists():
+            raise BirdsimError(
+                f"--table {str(path)!r} does not exist; allowed: a table file (.npz) written by `birdsim tables build`"
+            )
+    else:
+        try:
+            from birdsim.tables.shipped import shipped_table
+        except ImportError:  # pragma: no cover - before the shipped-table finder lands
+            path = Path("tables") / f"{model}.npz"
+        else:
+            path = shipped_table(bird, model)
+    table = load_table(path)
+    if table.model != model:
+        raise BirdsimError(
+            f"--table {str(path)!r} was built for model {table.model!r}, not {model!r}; allowed: a table for {model}"
+        )
+    if not same_reduced_bird(table.bird, bird):
+        raise BirdsimError(
+            f"--table {str(path)!r} was built for bird {table.bird.name!r}, whose reduced bird differs from {bird.name!r}'s; "
+            f"allowed: a table built for this bird (birdsim tables build --bird FILE)"
+        )
+    return table
+
+
+def parse_seconds(raw: str | None) -> float | None:
+    if raw is None:
+        return None
+    try:
+        v = float(raw)
+    except ValueError:
+        raise BirdsimError(
+            f"--seconds {raw!r} is not a number; allowed: a time > 0 in the bird's time units"
+        ) from None
+    if not (math.isfinite(v) and v > 0):
+        raise BirdsimError(
+            f"--seconds {raw!r} is invalid; allowed: a finite time > 0 in the bird's time units"
+        )
+    return v
+
+
+def run(args: argparse.Namespace) -> int:
+    from birdsim.commands.render import check_writable
+    from birdsim.flight.freeflight import DemandSchedule, fly, parse_gust
+    from birdsim.flight.manoeuvre import MAX_BEATS, Manoeuvre
+    from birdsim.flight.path_file import get_flight
+    from birdsim.physics.kinematics import get_model
+
+    flight = get_flight(args.manoeuvre)
+    model = get_model(args.model).name
+    gusts = [parse_gust(g) for g in args.gust]
+    seconds = parse_seconds(args.seconds)
+    out = Path(args.out) if args.out else None
+    if out is not None:
+        if out.suffix.lower() != ".npz":
+            raise BirdsimError(f"--out {str(out)!r} does not end in .npz; allowed: a .npz path")
+        check_writable(out, args.force)
+    bird = load_bird(args.bird)
+    if bird.gravity <= 0:
+        raise BirdsimError(
+            f"--bird {bird.name!r} has gravity={bird.gravity:g}; allowed: a bird file with gravity > 0 for free flight (e.g. models/seed-bird.toml)"
+        )
+    table = load_table_for(bird, model, args.table)
+    reference = DemandSchedule(flight) if isinstance(flight, Manoeuvre) else flight
+    beats = seconds / bird.period if seconds is not None else float(reference.duration_beats)
+    if beats > MAX_BEATS:
+        raise BirdsimError(
+            f"--seconds {args.seconds} is {beats:g} wingbeats; allowed: at most {MAX_BEATS:g} wingbeats"
+        )
+
+    from tqdm import tqdm
+
+    bar = tqdm(
+        total=round(beats, 3),
+        desc=f"fly {reference.name}",
+        unit="beat",
+        disable=args.quiet or args.json,
+        file=sys.stderr,
+    )
+
+    def progress(done: float) -> None:
+        bar.n = round(min(done, beats), 3)
+        bar.refresh()
+
+    try:
+        result = fly(
+            reference,
+            table,
+            bird,
+            model,
+            beats=beats,
+            gusts=gusts,
+            open_loop=args.open_loop,
+            progress=progress,
+        )
+    finally:
+        bar.close()
+    from birdsim.flight.flightlog import log_arrays, save_log, summary
+
+    arrays = log_arrays(result, reference.name)
+    phases = getattr(reference, "regime", None)
+    if isinstance(flight, Manoeuvre):
+        phases = flight.regime
+    info = summary(arrays, phases=phases)
+    if out is not None:
+        save_log(arrays, out, args.force)
+        info["log"] = str(out)
+    if args.json:
+        print(json.dumps(info, indent=2))
+    else:
+        sat = (
+            f", saturated in {info['wingbeats_saturated']} wingbeat(s)"
+            if info["wingbeats_saturated"]
+            else ""
+        )
+        print(
+            f"flew {reference.name} ({model}, {bird.name}, {'open loop' if result.open_loop else 'closed loop'}): "
+            f"{info['wingbeats']:.1f} wingbeats, position error RMS {info['rms_error']:.3g} max {info['max_error']:.3g}"
+            + (
+                f" (after 2 wingbeats RMS {info['rms_error_after_start']:.3g})"
+                if info["wingbeats"] > 2
+                else ""
+            )
+            + sat
+            + (f"; wrote {out}" if out else "")
+        )
+    return 0

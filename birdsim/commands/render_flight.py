@@ -1,0 +1,150 @@
+"""``birdsim render`` in free flight (the default) and of a flight log (``LOG.npz``):
+fly the manoeuvre in MuJoCo (birdsim.flight.freeflight), then draw the flown states with
+the path as a thin line and the position error and saturation in the overlay."""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+from pathlib import Path
+
+from birdsim.errors import BirdsimError
+
+
+def add_flight_arguments(p: argparse.ArgumentParser) -> None:
+    """The free-flight options of ``birdsim render``."""
+    p.add_argument(
+        "--kinematic",
+        action="store_true",
+        help="prescribed playback of the table (no simulation): the body follows the path exactly",
+    )
+    p.add_argument(
+        "--gust",
+        action="append",
+        default=[],
+        metavar="T0:DURATION:WX:WZ",
+        help="free flight: a gust (see birdsim fly)",
+    )
+    p.add_argument(
+        "--open-loop", action="store_true", help="free flight: feed-forward only (no feedback)"
+    )
+
+
+def is_log(name: str) -> bool:
+    return Path(name).suffix.lower() == ".npz"
+
+
+def run_flight(args: argparse.Namespace, options_from_args) -> int:
+    """Render a log (``args.manoeuvre`` ends in .npz) or a free flight of the manoeuvre.
+
+    ``options_from_args(args, seconds=None)`` builds the RenderOptions as the kinematic
+    path does (one place for size, fps, camera, quality...)."""
+    from birdsim.commands.fly import load_bird, load_table_for
+    from birdsim.commands.render import _slug, check_still, check_writable
+    from birdsim.flight.flightlog import load_log
+    from birdsim.flight.flightstates import flight_states
+    from birdsim.physics.kinematics import get_model
+    from birdsim.render.gl import resolve_gl
+
+    options = options_from_args(args)
+    if is_log(args.manoeuvre):
+        if args.gust or args.open_loop:
+            raise BirdsimError(
+                "--gust/--open-loop do not apply to a flight log; allowed: a manoeuvre name or file with them"
+            )
+        log = load_log(args.manoeuvre, "LOG")
+        name = str(log.get("manoeuvre", "")) or Path(args.manoeuvre).stem
+        default_out = Path("renders") / f"{_slug(Path(args.manoeuvre).stem)}.mp4"
+        reference = None
+    else:
+        from birdsim.flight.freeflight import DemandSchedule, parse_gust
+        from birdsim.flight.manoeuvre import Manoeuvre
+        from birdsim.flight.path_file import get_flight
+
+        flight = get_flight(args.manoeuvre)
+        from birdsim.flight.presets import DEMO_MODEL
+
+        model = get_model(args.model or DEMO_MODEL).name
+        gusts = [parse_gust(g) for g in args.gust]
+        reference = DemandSchedule(flight) if isinstance(flight, Manoeuvre) else flight
+        name = reference.name
+        default_out = Path("renders") / f"{_slug(name)}-{model}.mp4"
+    if options.seconds is None:  # the whole flight: one line when it would exceed the longest video
+        from birdsim.render.options import MAX_SECONDS, RenderError
+
+        omega = float(log["omega"]) if reference is None else None
+        beats = (
+            float(log["t"][-1]) * omega / (2 * 3.141592653589793)
+            if reference is None
+            else float(reference.duration_beats)
+        )
+        if beats / options.beats_per_second > MAX_SECONDS:
+            raise RenderError(
+                f"{name!r} lasts {beats:g} wingbeats = {beats / options.beats_per_second:g} s of video at --beat-rate "
+                f"{options.beats_per_second:g}; allowed: at most {MAX_SECONDS:g} s (give --seconds or a higher --beat-rate)"
+            )
+    if reference is not None:
+        clip_beats = float(reference.duration_beats) if options.seconds is None else options.seconds * options.beats_per_second
+    else:
+        clip_beats = float(log["t"][-1]) * float(log["omega"]) / (2 * 3.141592653589793)
+    at = check_still(args, clip_beats)
+    out = Path(args.out) if args.out else default_out
+    if at is None:
+        if out.suffix.lower() != ".mp4":
+            raise BirdsimError(f"--out {str(out)!r} does not end in .mp4; allowed: a .mp4 path")
+        check_writable(out, args.force)
+    if args.sheet:
+        if Path(args.sheet).suffix.lower() != ".png":
+            raise BirdsimError(f"--sheet {args.sheet!r} does not end in .png; allowed: a .png path")
+        check_writable(Path(args.sheet), args.force, "--sheet")
+    resolve_gl(args.gl)
+    if reference is not None:
+        from birdsim.commands.common import parse_pairs
+        from birdsim.flight.flightlog import log_arrays
+        from birdsim.flight.freeflight import fly
+
+        bird = load_bird(args.bird)
+        overrides = parse_pairs(getattr(args, "set", None), "--set")
+        bird = bird.with_overrides(overrides) if overrides else bird
+        if bird.gravity <= 0:
+            raise BirdsimError(
+                f"--bird {bird.name!r} has gravity={bird.gravity:g}; allowed: a bird file with gravity > 0 for free flight (or --kinematic)"
+            )
+        table = load_table_for(bird, model, args.table)
+        beats = (
+            reference.duration_beats
+            if options.seconds is None
+            else options.seconds * options.beats_per_second
+        )
+        result = fly(
+            reference, table, bird, model, beats=beats, gusts=gusts, open_loop=args.open_loop
+        )
+        log = log_arrays(result, name)
+        log["bird_obj"] = bird
+    states = flight_states(
+        log,
+        dataclasses.replace(options, seconds=None) if reference is not None else options,
+        title=name,
+    )
+
+    if at is not None:
+        from birdsim.render.renderer import write_png
+        from birdsim.render.scene import Scene
+
+        with Scene(states, options) as scene:
+            frame = min(scene.frames - 1, int(round(at * options.fps / options.beats_per_second)))
+            path = write_png(Path(args.still), scene.rgb(frame))
+        print(f"wrote {path} (frame at {at:g} beats of the free flight, {options.width}x{options.height}, camera {options.camera})")
+        return 0
+    from birdsim.render.renderer import render_states
+
+    result = render_states(states, out, options, force=args.force)
+    print(
+        f"wrote {result.path} ({result.frames} frames, {result.width}x{result.height} @ {result.fps} fps, "
+        f"{result.video_seconds:.1f} s of video in {result.wall_seconds:.1f} s wall, GL {result.backend}, free flight)"
+    )
+    if args.sheet:
+        from birdsim.render.renderer import contact_sheet
+
+        print(f"wrote {contact_sheet(result.path, args.sheet)} (contact sheet)")
+    return 0

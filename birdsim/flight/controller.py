@@ -1,0 +1,254 @@
+"""Flight control: path error -> force demand -> table wingbeat (reduced units).
+
+The wingbeat is the actuator: its mean force is what the tables promise, so the loop
+acts on wingbeat-averaged quantities.  Per update (``control_per_beat`` times a wingbeat):
+
+1. state estimate: the position and velocity errors ``e = ref - actual`` averaged over
+   the last wingbeat (a moving average over exactly one period, which removes the
+   within-wingbeat bobbing), moved forward by what the average lags, (T - dt)/2 for
+   samples dt apart (``e_p + (T - dt)/2 e_v`` and ``e_v + (T - dt)/2 e_a``, ``e_a`` the wingbeat-mean acceleration error
+   ``(e_v(t) - e_v(t - T)) / T``); before the first wingbeat is complete the missing
+   samples are the start's (zero error);
+2. acceleration command ``a_cmd = a_ref + Kp e_p + Kd e_v + Ki integral(e_p)``;
+3. the whole bird's aerodynamic force ``m (a_cmd - g)`` becomes the table force (one
+   wing + body drag, seed axes) through ``demand_from_acceleration``;
+4. clipped to the table's grid; ``saturated`` when clipped or when the table's
+   achieved force (interpolated like the parameters) misses the demand by more than
+   the tables' own tolerance 0.01 (the table then gives its best wingbeat: the bird
+   does its best);
+5. lookup at the estimated airspeed -> target wingbeat parameters (the schedule smooths
+   them and keeps the phase continuous).
+
+Gains (:func:`gains_for`): one natural frequency ``omega_n = omega / (2 pi N)`` for a
+time constant of N wingbeats, a triple pole at ``-omega_n``.  ``open_loop`` keeps the
+feed-forward (a_ref, v_ref) only.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any, Protocol
+
+import numpy as np
+
+from birdsim.errors import BirdsimError
+from birdsim.physics.bird import Bird
+
+#: Wingbeats per closed-loop time constant 1 / omega_n (see gains_for and docs/flight.md).
+TIME_CONSTANT_BEATS = 2.0
+#: A demand counts as reachable when the table's interpolated achieved force is within
+#: this of it (table force units; the tables' own "ok" tolerance).
+REACH_TOLERANCE = 0.01
+#: Forward airspeed (semispan omega) above which the table is turned into the air path's
+#: direction in full (see Controller.lookup); below, the turn fades out quadratically.
+CLIMB_SPEED = 0.2
+#: A lookup airspeed clipped by more than this (semispan omega) counts as saturated.
+V_CLIP_TOLERANCE = 0.05
+
+
+class Reference(Protocol):
+    """A path in reduced units (birdsim.flight.path.FlightPath)."""
+
+    def state(self, t: float) -> Any: ...
+
+
+@dataclass(frozen=True)
+class Gains:
+    """Feedback gains (reduced units: time 1 / omega)."""
+
+    omega_n: float
+    kp: float
+    kd: float
+    ki: float
+
+
+def gains_for(
+    bird: Bird, time_constant_beats: float = TIME_CONSTANT_BEATS, *, integral: bool = True
+) -> Gains:
+    """Gains from the wingbeat: ``omega_n = omega / (2 pi N)``.
+
+    With integral action the closed loop ``s^3 + Kd s^2 + Kp s + Ki`` has a triple pole
+    at ``-omega_n``: ``Kd = 3 omega_n``, ``Kp = 3 omega_n^2``, ``Ki = omega_n^3``;
+    without, a critically damped pair: ``Kd = 2 omega_n``, ``Kp = omega_n^2``.
+
+    Args:
+        bird: the (reduced) bird; only its omega is used.
+        time_constant_beats: N, wingbeats per 1 / omega_n.
+    Returns:
+        Gains in the bird's time units.
+    """
+    if not (math.isfinite(time_constant_beats) and time_constant_beats > 0):
+        raise BirdsimError(f"time_constant_beats={time_constant_beats!r}; allowed: a number > 0")
+    wn = bird.omega / (2.0 * math.pi * time_constant_beats)
+    if integral:
+        return Gains(wn, 3.0 * wn * wn, 3.0 * wn, wn**3)
+    return Gains(wn, wn * wn, 2.0 * wn, 0.0)
+
+
+@dataclass(frozen=True)
+class Command:
+    """One controller output (reduced units; table force = one wing + body drag, seed axes)."""
+
+    Fx: float
+    Fz: float
+    V: float
+    params: np.ndarray
+    saturated: bool
+    a_cmd: tuple[float, float]
+
+
+ToTable = Callable[..., tuple[float, float]]
+
+
+class ErrorWindow:
+    """Samples of the tracking error over the last wingbeat (``per_beat`` samples)."""
+
+    def __init__(self, per_beat: int, period: float):
+        self.n = per_beat
+        self.period = period
+        self.ep: list[np.ndarray] = []
+        self.ev: list[np.ndarray] = []
+        self.vx: list[float] = []
+        self.integral = np.zeros(2)
+        self.dt = period / per_beat
+
+    def add(self, e_pos: np.ndarray, e_vel: np.ndarray, vx_air: float) -> None:
+        self.ep.append(np.asarray(e_pos, dtype=float))
+        self.ev.append(np.asarray(e_vel, dtype=float))
+        self.vx.append(float(vx_air))
+
+    def _window(self, xs: list, k: int) -> np.ndarray:
+        tail = xs[-k:]
+        if len(tail) < k:  # before the first full wingbeat: the start's value
+            tail = [xs[0]] * (k - len(tail)) + tail
+        return np.asarray(tail)
+
+    def estimate(self) -> tuple[np.ndarray, np.ndarray, float]:
+        """Predicted wingbeat-mean position and velocity errors and airspeed (x)."""
+        if not self.ep:
+            return np.zeros(2), np.zeros(2), 0.0
+        # the mean of n samples lags the newest by (n - 1) / 2 sample intervals
+        n, half = self.n, 0.5 * (self.period - self.dt)
+        ev_win = self._window(self.ev, n + 1)
+        ep = self._window(self.ep, n).mean(axis=0)
+        ev = ev_win[1:].mean(axis=0)
+        ea = (ev_win[-1] - ev_win[0]) / self.period  # the window spans n + 1 samples
+        vx_win = self._window(self.vx, n + 1)
+        vx = float(vx_win[1:].mean() + half * (vx_win[-1] - vx_win[0]) / self.period)
+        return ep + half * ev, ev + half * ea, vx
+
+    def integrate(self, e_pos: np.ndarray, dt: float) -> None:
+        self.integral = self.integral + dt * np.asarray(e_pos)
+
+
+class Controller:
+    """Path following with table wingbeats; see the module docstring.
+
+    Args:
+        table: a LookupTable (lookup_many, status_at, axes, param_names).
+        bird: the REDUCED bird (mass ratio, gravity in semispan omega^2).
+        gains: feedback gains; ignored when ``open_loop``.
+        to_table: ``(ax_up, az_up, vx, vz, bird, pitch) -> (Fx_table, Fz_table)``
+            (default birdsim.flight.demand.demand_from_acceleration).
+    """
+
+    def __init__(
+        self,
+        table: Any,
+        bird: Bird,
+        gains: Gains,
+        *,
+        open_loop: bool = False,
+        to_table: ToTable | None = None,
+    ):
+        if to_table is None:
+            from birdsim.flight.demand import demand_from_acceleration as to_table
+        self.table = table
+        self.bird = bird
+        self.gains = gains
+        self.open_loop = open_loop
+        self.to_table = to_table
+        self.names = tuple(table.param_names)
+        axes = table.axes
+        self.lo = {k: float(np.min(axes[k])) for k in ("Fx", "Fz", "V")}
+        self.hi = {k: float(np.max(axes[k])) for k in ("Fx", "Fz", "V")}
+
+    def command(
+        self,
+        ref: Any,
+        est: tuple[np.ndarray, np.ndarray, float] | None,
+        integral: np.ndarray,
+        pitch: float,
+        wind: tuple[float, float] = (0.0, 0.0),
+    ) -> Command:
+        """The wingbeat for reference state ``ref`` (PathState), the error estimate
+        ``est`` (ErrorWindow.estimate(); None = feed-forward only) and the wind
+        ``(wx, wz)`` (reduced, world x forward, z up)."""
+        ax, az = float(ref.ax), float(ref.az)
+        if est is not None and not self.open_loop:
+            ep, ev, vx = est
+            g = self.gains
+            ax += g.kp * ep[0] + g.kd * ev[0] + g.ki * integral[0]
+            az += g.kp * ep[1] + g.kd * ev[1] + g.ki * integral[1]
+            vz = float(ref.vz) - float(ev[1])
+        else:
+            vx, vz = float(ref.vx), float(ref.vz)
+        return self.lookup(ax, az, vx - wind[0], vz - wind[1], pitch)
+
+    def lookup(self, ax: float, az: float, vx_air: float, vz_air: float, pitch: float) -> Command:
+        """The wingbeat that gives the whole bird the acceleration (ax, az) (world, z up)
+        while it moves through the air at (vx_air, vz_air).
+
+        Tables are built for level flight.  Flying along an air path inclined by
+        ``gamma = atan2(vz_air, vx_air)`` is level flight turned by gamma: the wings see
+        the same flow when the body pitch is the table's plus gamma.  So the needed
+        aerodynamic force ``m (a - g)`` is turned into the air-path frame, looked up at
+        the airspeed, and gamma is added to the table's pitch.  Below a forward airspeed
+        of :data:`CLIMB_SPEED` the turn fades out quadratically (none at hover, none when
+        flying backwards through the air).
+        """
+        m, grav = self.bird.mass, self.bird.gravity
+        speed = math.hypot(vx_air, vz_air)
+        gamma = math.atan2(vz_air, vx_air) if speed > 0 else 0.0
+        # fade the turn out with the forward airspeed: hovering up or down is not level
+        # flight turned by 90 degrees as far as the table's reach is concerned
+        gamma *= min(1.0, (max(vx_air, 0.0) / CLIMB_SPEED) ** 2)
+        f_x, f_z = m * ax, m * (az + grav)  # aerodynamic force needed, world
+        c, s = math.cos(gamma), math.sin(gamma)
+        w_x, w_z = c * f_x + s * f_z, -s * f_x + c * f_z  # in the air-path frame
+        v_table = math.hypot(vx_air, vz_air) if gamma != 0.0 else vx_air
+        fx, fz = self.to_table(w_x / m, w_z / m - grav, v_table, 0.0, self.bird, pitch - gamma)
+        cmd = self.lookup_table_force(float(fx), float(fz), v_table, (ax, az))
+        if gamma != 0.0 and "pitch" in self.names:
+            cmd.params[self.names.index("pitch")] += gamma
+        return cmd
+
+    def lookup_table_force(
+        self, fx: float, fz: float, v_air: float, a_cmd: tuple[float, float] = (0.0, 0.0)
+    ) -> Command:
+        """The table's wingbeat for a table-force demand (clipped; saturated flag)."""
+        if not (math.isfinite(fx) and math.isfinite(fz) and math.isfinite(v_air)):
+            raise BirdsimError(
+                f"non-finite demand Fx={fx}, Fz={fz}, V={v_air}; allowed: finite path states"
+            )
+        used = {"Fx": fx, "Fz": fz, "V": v_air}
+        clipped = {k: min(max(v, self.lo[k]), self.hi[k]) for k, v in used.items()}
+        saturated = (
+            abs(clipped["Fx"] - fx) > 1e-9
+            or abs(clipped["Fz"] - fz) > 1e-9
+            or abs(clipped["V"] - v_air) > V_CLIP_TOLERANCE
+        )
+        raw = self.table.lookup_many(clipped["Fx"], clipped["Fz"], clipped["V"], clip=True)
+        params = np.array([float(raw[n]) for n in self.names])
+        if "achieved_Fx" in raw:  # the cells' achieved forces, interpolated like the parameters
+            miss = max(
+                abs(float(raw["achieved_Fx"]) - clipped["Fx"]),
+                abs(float(raw["achieved_Fz"]) - clipped["Fz"]),
+            )
+            saturated = saturated or miss > REACH_TOLERANCE
+        return Command(fx, fz, v_air, params, bool(saturated), a_cmd)
+
+
+__all__ = ["Command", "Controller", "ErrorWindow", "Gains", "TIME_CONSTANT_BEATS", "gains_for"]
