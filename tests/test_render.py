@@ -272,7 +272,7 @@ def test_still_writes_one_png_and_nothing_else(tmp_path, capsys):
     table = small_table()
     table.save(tmp_path / "t")
     still = tmp_path / "s.png"
-    argv = ["render", "cruise", "--table", str(tmp_path / "t.npz"), "--still", str(still), "--at", "1.25", "--size", "160x128",
+    argv = ["render", "cruise", "--kinematic", "--table", str(tmp_path / "t.npz"), "--still", str(still), "--at", "1.25", "--size", "160x128",
             "--seconds", "1", "--quality", "draft", "--forces", "2", "--camera", "chase"]
     assert main(argv) == 0
     from PIL import Image

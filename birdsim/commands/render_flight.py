@@ -44,7 +44,7 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
     from birdsim.flight.flightlog import load_log
     from birdsim.flight.flightstates import flight_states
     from birdsim.physics.kinematics import get_model
-    from birdsim.render.gl import resolve_gl
+    from birdsim.render.gl import select_gl
 
     options = options_from_args(args)
     if is_log(args.manoeuvre):
@@ -97,7 +97,7 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
         if Path(args.sheet).suffix.lower() != ".png":
             raise BirdsimError(f"--sheet {args.sheet!r} does not end in .png; allowed: a .png path")
         check_writable(Path(args.sheet), args.force, "--sheet")
-    resolve_gl(args.gl)
+    select_gl(args.gl)  # a missing GL library -> one line; MUJOCO_GL set before the renderer starts
     if reference is not None:
         from birdsim.commands.common import parse_pairs
         from birdsim.flight.flightlog import log_arrays
