@@ -8,7 +8,6 @@ import pytest
 
 from birdsim.cli import main
 
-from test_export_flightlog import synth_log
 
 
 def run(capsys, *argv):
@@ -27,12 +26,24 @@ def test_export_each_format(tmp_path, capsys, fmt, suffix):
     assert code == 2 and "--force" in err and err.count("\n") == 1
 
 
+@pytest.mark.parametrize("kinematic", [[], ["--kinematic"]])
+def test_seconds_include_both_ends(tmp_path, capsys, kinematic):
+    """Free flight (the default, as `birdsim render`) and the prescribed playback alike."""
+    out = tmp_path / "c.csv"
+    code, text, err = run(capsys, "export", "cruise", *kinematic, "--format", "csv", "--out", str(out), "--seconds", "0.5")
+    assert code == 0, err
+    assert "16 frames" in text and ("model m4" in text) == bool(kinematic)  # m3 in free flight
+
+
 def test_export_a_flight_log(tmp_path, capsys):
-    log = synth_log(tmp_path / "f.npz", beats=1.0)
+    log = tmp_path / "f.npz"
+    assert main(["fly", "hover", "--seconds", "6.3", "--out", str(log), "--quiet"]) == 0
     out = tmp_path / "f.csv"
     code, text, err = run(capsys, "export", str(log), "--format", "csv", "--out", str(out))
     assert code == 0, err
-    assert "16 frames" in text  # one wingbeat at 2 per second and 30 fps, both ends
+    assert "16 frames" in text  # 6.3 time units = 1.003 wingbeats: 0.5 s at 2 per second, 30 fps
+    code, _, err = run(capsys, "export", str(log), "--format", "csv", "--out", str(tmp_path / "g.csv"), "--kinematic")
+    assert code == 2 and "--kinematic does not apply to a flight log" in err
 
 
 def _bad(tmp_path, capsys, *argv, match):
@@ -54,5 +65,7 @@ def test_bad_inputs(tmp_path, capsys, monkeypatch):
     _bad(tmp_path, capsys, "cruise", "--format", "csv", "--out", str(tmp_path / "file" / "x.csv"), match="cannot be created")
     np.savez(tmp_path / "other.npz", a=np.arange(3))
     _bad(tmp_path, capsys, str(tmp_path / "other.npz"), "--format", "csv", "--out", str(tmp_path / "o.csv"), match="not a birdsim flight log")
+    _bad(tmp_path, capsys, "cruise", "--kinematic", "--bird", "models/pigeon.toml", "--format", "csv", "--out", str(tmp_path / "p.csv"), match="--bird 'pigeon' does not fit")
+    _bad(tmp_path, capsys, "cruise", "--bird", "models/pigeon.toml", "--table", "tables/seed-m3.npz", "--format", "csv", "--out", str(tmp_path / "p.csv"), match="reduced bird differs")
     monkeypatch.setitem(sys.modules, "pxr", None)  # usd-core not installed
     _bad(tmp_path, capsys, "cruise", "--format", "usd", "--out", o, match="birdsim[usd]")

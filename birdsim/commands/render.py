@@ -130,6 +130,8 @@ def run(args: argparse.Namespace) -> int:
     table_path = Path(args.table) if args.table else Path("tables") / f"{model}.npz"
     table = _load_table(table_path, model, explicit=bool(args.table))
     bird = bird_from_args(args) if (args.bird or args.set) else None
+    if bird is not None:
+        require_bird(table, bird, table_path)
 
     if at is not None:
         from birdsim.render.renderer import render_still
@@ -189,6 +191,15 @@ def check_writable(out: Path, force: bool, arg: str = "--out") -> None:
         os.unlink(temporary_sibling(out))
     except OSError as exc:
         raise BirdsimError(f"{arg} {str(out)!r} is not writable: {exc.strerror}; allowed: a path in a writable folder") from None
+
+
+def require_bird(table, bird, table_path: Path) -> None:
+    """Refuse, in one line naming --bird and the table, a bird whose reduced bird is not
+    the one the table was built for (:meth:`LookupTable.require_bird`)."""
+    try:
+        table.require_bird(bird)
+    except BirdsimError as exc:
+        raise BirdsimError(f"--bird {bird.name!r} does not fit --table {str(table_path)!r}: {exc}") from None
 
 
 def _load_table(path: Path, model: str, *, explicit: bool):

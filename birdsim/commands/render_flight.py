@@ -34,16 +34,65 @@ def is_log(name: str) -> bool:
     return Path(name).suffix.lower() == ".npz"
 
 
+def flight_reference(source: str, model_arg: str | None, gust_args: list[str]):
+    """What free flight flies for SOURCE (a preset or a manoeuvre file): the path or the
+    demand schedule of a force-keyframe file, the model (default the demo model) and the
+    gusts. Shared by ``birdsim render`` and ``birdsim export``.
+
+    Returns:
+        (reference, model name, gusts).
+
+    Raises:
+        BirdsimError: an unknown preset or file, model or gust (one line).
+    """
+    from birdsim.flight.freeflight import DemandSchedule, parse_gust
+    from birdsim.flight.manoeuvre import Manoeuvre
+    from birdsim.flight.path_file import get_flight
+    from birdsim.flight.presets import DEMO_MODEL
+    from birdsim.physics.kinematics import get_model
+
+    flight = get_flight(source)
+    model = get_model(model_arg or DEMO_MODEL).name
+    gusts = [parse_gust(g) for g in gust_args]
+    reference = DemandSchedule(flight) if isinstance(flight, Manoeuvre) else flight
+    return reference, model, gusts
+
+
+def fly_reference(reference, model: str, args: argparse.Namespace, *, beats: float, gusts: list) -> dict:
+    """Fly ``reference`` in MuJoCo for ``beats`` wingbeats with the bird of ``--bird``/
+    ``--set`` and the table of ``--table`` (else the shipped one for that bird), as
+    ``birdsim render`` and ``birdsim export`` do; the flight log's arrays (bird units).
+
+    Raises:
+        BirdsimError: a bird without gravity, a table for another model or bird.
+    """
+    from birdsim.commands.common import parse_pairs
+    from birdsim.commands.fly import load_bird, load_table_for
+    from birdsim.flight.flightlog import log_arrays
+    from birdsim.flight.freeflight import fly
+
+    bird = load_bird(args.bird)
+    overrides = parse_pairs(getattr(args, "set", None), "--set")
+    bird = bird.with_overrides(overrides) if overrides else bird
+    if bird.gravity <= 0:
+        raise BirdsimError(
+            f"--bird {bird.name!r} has gravity={bird.gravity:g}; allowed: a bird file with gravity > 0 for free flight (or --kinematic)"
+        )
+    table = load_table_for(bird, model, args.table)
+    result = fly(reference, table, bird, model, beats=beats, gusts=gusts, open_loop=args.open_loop)
+    log = log_arrays(result, reference.name)
+    log["bird_obj"] = bird
+    return log
+
+
 def run_flight(args: argparse.Namespace, options_from_args) -> int:
     """Render a log (``args.manoeuvre`` ends in .npz) or a free flight of the manoeuvre.
 
     ``options_from_args(args, seconds=None)`` builds the RenderOptions as the kinematic
     path does (one place for size, fps, camera, quality...)."""
-    from birdsim.commands.fly import load_bird, load_table_for
     from birdsim.commands.render import _slug, check_still, check_writable
     from birdsim.flight.flightlog import load_log
     from birdsim.flight.flightstates import flight_states
-    from birdsim.physics.kinematics import get_model
     from birdsim.render.gl import select_gl
 
     options = options_from_args(args)
@@ -57,16 +106,7 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
         default_out = Path("renders") / f"{_slug(Path(args.manoeuvre).stem)}.mp4"
         reference = None
     else:
-        from birdsim.flight.freeflight import DemandSchedule, parse_gust
-        from birdsim.flight.manoeuvre import Manoeuvre
-        from birdsim.flight.path_file import get_flight
-
-        flight = get_flight(args.manoeuvre)
-        from birdsim.flight.presets import DEMO_MODEL
-
-        model = get_model(args.model or DEMO_MODEL).name
-        gusts = [parse_gust(g) for g in args.gust]
-        reference = DemandSchedule(flight) if isinstance(flight, Manoeuvre) else flight
+        reference, model, gusts = flight_reference(args.manoeuvre, args.model, args.gust)
         name = reference.name
         default_out = Path("renders") / f"{_slug(name)}-{model}.mp4"
     if options.seconds is None:  # the whole flight: one line when it would exceed the longest video
@@ -99,28 +139,12 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
         check_writable(Path(args.sheet), args.force, "--sheet")
     select_gl(args.gl)  # a missing GL library -> one line; MUJOCO_GL set before the renderer starts
     if reference is not None:
-        from birdsim.commands.common import parse_pairs
-        from birdsim.flight.flightlog import log_arrays
-        from birdsim.flight.freeflight import fly
-
-        bird = load_bird(args.bird)
-        overrides = parse_pairs(getattr(args, "set", None), "--set")
-        bird = bird.with_overrides(overrides) if overrides else bird
-        if bird.gravity <= 0:
-            raise BirdsimError(
-                f"--bird {bird.name!r} has gravity={bird.gravity:g}; allowed: a bird file with gravity > 0 for free flight (or --kinematic)"
-            )
-        table = load_table_for(bird, model, args.table)
         beats = (
             reference.duration_beats
             if options.seconds is None
             else options.seconds * options.beats_per_second
         )
-        result = fly(
-            reference, table, bird, model, beats=beats, gusts=gusts, open_loop=args.open_loop
-        )
-        log = log_arrays(result, name)
-        log["bird_obj"] = bird
+        log = fly_reference(reference, model, args, beats=beats, gusts=gusts)
     states = flight_states(
         log,
         dataclasses.replace(options, seconds=None) if reference is not None else options,

@@ -1,160 +1,133 @@
-"""Reading a free-flight log (``birdsim fly --out LOG.npz``) into export frames.
+"""Export frames of a free flight: a flight log from ``birdsim fly --out`` or a flight
+just flown (the arrays of :func:`birdsim.flight.flightlog.log_arrays`).
 
-The log format (issue 9, item 6; docs/export.md): per sample (at least 32 per wingbeat)
-arrays ``t`` (the bird's time units), ``x``, ``z``, ``vx``, ``vz`` (body origin; x forward,
-z UP, the bird's length units), ``x_ref``, ``z_ref``, ``pitch`` (rad, nose up), each
-wingbeat parameter by its table name, ``Fx_demand``, ``Fz_demand`` (table units, right
-wing + body drag), ``V_air``, ``saturated``, ``pitch_moment``; scalars ``mass``,
-``gravity``, ``model``, ``bird`` (the bird's TOML text) and ``omega`` (rad per time unit).
-An optional ``phase`` array (the wingbeat phase, rad) is used when present; otherwise the
-phase is ``omega t`` (the playback's phase-continuous clock).
+The log is read by the flight layer's own reader (:func:`birdsim.flight.flightlog.load_log`:
+the format marker, the version and every required array; anything else is "not a birdsim
+flight log", one line). The export samples it at its own frame rate exactly as
+``birdsim render`` draws it (:func:`birdsim.flight.flightstates.resample`): the logged MuJoCo
+state of the REDUCED model (lengths in semispans) is interpolated linearly between log
+samples (at least 32 per wingbeat), its quaternions renormalised, and its lengths (the
+root position, the heave slides) multiplied by the semispan, which gives the qpos of the
+bird's own MJCF (``build_model(model, bird)`` is the reduced MJCF scaled by the semispan):
+metres for the pigeon. So the body position at a frame is the log's ``x``, ``z``
+interpolated at that frame's time.
 
-The export samples the log at its own frame rate: positions, pitch and parameters are
-interpolated linearly between log samples, and the wings are re-posed from the
-interpolated parameters at the exact phase, so the flap is not flattened by a coarse
-log.  Achieved force: the wingbeat mean of the logged parameters at ``V_air`` (table units).
+Force columns (docs/export.md, CSV): ``Fx_demand``, ``Fz_demand`` as logged (the
+dissertation's force, right wing + body drag, table units), ``V_air`` converted from the
+bird's speed unit to omega s, and the achieved force: the wingbeat mean of the flown
+parameters at that airspeed (:func:`birdsim.export.frames.achieved_forces`).
 """
 
 from __future__ import annotations
 
-import sys
-from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
-from birdsim.errors import BirdsimError
 from birdsim.export.frames import ExportError, FrameSequence, achieved_forces, check_fps, frame_count, time_per_second
-from birdsim.physics.bird import Bird
 
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # pragma: no cover
-    import tomli as tomllib
-
-#: Arrays and scalars every birdsim flight log has (what the reader relies on).
-REQUIRED_ARRAYS = ("t", "x", "z", "pitch")
-REQUIRED_SCALARS = ("model", "bird", "omega")
-OPTIONAL_COLUMNS = ("Fx_demand", "Fz_demand", "V_air", "vx", "vz", "x_ref", "z_ref", "saturated", "pitch_moment")
+#: Force and speed columns carried from a log into the CSV.
+LOG_COLUMNS = ("Fx_demand", "Fz_demand", "V_air")
 
 
-@dataclass(frozen=True)
-class FlightLog:
-    """A flight log as read: the model, the bird and every per-sample array."""
-
-    path: Path
-    model: str
-    bird: Bird
-    arrays: dict[str, np.ndarray]
-
-    @property
-    def t(self) -> np.ndarray:
-        return self.arrays["t"]
-
-
-def _not_a_log(path: Path, why: str) -> ExportError:
-    return ExportError(f"SOURCE {str(path)!r} is not a birdsim flight log ({why}); allowed: a .npz written by `birdsim fly --out`")
-
-
-def read_flight_log(path: str | Path) -> FlightLog:
-    """Read and check a flight log.
+def read_flight_log(path: str | Path) -> dict[str, Any]:
+    """Read a flight log written by ``birdsim fly --out``.
 
     Args:
         path: the ``.npz`` file.
 
     Returns:
-        The log.
+        The log's arrays and scalars (and ``bird_obj``, its Bird).
 
     Raises:
         ExportError: a missing file, a file that is not an npz, or a log from another
-            program (a required array or scalar missing, lengths that disagree, times
-            that do not increase, NaN).
+            program (one line naming SOURCE).
     """
-    from birdsim.physics.kinematics import get_model
+    from birdsim.flight.flightlog import LogError, load_log
 
-    path = Path(path)
-    if not path.is_file():
-        raise ExportError(f"SOURCE {str(path)!r} does not exist; allowed: a preset, a manoeuvre .toml or a flight log .npz")
     try:
-        with np.load(path, allow_pickle=False) as z:
-            data = {k: z[k] for k in z.files}
-    except (OSError, ValueError) as exc:
-        raise _not_a_log(path, f"not a readable npz: {exc}") from None
-    for key in REQUIRED_ARRAYS + REQUIRED_SCALARS:
-        if key not in data:
-            raise _not_a_log(path, f"no {key!r}")
-    try:
-        model = get_model(str(data["model"])).name
-    except BirdsimError:
-        raise _not_a_log(path, f"model {str(data['model'])!r} is unknown") from None
-    try:
-        bird = Bird.from_dict(tomllib.loads(str(data["bird"])))
-    except (tomllib.TOMLDecodeError, BirdsimError, TypeError) as exc:
-        raise _not_a_log(path, f"its 'bird' is not a bird TOML: {exc}") from None
-    km = get_model(model)
-    arrays: dict[str, np.ndarray] = {}
-    n = np.shape(data["t"])[0] if np.ndim(data["t"]) == 1 else -1
-    if n < 2:
-        raise _not_a_log(path, "'t' is not a 1-D array of at least two samples")
-    for key in REQUIRED_ARRAYS + km.param_names + tuple(k for k in OPTIONAL_COLUMNS if k in data) + (("phase",) if "phase" in data else ()):
-        if key not in data:
-            raise _not_a_log(path, f"no {key!r} (a parameter of model {model})")
-        a = np.asarray(data[key], dtype=float)
-        if a.shape != (n,):
-            raise _not_a_log(path, f"{key!r} has shape {a.shape}, 't' has ({n},)")
-        if key != "saturated" and not np.all(np.isfinite(a)):
-            raise _not_a_log(path, f"{key!r} holds NaN or infinity")
-        arrays[key] = a
-    if np.any(np.diff(arrays["t"]) <= 0):
-        raise _not_a_log(path, "'t' does not increase")
-    if not np.isclose(float(data["omega"]), bird.omega, rtol=1e-9):
-        raise _not_a_log(path, f"omega {float(data['omega']):g} is not its bird's {bird.omega:g}")
-    return FlightLog(path, model, bird, arrays)
+        return load_log(path, "SOURCE")
+    except LogError as exc:
+        raise ExportError(str(exc)) from None
+
+
+def _length_slices(m: Any) -> list[slice]:
+    """qpos entries that are lengths: the free root's position and every slide joint."""
+    import mujoco
+
+    out = []
+    for j in range(m.njnt):
+        adr = int(m.jnt_qposadr[j])
+        if m.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE:
+            out.append(slice(adr, adr + 3))
+        elif m.jnt_type[j] == mujoco.mjtJoint.mjJNT_SLIDE:
+            out.append(slice(adr, adr + 1))
+    return out
 
 
 def frames_from_log(
-    log: FlightLog,
+    log: dict[str, Any],
     *,
     fps: float = 30.0,
     beat_rate: float | None = None,
     metres_per_unit: float = 1.0,
+    seconds: float | None = None,
+    source: str = "",
 ) -> FrameSequence:
     """Export frames of a flight log at ``fps`` (see the module docstring).
 
     Args:
-        log: the log (:func:`read_flight_log`).
+        log: the log (:func:`read_flight_log` or ``log_arrays`` of a flight just flown).
         fps: frames per second of animation.
         beat_rate: wingbeats per second of animation (default: real time for an SI bird,
             2 for the seed bird).
         metres_per_unit: metres per bird length unit.
+        seconds: animation length (default: the whole log; never beyond its end).
+        source: what the frames come from (for the file's metadata).
 
     Returns:
-        The frames; frame 0 is the log's first sample.
+        The frames; frame 0 is the log's first sample, times in the bird's time units.
+
+    Raises:
+        ExportError: a bad fps, beat rate or length; a log of fewer than two samples.
     """
-    from birdsim.flight.playback import joint_series
-    from birdsim.mujoco.driver import set_root, wing_arrays
+    import tomllib
+
+    from birdsim.flight.flightstates import _quaternion_slices, resample
     from birdsim.mujoco.model import build_model
+    from birdsim.physics.bird import Bird
     from birdsim.physics.kinematics import get_model
+    from birdsim.physics.units import reduced_bird, scales
 
     fps = check_fps(fps)
-    bird, km, a = log.bird, get_model(log.model), log.arrays
+    bird = log.get("bird_obj") or Bird.from_dict(tomllib.loads(str(log["bird"])))
+    km = get_model(str(log["model"]))
+    sc = scales(bird)
+    t_log = np.asarray(log["t"], dtype=float)
+    if t_log.size < 2:
+        raise ExportError("the flight log has fewer than two samples; allowed: a log of at least one sample interval")
     per_s = time_per_second(bird, beat_rate)
-    t0, t1 = float(a["t"][0]), float(a["t"][-1])
+    t0, t1 = float(t_log[0]), float(t_log[-1])
+    if seconds is not None:
+        if not (np.isfinite(seconds) and seconds > 0):
+            raise ExportError(f"--seconds {seconds!r} is invalid; allowed: a number > 0")
+        t1 = min(t1, t0 + seconds * per_s)
     n = frame_count(t1 - t0, fps, per_s)
     time = t0 + np.arange(n) * (per_s / fps)
-    time = time[time <= t1 + 1e-12]
-    at = {k: np.interp(time, a["t"], v) for k, v in a.items() if k != "t"}
-    params = {p: at[p] for p in km.param_names}
-    rates = {p: np.interp(time, a["t"], np.gradient(a[p], a["t"])) for p in km.param_names}
-    phase = at["phase"] if "phase" in at else bird.omega * time
-    angles, ang_rates = joint_series(km, bird, params, rates, phase, bird.omega)
-    m = build_model(km.name, bird)
-    qpos, qvel, _ = wing_arrays(m, angles, ang_rates, samples=len(time))
-    pos_seed = np.stack([at["x"], np.zeros_like(time), -at["z"]], axis=1)  # z up -> seed Z down
-    set_root(m, qpos, qvel, pitch=at["pitch"], position_seed=pos_seed)
-    forces = {k: at[k] for k in ("Fx_demand", "Fz_demand", "V_air") if k in at}
-    if "V_air" in at:
-        forces.update(achieved_forces(km.name, bird, params, at["V_air"]))
+    time = time[time <= t1 + 1e-9 * max(1.0, abs(t1))]
+    m_red = build_model(km.name, reduced_bird(bird))
+    qpos = resample(t_log, np.asarray(log["qpos"], dtype=float), time)
+    for sl in _quaternion_slices(m_red):
+        qpos[:, sl] /= np.linalg.norm(qpos[:, sl], axis=1, keepdims=True)
+    for sl in _length_slices(m_red):
+        qpos[:, sl] *= sc.length
+    params = {p: resample(t_log, np.asarray(log[p], dtype=float), time) for p in km.param_names if p in log}
+    forces = {k: resample(t_log, np.asarray(log[k], dtype=float), time) for k in LOG_COLUMNS if k in log}
+    if "V_air" in forces:
+        forces["V_air"] = forces["V_air"] / sc.speed  # the bird's speed unit -> omega s (table units)
+        if len(params) == len(km.param_names):
+            forces.update(achieved_forces(km.name, bird, params, forces["V_air"]))
     return FrameSequence(
         model=km.name,
         bird=bird,
@@ -163,9 +136,9 @@ def frames_from_log(
         qpos=qpos,
         params=params,
         forces=forces,
-        source=f"flight log {log.path.name}",
+        source=source or f"free flight {str(log.get('manoeuvre', ''))}".strip(),
         metres_per_unit=metres_per_unit,
     )
 
 
-__all__ = ["FlightLog", "OPTIONAL_COLUMNS", "REQUIRED_ARRAYS", "REQUIRED_SCALARS", "frames_from_log", "read_flight_log"]
+__all__ = ["LOG_COLUMNS", "frames_from_log", "read_flight_log"]
