@@ -59,7 +59,7 @@ def _bird_mask(scene, i):
 
 @needs_gl
 @pytest.mark.render
-@pytest.mark.parametrize("preset", ["take-off", "landing"])
+@pytest.mark.parametrize("preset", ["hover", "cruise", "take-off", "landing"])
 def test_overview_keeps_the_bird_in_every_frame(preset):
     o = RenderOptions(width=160, height=96, fps=4, beats_per_second=2.0, camera="overview", quality="draft", progress=False, trails=False)
     pb = play_for_video(PRESETS[preset], small_table(), o)
@@ -69,6 +69,7 @@ def test_overview_keeps_the_bird_in_every_frame(preset):
             k = scene.instant(i)
             uv = project(scene.torso_path[k][None, :], scene.poses[i], fovy, o.width / o.height)[0]
             assert np.all(np.abs(uv) < 0.9), (i, uv)  # the bird's centre inside the frame, off the edges
+            assert uv[1] < 0.4, (i, uv)  # below the overlay text (the top 27 % of a 640x480 frame)
         # the projection is MuJoCo's: the projected centre lies on the bird in the image
         for i in (0, scene.frames // 2, scene.frames - 1):
             uv = project(scene.torso_path[scene.instant(i)][None, :], scene.poses[i], fovy, o.width / o.height)[0]
@@ -118,3 +119,33 @@ def test_shadows_only_where_the_shadow_is_in_view():
     o = RenderOptions(width=64, height=48, fps=4, camera="overview", quality="draft", progress=False)
     with Scene(play_for_video(PRESETS["cruise"], table, o), o) as scene:
         assert not scene.shadows.any()
+
+
+@needs_gl
+@pytest.mark.render
+@pytest.mark.parametrize("preset", ["hover", "cruise", "take-off", "landing"])
+def test_overview_keeps_the_free_flight_in_every_frame(preset):
+    """The same projection for the flown path (free flight, the default of `birdsim
+    render`): the demo bird with its shipped table, every frame of every preset."""
+    import dataclasses
+
+    from birdsim.commands.fly import load_table_for
+    from birdsim.flight.flightlog import log_arrays
+    from birdsim.flight.flightstates import flight_states
+    from birdsim.flight.freeflight import fly
+    from birdsim.flight.presets import DEMO_MODEL, PATH_PRESETS
+    from birdsim.physics.bird import Bird
+
+    bird = Bird.from_toml("models/seed-bird.toml")
+    path = PATH_PRESETS[preset]
+    log = log_arrays(fly(path, load_table_for(bird, DEMO_MODEL, None), bird, DEMO_MODEL), preset)
+    o = RenderOptions(width=160, height=96, fps=4, beats_per_second=2.0, camera="overview", quality="draft", progress=False, trails=False)
+    states = flight_states(log, dataclasses.replace(o, seconds=None), title=preset)
+    with Scene(states, o) as scene:
+        fovy = float(scene.m.vis.global_.fovy)
+        assert scene.frames >= 2 * path.duration_beats - 1
+        for i in range(scene.frames):
+            uv = project(scene.torso_path[scene.instant(i)][None, :], scene.poses[i], fovy, o.width / o.height)[0]
+            assert np.all(np.abs(uv) < 0.9), (i, uv)
+            # and below the overlay text, which covers the top 27 % of a 640x480 frame
+            assert uv[1] < 0.4, (i, uv)

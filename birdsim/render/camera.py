@@ -106,6 +106,11 @@ class CameraPose:
         return self.lookat - self.distance * f
 
 
+#: Fraction of the frame's height the overview leaves above the flight for the overlay
+#: text (six lines cover the top 27 % of a 640x480 frame).
+OVERVIEW_TEXT_BAND = 0.3
+
+
 def camera_path(name: str, position: np.ndarray, heading: np.ndarray, t_beats: np.ndarray, span: float, fovy_deg: float, aspect: float, extra_points: np.ndarray | None = None) -> list[CameraPose]:
     """One :class:`CameraPose` per instant for camera ``name``.
 
@@ -126,6 +131,8 @@ def camera_path(name: str, position: np.ndarray, heading: np.ndarray, t_beats: n
     if name == "overview":
         pts = position if extra_points is None else np.vstack([position, extra_points])
         lo, hi = pts.min(axis=0) - span, pts.max(axis=0) + span
+        # the overlay text covers the top of the frame: keep the bird in the rest
+        hi[2] = lo[2] + (hi[2] - lo[2]) / (1.0 - OVERVIEW_TEXT_BAND)
         centre = 0.5 * (lo + hi)
         half_x, half_z = 0.5 * (hi[0] - lo[0]), 0.5 * (hi[2] - lo[2])
         half_y_fov = math.radians(fovy_deg) / 2
