@@ -65,7 +65,7 @@ def test_bad_inputs(tmp_path, capsys, monkeypatch):
     _bad(tmp_path, capsys, "cruise", "--format", "csv", "--out", str(tmp_path / "file" / "x.csv"), match="cannot be created")
     np.savez(tmp_path / "other.npz", a=np.arange(3))
     _bad(tmp_path, capsys, str(tmp_path / "other.npz"), "--format", "csv", "--out", str(tmp_path / "o.csv"), match="not a birdsim flight log")
-    _bad(tmp_path, capsys, "cruise", "--kinematic", "--bird", "models/pigeon.toml", "--format", "csv", "--out", str(tmp_path / "p.csv"), match="--bird 'pigeon' does not fit")
+    _bad(tmp_path, capsys, "cruise", "--kinematic", "--bird", "models/pigeon.toml", "--format", "csv", "--out", str(tmp_path / "p.csv"), match="--table 'tables/m4.npz': table for model m4 was built for bird 'seed', whose reduced bird differs from bird 'pigeon''s")
     _bad(tmp_path, capsys, "cruise", "--bird", "models/pigeon.toml", "--table", "tables/seed-m3.npz", "--format", "csv", "--out", str(tmp_path / "p.csv"), match="reduced bird differs")
     monkeypatch.setitem(sys.modules, "pxr", None)  # usd-core not installed
     _bad(tmp_path, capsys, "cruise", "--format", "usd", "--out", o, match="birdsim[usd]")

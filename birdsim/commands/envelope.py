@@ -19,6 +19,12 @@ from birdsim.tables.lookup import load_table
 from birdsim.tables.shipped import shipped_table
 
 
+#: Whose force the envelope prints (docs/conventions.md, "Which force").
+FORCE_NOTE = (
+    "whole bird (2 wings + body drag) unless marked as the table's "
+    "(right wing + body drag, the dissertation's flapcost force)"
+)
+
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser(
         "envelope",
@@ -59,12 +65,13 @@ def run(args: argparse.Namespace) -> int:
     table.require_bird(bird)
     env = envelope(table, bird)
     if args.json:
-        print(json.dumps({"table": str(path), **env.to_dict()}, indent=2))
+        print(json.dumps({"table": str(path), "force": FORCE_NOTE, **env.to_dict()}, indent=2))
         return 0
     sc = scales(bird)
     si = bird.rho != 1.0 or bird.omega != 1.0 or bird.semispan != 1.0 or bird.chord != 1.0
     u_f, u_v, u_p = ("N", "m/s", "W") if si else ("", "", "")
     print(f"envelope of bird {bird.name!r} with model {model} (table {path})")
+    print(f"force: {FORCE_NOTE}")
     print(
         f"units: force {sc.force:.4g} {u_f or '(rho omega^2 s^3 c)'}, speed {sc.speed:.4g} "
         f"{u_v or '(omega s)'}, power {sc.power:.4g} {u_p or '(rho omega^3 s^4 c)'}"
@@ -91,12 +98,12 @@ def run(args: argparse.Namespace) -> int:
             f"{_fmt(env.accel_backward[i], '+.4f'):>8s} {_fmt(env.climb_angles_deg[i], '.1f'):>9s}"
         )
     print(
-        "optimiser's best lift at Fx = 0 per table speed: "
+        "optimiser's best lift at Fx = 0 per table speed (whole bird): "
         + ", ".join(f"V={v:g}: {x:.3f}" for v, x in zip(env.best_lift_speeds, env.best_lift))
     )
     mass = f" ({env.hover_mass_si:.3g} kg)" if si and env.hover_mass_si is not None else ""
     print(
-        f"heaviest bird that can hover: weight {env.hover_weight:.3f}"
+        f"heaviest bird that can hover: weight {env.hover_weight:.3f} (whole bird)"
         + (f" = {env.hover_weight_si:.3f} {u_f}{mass}" if si else "")
         + f"; this bird {'can' if env.can_hover else 'CANNOT'} hover"
     )

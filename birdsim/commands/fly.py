@@ -85,7 +85,6 @@ def load_bird(arg: str | None):
 def load_table_for(bird, model: str, table_arg: str | None):
     """The table: --table, else the shipped one for this bird and model; refused with
     one line when built for another model or another reduced bird."""
-    from birdsim.physics.units import same_reduced_bird
     from birdsim.tables.lookup import load_table
 
     if table_arg:
@@ -107,11 +106,10 @@ def load_table_for(bird, model: str, table_arg: str | None):
         raise BirdsimError(
             f"--table {str(path)!r} was built for model {table.model!r}, not {model!r}; allowed: a table for {model}"
         )
-    if not same_reduced_bird(table.bird, bird):
-        raise BirdsimError(
-            f"--table {str(path)!r} was built for bird {table.bird.name!r}, whose reduced bird differs from {bird.name!r}'s; "
-            f"allowed: a table built for this bird (birdsim tables build --bird FILE)"
-        )
+    try:
+        table.require_bird(bird)
+    except BirdsimError as exc:
+        raise BirdsimError(f"--table {str(path)!r}: {exc}") from None
     return table
 
 

@@ -13,7 +13,7 @@ from birdsim.commands.common import add_bird_arguments, bird_from_args, parse_pa
 
 #: Most samples per wingbeat ``--samples`` accepts (the histories are N long per strip).
 MAX_SAMPLES = 100_000
-FORCE_NOTE = "right wing + body drag (the dissertation's flapcost force); whole_bird = 2 wings + body"
+FORCE_NOTE = "mean: right wing + body drag (the dissertation's flapcost force); whole bird: 2 wings + body drag"
 
 
 def register(sub: argparse._SubParsersAction) -> None:

@@ -194,12 +194,13 @@ def check_writable(out: Path, force: bool, arg: str = "--out") -> None:
 
 
 def require_bird(table, bird, table_path: Path) -> None:
-    """Refuse, in one line naming --bird and the table, a bird whose reduced bird is not
-    the one the table was built for (:meth:`LookupTable.require_bird`)."""
+    """Refuse, in one line naming the table and both birds, a bird whose reduced bird is
+    not the one the table was built for (:meth:`LookupTable.require_bird`; the same line
+    as free flight's ``birdsim.commands.fly.load_table_for``)."""
     try:
         table.require_bird(bird)
     except BirdsimError as exc:
-        raise BirdsimError(f"--bird {bird.name!r} does not fit --table {str(table_path)!r}: {exc}") from None
+        raise BirdsimError(f"--table {str(table_path)!r}: {exc}") from None
 
 
 def _load_table(path: Path, model: str, *, explicit: bool):

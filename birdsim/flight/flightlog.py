@@ -224,6 +224,8 @@ def summary(
         "pitch_moment_peak": float(np.abs(moment).max()),
         "pitch_moment_per_wingbeat": {"mean": per_beat_mean, "peak": per_beat_peak},
         "units": "bird's own (length, time, force x length, power); Fx/Fz_demand in table units",
+        "force": "Fx_demand, Fz_demand: right wing + body drag (the dissertation's flapcost force), Fz < 0 is up; "
+        "force_x, force_z of the log: whole bird (2 wings + body drag) + weight, world x / z up",
     }
     if phases is not None:
         labels = np.array([phases(float(tb)) for tb in t_beats])

@@ -56,7 +56,7 @@ def force_lines(demanded: np.ndarray | None, achieved: np.ndarray) -> list[Overl
 
     ach = [("achieved ", GREY), (f"Fx {f(achieved[0])} Fz {f(achieved[2])}", ACHIEVED)]
     dem = [] if demanded is None else [("demanded ", GREY), (f"Fx {f(demanded[0])} Fz {f(demanded[2])}   ", DEMANDED)]
-    return [dem + ach + [("  (R wing+drag)", GREY)]]
+    return [dem + ach + [("  (right wing + body drag)", GREY)]]
 
 
 def legend_line(unit_name: str, scale: float) -> OverlayLine:
