@@ -1,7 +1,7 @@
 """A plain transcription of the dissertation's ``flapcost`` (appendix 1B) for the
 single-panel models, written independently of birdsim's chain machinery: a loop over
 time samples, the 3x3 matrices of Table 2 typed in again, the CP velocities of
-eqs 55, 59, 66 (constant sweep) and 73.  OCR typos mended as DESIGN.md says: the zero
+eqs 55, 59, 66 (constant sweep) and 73.  OCR typos mended as docs/design.md says: the zero
 middle element of the printed 3x3 matrices is 1, ``F1 = R12.*F2`` is the transpose
 product, forces go to earth axes with R_e1 transposed, twist is ``-Theta_f cos(wt)``,
 power is ``-F1 . V1f``.
@@ -45,7 +45,7 @@ def flapcost_histories(model: str, params: dict, speed: float, times: np.ndarray
         elif model == "m2":  # eq 66-67 with a constant sweep (Gamma_f = 0)
             v1f = np.array([w * np.sin(phi) * np.sin(gamma), -w * np.sin(phi) * np.cos(gamma), w * np.cos(phi)])
             r12 = _pitch(thetaf) @ _flap(phi) @ _sweep(gamma)
-        elif model == "m3":  # eq 73-74, stroke plane as a pitch-type matrix (DESIGN.md)
+        elif model == "m3":  # eq 73-74, stroke plane as a pitch-type matrix (docs/design.md)
             v1f = np.array([w * np.cos(phi) * np.sin(sp), -w * np.sin(phi), w * np.cos(phi) * np.cos(sp)])
             r12 = _pitch(thetaf) @ _flap(phi) @ _pitch(sp)
         else:

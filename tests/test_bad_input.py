@@ -167,6 +167,8 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("render/manoeuvre-unknown-key", ["render", "{w}/man_unknown_key.toml", "--table", "{w}/table.npz"], "key 'speed' is unknown"),
     ("render/manoeuvre-negative-V", ["render", "{w}/man_negative_v.toml", "--table", "{w}/table.npz"], "keyframe 1: V=-1 is negative"),
     ("render/manoeuvre-nan", ["render", "{w}/man_nan.toml", "--table", "{w}/table.npz"], "keyframe 1: Fz=nan is not a finite number"),
+    ("render/manoeuvre-below-floor", ["render", "{w}/man_below.toml", "--kinematic", "--table", "{w}/table.npz"], "keyframe 2 (t=3) has z=-1, below the floor"),
+    ("fly/manoeuvre-below-floor", ["fly", "{w}/man_below.toml"], "keyframe 2 (t=3) has z=-1, below the floor"),
     ("render/manoeuvre-huge-t", ["render", "{w}/man_huge_t.toml", "--table", "{w}/table.npz"], "keyframe t=1e+12"),
     ("render/unknown-model", [*RENDER, "--model", "m9"], "--model 'm9' is unknown"),
     ("render/size-odd", [*RENDER, "--size", "100x100"], "--size"),
@@ -300,6 +302,7 @@ def template(tmp_path_factory: pytest.TempPathFactory) -> Path:
     )
     (w / "man_negative_v.toml").write_text("[[keyframe]]\nt = 0\nFx = 0\nFz = -0.3\nV = -1\n")
     (w / "man_nan.toml").write_text("[[keyframe]]\nt = 0\nFx = 0\nFz = nan\nV = 0\n")
+    (w / "man_below.toml").write_text("[[keyframe]]\nt = 0\nFx = 0\nFz = -0.2\nV = 0.5\nz = 6\n[[keyframe]]\nt = 3\nFx = 0\nFz = -0.2\nV = 0.5\nz = -1\n")
     (w / "man_huge_t.toml").write_text(
         "[[keyframe]]\nt = 0\nFx = 0\nFz = -0.3\nV = 0\n[[keyframe]]\nt = 1e12\nFx = 0\nFz = -0.3\nV = 0\n"
     )

@@ -127,7 +127,9 @@ def run(args: argparse.Namespace) -> int:
             raise BirdsimError(f"--sheet {args.sheet!r} does not end in .png; allowed: a .png path")
         check_writable(Path(args.sheet), args.force, "--sheet")
     resolve_gl(args.gl)  # a missing GL library -> one line, before any work
-    table_path = Path(args.table) if args.table else Path("tables") / f"{model}.npz"
+    from birdsim.tables.shipped import table_folder
+
+    table_path = Path(args.table) if args.table else table_folder() / f"{model}.npz"
     table = _load_table(table_path, model, explicit=bool(args.table))
     bird = bird_from_args(args) if (args.bird or args.set) else None
     if bird is not None:

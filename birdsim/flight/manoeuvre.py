@@ -89,6 +89,14 @@ class Manoeuvre:
             raise ManoeuvreError(f"manoeuvre {self.name!r}: duration={self.duration!r}; allowed: a number of wingbeats in (0, {MAX_BEATS:g}]")
         if self.perch not in ("", "start", "end"):
             raise ManoeuvreError(f"manoeuvre {self.name!r}: perch={self.perch!r}; allowed: start, end or empty")
+        from birdsim.flight.path import FLOOR_CLEARANCE  # one floor rule for paths and force keyframes
+
+        for i, k in enumerate(self.keyframes):
+            if not (math.isfinite(k.z) and k.z >= FLOOR_CLEARANCE):
+                raise ManoeuvreError(
+                    f"manoeuvre {self.name!r}: keyframe {i + 1} (t={k.t:g}) has z={k.z:g}, below the floor; "
+                    f"allowed: z >= {FLOOR_CLEARANCE:g} semispans (a wing's length above the ground)"
+                )
 
     def demands(self, t_beats: np.ndarray | float) -> dict[str, np.ndarray]:
         """Fx, Fz, V and z at times ``t_beats`` (C1 in time, held outside the keyframes)."""

@@ -5,7 +5,7 @@ Everything works on panel-axes velocity components ``(vx, vz)`` of the element's
 motion *relative to the air* (x chordwise towards the leading edge, z down; the
 spanwise component has no influence, sec. 3.2.3).  The angle of attack is
 ``alpha = atan2(vz, vx)``, the dynamic pressure ``q = rho/2 (vx^2 + vz^2)`` and the
-force in wind axes ``(-Cd, 0, -Cl) q S`` (DESIGN.md section 2).
+force in wind axes ``(-Cd, 0, -Cl) q S`` (docs/design.md section 2).
 """
 
 from __future__ import annotations

@@ -4,7 +4,7 @@ One frozen dataclass, read from and written to TOML.  Units are the dissertation
 non-dimensional ones (rho = 1, omega = 1, semispan = 1, chord = 1) unless a bird file
 says otherwise; any consistent unit system works.
 
-Geometry per model (DESIGN.md): the single-panel models (base, m1, m2, m3) use one
+Geometry per model (docs/design.md): the single-panel models (base, m1, m2, m3) use one
 panel of span ``semispan`` and chord ``chord``.  m4 splits the semispan into an arm
 of span ``semispan * (1 - hand_span_fraction)`` (chord ``chord``) and a hand of span
 ``semispan * hand_span_fraction`` (chord ``hand_chord``).

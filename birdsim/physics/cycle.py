@@ -9,7 +9,7 @@ passive callback calls the polar of :func:`element_forces`' path, so both share 
 implementation of the aerodynamics.  The result types live in
 :mod:`birdsim.physics.cycle_result`.
 
-Forces follow DESIGN.md's "which force": the histories are those of ONE wing (the
+Forces follow docs/design.md's "which force": the histories are those of ONE wing (the
 right) in seed earth axes; ``mean`` adds the body drag to Fx (the dissertation's
 flapcost force); ``whole_bird_mean`` is two mirrored wings plus the body.
 """

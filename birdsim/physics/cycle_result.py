@@ -2,7 +2,7 @@
 right wing), :class:`MeanForces` and :class:`PanelMeans` (what the fused kernel
 returns), and the cycle mean.  Built by :func:`birdsim.physics.cycle.evaluate_cycle`.
 
-Forces follow DESIGN.md's "which force": the histories are those of ONE wing (the
+Forces follow docs/design.md's "which force": the histories are those of ONE wing (the
 right) in seed earth axes; ``mean`` adds the body drag (X and, when climbing, Z) to the
 wing's mean; ``whole_bird_mean`` is two mirrored wings plus the body.
 """

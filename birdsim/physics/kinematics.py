@@ -1,7 +1,7 @@
 """The five kinematic wing models (base, m1, m2, m3, m4): parameters, joints and the
 exact control-point kinematics.
 
-A model is a set of named wingbeat parameters (DESIGN.md's public names) and, per
+A model is a set of named wingbeat parameters (docs/design.md's public names) and, per
 wing panel, a *chain* from the body to the panel frame: hinge joints (Table 2
 rotations, applied in chain order to go from body to panel axes), slide joints and
 fixed offsets.  Each joint follows a sinusoid ``q = amp sin(omega t + phase) + bias``
@@ -20,7 +20,7 @@ wrist_twist hinge  y      -k Theta_f cos(wt), k = 0.25     m4 (hand only)
 ========  =======  =====  ===============================  =====================
 
 Positions and velocities of points on a panel come from one inward pass along the
-chain (exact derivative of the rotation chain; DESIGN.md).  The same chain gives the
+chain (exact derivative of the rotation chain; docs/design.md).  The same chain gives the
 MuJoCo joint layout, so the simulator and this module cannot disagree on geometry.
 """
 

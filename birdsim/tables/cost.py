@@ -1,4 +1,4 @@
-"""The cost of a wingbeat (DESIGN.md sec. 2, dissertation secs 3.3 and 4.1).
+"""The cost of a wingbeat (docs/design.md sec. 2, dissertation secs 3.3 and 4.1).
 
 ``cost = w_x |Fx - Fx_d| + w_z |Fz - Fz_d| + w_p |P|``  (the appendix's ``flapcost``)
 ``     + w_o * pitch``                  only for stroke-plane models (m3, m4) at V = 0:
@@ -35,7 +35,7 @@ FRACTION_NAMES = ("force_x", "force_z", "power", "other")
 
 @dataclass(frozen=True)
 class CostWeights:
-    """Weights of the cost terms.  Defaults: DESIGN.md's ``1, 1, 0.5``; a token
+    """Weights of the cost terms.  Defaults: docs/design.md's ``1, 1, 0.5``; a token
     orientation weight of 0.01 per radian of body pitch (small against the force
     weights, so it only breaks the pitch / stroke-plane degeneracy at V = 0); no
     distance cost (``distance`` is the nu of eq. 93; the dissertation tried 0.2)."""

@@ -59,7 +59,7 @@ class Grid:
 
     @classmethod
     def default(cls, size: int = 11) -> "Grid":
-        """DESIGN.md's default grid: Fx in [-0.5, 0.5], Fz in [-0.5, 0], V in [0, 1]."""
+        """docs/design.md's default grid: Fx in [-0.5, 0.5], Fz in [-0.5, 0], V in [0, 1]."""
         return cls.parse("", size)
 
     @classmethod
