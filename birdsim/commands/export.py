@@ -108,7 +108,9 @@ def run(args: argparse.Namespace) -> int:
             raise BirdsimError("--gust/--open-loop need free flight; allowed: omit them with --kinematic")
         manoeuvre = get_manoeuvre(args.source)
         model = get_model(args.model or "m4").name
-        table_path = Path(args.table) if args.table else Path("tables") / f"{model}.npz"
+        from birdsim.tables.shipped import table_folder
+
+        table_path = Path(args.table) if args.table else table_folder() / f"{model}.npz"
         table = _load_table(table_path, model, explicit=bool(args.table))
         bird = bird_from_args(args) if (args.bird or args.set) else None
         if bird is not None:
