@@ -1,0 +1,106 @@
+"""Free flight with a climb axis (issue 11, item 3): a table with a climb axis is read at
+the bird's climb rate directly (birdsim.flight.controller), the body drag on both sides
+of the demand follows the climb (birdsim.flight.demand), and the presets track at least
+as well as with the level table (docs/flight.md, "Climb axis")."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from birdsim.flight.controller import V_CLIP_TOLERANCE, Controller, gains_for
+from birdsim.flight.demand import body_drag_earth, demand_from_acceleration
+from birdsim.physics.bird import Bird
+from birdsim.physics.kinematics import MODELS
+from birdsim.tables.lookup import LookupTable
+
+BIRD = Bird(mass=30.0, gravity=0.012)
+
+
+def affine_table(climb: bool = True, miss: float = 0.0) -> LookupTable:
+    """An m3 table whose parameters are affine in (Fx, Fz, V, climb) (multilinear
+    interpolation is exact for them) and whose achieved force is the demand + ``miss``."""
+    axes = {
+        "Fx": np.linspace(-0.2, 0.3, 6),
+        "Fz": np.linspace(-0.4, 0.0, 5),
+        "V": np.linspace(0.0, 0.8, 5),
+    }
+    if climb:
+        axes["climb"] = np.linspace(-0.2, 0.2, 5)
+    grids = np.meshgrid(*axes.values(), indexing="ij")
+    fx, fz, v = grids[:3]
+    vc = grids[3] if climb else np.zeros_like(fx)
+    params = np.stack(
+        [0.5 + fx + 0.2 * fz + 0.1 * v + 0.8 * vc, 1.0 + 0.5 * fz, 0.3 + 0.1 * v, 0.1 + 0.2 * vc],
+        axis=-1,
+    )
+    shape = fx.shape
+    achieved = np.stack([fx + miss, fz, np.zeros(shape)], axis=-1)
+    return LookupTable(
+        model="m3",
+        bird=Bird(),
+        param_names=MODELS["m3"].param_names,
+        axes=axes,
+        params=params,
+        cost=np.zeros(shape),
+        cost_fractions=np.zeros(shape + (4,)),
+        achieved=achieved,
+        status_code=np.zeros(shape, dtype=np.uint8),
+        evaluations=np.zeros(shape, dtype=np.int64),
+    )
+
+
+def expected_params(fx: float, fz: float, v: float, vc: float) -> np.ndarray:
+    return np.array(
+        [0.5 + fx + 0.2 * fz + 0.1 * v + 0.8 * vc, 1.0 + 0.5 * fz, 0.3 + 0.1 * v, 0.1 + 0.2 * vc]
+    )
+
+
+def test_climb_table_demand_carries_the_climbing_drag():
+    """Steady climb (a = 0): the whole bird's aerodynamic force is the weight's opposite,
+    F_whole = 2 F_wing + D, and a table that climbs carries D itself, so
+    F_table = (F_whole + D) / 2 in both components; at climb 0 it is the level demand."""
+    vx, vz, pitch = 0.4, 0.1, 0.3
+    fx, fz = demand_from_acceleration(0.0, 0.0, vx, vz, BIRD, pitch, table_climb=True)
+    dx, dz = body_drag_earth(BIRD, vx, vz, pitch)
+    w = BIRD.mass * BIRD.gravity
+    assert dz > 0 and dx < 0  # climbing, the body is pushed back and down
+    assert math.isclose(fx, 0.5 * dx, rel_tol=1e-12)
+    assert math.isclose(fz, 0.5 * (-w + dz), rel_tol=1e-12)
+    level = demand_from_acceleration(0.01, -0.002, vx, 0.0, BIRD, pitch)
+    same = demand_from_acceleration(0.01, -0.002, vx, 0.0, BIRD, pitch, table_climb=True)
+    assert np.array_equal(level, same)
+
+
+def test_climb_table_is_read_at_the_climb_rate_without_a_turn():
+    ctl = Controller(affine_table(), BIRD, gains_for(BIRD))
+    assert ctl.has_climb
+    ax, az, vx, vz, pitch = 0.001, 0.0005, 0.35, -0.08, 0.2
+    cmd = ctl.lookup(ax, az, vx, vz, pitch)
+    fx, fz = demand_from_acceleration(ax, az, vx, vz, BIRD, pitch, table_climb=True)
+    assert (cmd.Fx, cmd.Fz, cmd.V, cmd.climb) == (float(fx), float(fz), vx, vz)
+    # the parameters are the table's at (Fx, Fz, V, climb): no path angle added to the pitch
+    np.testing.assert_allclose(cmd.params, expected_params(fx, fz, vx, vz), atol=1e-12)
+    assert not cmd.saturated
+    # the level reading of the same state turns the table and pitches the body by gamma
+    level = Controller(affine_table(climb=False), BIRD, gains_for(BIRD)).lookup(
+        ax, az, vx, vz, pitch
+    )
+    assert level.climb == 0.0 and abs(level.V - math.hypot(vx, vz)) < 1e-12
+
+
+def test_climb_outside_the_axis_saturates_and_a_miss_is_seen_through_the_same_interpolation():
+    ctl = Controller(affine_table(), BIRD, gains_for(BIRD))
+    inside = ctl.lookup(0.0, 0.0, 0.4, 0.2 + 0.9 * V_CLIP_TOLERANCE, 0.0)  # clipped a little
+    assert not inside.saturated and inside.climb == 0.2
+    outside = ctl.lookup(0.0, 0.0, 0.4, 0.2 + 1.1 * V_CLIP_TOLERANCE, 0.0)
+    assert outside.saturated and outside.climb == 0.2
+    # achieved force 0.011 off the demand everywhere: more than the tolerance 0.01
+    missing = Controller(affine_table(miss=0.011), BIRD, gains_for(BIRD))
+    assert missing.lookup(0.0, 0.0, 0.4, 0.05, 0.0).saturated
+    close = Controller(affine_table(miss=0.009), BIRD, gains_for(BIRD))
+    assert not close.lookup(0.0, 0.0, 0.4, 0.05, 0.0).saturated
+    with pytest.raises(Exception, match="climb=nan"):
+        ctl.lookup_table_force(0.0, -0.18, 0.4, climb=float("nan"))
