@@ -173,11 +173,17 @@ def test_take_off_and_landing_with_and_without_the_climb_axis():
             out[table, name] = (_rms(err), float(err.max()))
             if name == "landing":
                 info = summary(
-                    {**a, "omega": np.array(1.0), "model": np.array("m3"), "bird": np.array('name = "seed"\n')}
+                    {
+                        **a,
+                        "omega": np.array(1.0),
+                        "model": np.array("m3"),
+                        "bird": np.array('name = "seed"\n'),
+                    }
                 )
                 assert err[-1] <= 0.02 and info["final_mean_speed"] <= 0.005 * CRUISE_SPEED
         if table == CLIMBING:
-            assert np.abs(a["climb_demand"]).max() > 0.1  # the landing's descent is read at its climb rate
+            # the landing's descent is read at its climb rate
+            assert np.abs(a["climb_demand"]).max() > 0.1
     for name, slack in (("take-off", 1.02), ("landing", 1.06)):
         climbing, level = out[CLIMBING, name], out[LEVEL, name]
         assert climbing[0] < 0.1 and level[0] < 0.1

@@ -288,9 +288,7 @@ class Controller:
             or abs(clipped.get("climb", 0.0) - used.get("climb", 0.0)) > V_CLIP_TOLERANCE
         )
         extra = {"climb": clipped["climb"]} if self.has_climb else {}
-        raw = self.table.lookup_many(
-            clipped["Fx"], clipped["Fz"], clipped["V"], clip=True, **extra
-        )
+        raw = self.table.lookup_many(clipped["Fx"], clipped["Fz"], clipped["V"], clip=True, **extra)
         params = np.array([float(raw[n]) for n in self.names])
         if "achieved_Fx" in raw:  # the cells' achieved forces, interpolated like the parameters
             miss = max(
