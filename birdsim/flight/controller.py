@@ -19,6 +19,11 @@ acts on wingbeat-averaged quantities.  Per update (``control_per_beat`` times a 
 5. lookup at the estimated airspeed -> target wingbeat parameters (the schedule smooths
    them and keeps the phase continuous).
 
+Climbing flight: a table with a climb axis (``table.has_climb``) is read at the bird's
+estimated climb rate (the wingbeat-mean vertical speed relative to the air) directly;
+a level table is read along the air path, turned by the flight-path angle (see
+:meth:`Controller.lookup`).
+
 Gains (:func:`gains_for`): one natural frequency ``omega_n = omega / (2 pi N)`` for a
 time constant of N wingbeats, a triple pole at ``-omega_n``.  ``open_loop`` keeps the
 feed-forward (a_ref, v_ref) only.
@@ -44,7 +49,8 @@ REACH_TOLERANCE = 0.01
 #: Forward airspeed (semispan omega) above which the table is turned into the air path's
 #: direction in full (see Controller.lookup); below, the turn fades out quadratically.
 CLIMB_SPEED = 0.2
-#: A lookup airspeed clipped by more than this (semispan omega) counts as saturated.
+#: A lookup airspeed (or climb rate) clipped by more than this (semispan omega) counts
+#: as saturated.
 V_CLIP_TOLERANCE = 0.05
 
 
@@ -97,6 +103,7 @@ class Command:
     params: np.ndarray
     saturated: bool
     a_cmd: tuple[float, float]
+    climb: float = 0.0  # the table's climb (0 for a level table)
 
 
 ToTable = Callable[..., tuple[float, float]]
@@ -151,7 +158,8 @@ class Controller:
         bird: the REDUCED bird (mass ratio, gravity in semispan omega^2).
         gains: feedback gains; ignored when ``open_loop``.
         to_table: ``(ax_up, az_up, vx, vz, bird, pitch) -> (Fx_table, Fz_table)``
-            (default birdsim.flight.demand.demand_from_acceleration).
+            (default birdsim.flight.demand.demand_from_acceleration). With a climb
+            table it is called with ``table_climb=True`` as well when it is the default.
     """
 
     def __init__(
@@ -172,8 +180,11 @@ class Controller:
         self.to_table = to_table
         self.names = tuple(table.param_names)
         axes = table.axes
-        self.lo = {k: float(np.min(axes[k])) for k in ("Fx", "Fz", "V")}
-        self.hi = {k: float(np.max(axes[k])) for k in ("Fx", "Fz", "V")}
+        #: the table has a climb axis: the feed-forward reads it at the bird's climb rate
+        self.has_climb = bool(getattr(table, "has_climb", False))
+        keys = ("Fx", "Fz", "V", "climb") if self.has_climb else ("Fx", "Fz", "V")
+        self.lo = {k: float(np.min(axes[k])) for k in keys}
+        self.hi = {k: float(np.max(axes[k])) for k in keys}
 
     def command(
         self,
@@ -208,7 +219,14 @@ class Controller:
         the airspeed, and gamma is added to the table's pitch.  Below a forward airspeed
         of :data:`CLIMB_SPEED` the turn fades out quadratically (none at hover, none when
         flying backwards through the air).
+
+        A table with a climb axis was built for climbing flight: it is read at the
+        horizontal airspeed ``vx_air`` and the climb rate ``vz_air`` directly, with the
+        climbing body drag on both sides (:func:`demand_from_acceleration`,
+        ``table_climb=True``) and no turn.
         """
+        if self.has_climb:
+            return self._lookup_climbing(ax, az, vx_air, vz_air, pitch)
         m, grav = self.bird.mass, self.bird.gravity
         speed = math.hypot(vx_air, vz_air)
         gamma = math.atan2(vz_air, vx_air) if speed > 0 else 0.0
@@ -225,22 +243,52 @@ class Controller:
             cmd.params[self.names.index("pitch")] += gamma
         return cmd
 
-    def lookup_table_force(
-        self, fx: float, fz: float, v_air: float, a_cmd: tuple[float, float] = (0.0, 0.0)
+    def _lookup_climbing(
+        self, ax: float, az: float, vx_air: float, vz_air: float, pitch: float
     ) -> Command:
-        """The table's wingbeat for a table-force demand (clipped; saturated flag)."""
-        if not (math.isfinite(fx) and math.isfinite(fz) and math.isfinite(v_air)):
+        """:meth:`lookup` for a table with a climb axis: read at (vx_air, climb = vz_air)."""
+        to_table = self.to_table
+        from birdsim.flight.demand import demand_from_acceleration
+
+        if to_table is demand_from_acceleration:
+            fx, fz = to_table(ax, az, vx_air, vz_air, self.bird, pitch, table_climb=True)
+        else:
+            fx, fz = to_table(ax, az, vx_air, vz_air, self.bird, pitch)
+        return self.lookup_table_force(float(fx), float(fz), vx_air, (ax, az), climb=vz_air)
+
+    def lookup_table_force(
+        self,
+        fx: float,
+        fz: float,
+        v_air: float,
+        a_cmd: tuple[float, float] = (0.0, 0.0),
+        *,
+        climb: float = 0.0,
+    ) -> Command:
+        """The table's wingbeat for a table-force demand (clipped; saturated flag).
+
+        ``climb`` (vertical airspeed, up) is used only by a table with a climb axis; it
+        is clipped to the axis and counts as saturated when clipped by more than
+        :data:`V_CLIP_TOLERANCE`, like V. The saturation test interpolates the achieved
+        force at the same (Fx, Fz, V[, climb]) as the parameters.
+        """
+        if not all(math.isfinite(v) for v in (fx, fz, v_air, climb)):
             raise BirdsimError(
-                f"non-finite demand Fx={fx}, Fz={fz}, V={v_air}; allowed: finite path states"
+                f"non-finite demand Fx={fx}, Fz={fz}, V={v_air}, climb={climb}; "
+                "allowed: finite path states"
             )
         used = {"Fx": fx, "Fz": fz, "V": v_air}
+        if self.has_climb:
+            used["climb"] = climb
         clipped = {k: min(max(v, self.lo[k]), self.hi[k]) for k, v in used.items()}
         saturated = (
             abs(clipped["Fx"] - fx) > 1e-9
             or abs(clipped["Fz"] - fz) > 1e-9
             or abs(clipped["V"] - v_air) > V_CLIP_TOLERANCE
+            or abs(clipped.get("climb", 0.0) - used.get("climb", 0.0)) > V_CLIP_TOLERANCE
         )
-        raw = self.table.lookup_many(clipped["Fx"], clipped["Fz"], clipped["V"], clip=True)
+        extra = {"climb": clipped["climb"]} if self.has_climb else {}
+        raw = self.table.lookup_many(clipped["Fx"], clipped["Fz"], clipped["V"], clip=True, **extra)
         params = np.array([float(raw[n]) for n in self.names])
         if "achieved_Fx" in raw:  # the cells' achieved forces, interpolated like the parameters
             miss = max(
@@ -248,7 +296,7 @@ class Controller:
                 abs(float(raw["achieved_Fz"]) - clipped["Fz"]),
             )
             saturated = saturated or miss > REACH_TOLERANCE
-        return Command(fx, fz, v_air, params, bool(saturated), a_cmd)
+        return Command(fx, fz, v_air, params, bool(saturated), a_cmd, clipped.get("climb", 0.0))
 
 
 __all__ = ["Command", "Controller", "ErrorWindow", "Gains", "TIME_CONSTANT_BEATS", "gains_for"]

@@ -58,7 +58,7 @@ def body_drag_earth(bird: Bird, V: Any, climb: Any, pitch: Any) -> tuple[np.ndar
 
 
 def demand_from_acceleration(
-    ax_up: Any, az_up: Any, vx: Any, vz: Any, bird: Bird, pitch: Any
+    ax_up: Any, az_up: Any, vx: Any, vz: Any, bird: Bird, pitch: Any, *, table_climb: bool = False
 ) -> tuple[np.ndarray, np.ndarray]:
     """The table force (one wing + body drag, seed axes) that gives the bird an acceleration.
 
@@ -70,6 +70,9 @@ def demand_from_acceleration(
         bird: the bird; reduced here (:func:`reduced_bird`), so the SI bird and its
             reduced bird give the same answer. Its ``mass`` and ``gravity`` are used.
         pitch: body pitch for the body drag [rad] (the table's, see :func:`path_demands`).
+        table_climb: the table is read at climb ``vz`` (a table with a climb axis): its
+            cycles carry the climbing body drag ``D``, so ``F_table = (F_whole + D) / 2``
+            in both components. False: a level table (``D_table`` at climb 0).
 
     Returns:
         (Fx_table, Fz_table) in table force units ``rho omega^2 s^3 c``; Fz < 0 is up.
@@ -80,8 +83,10 @@ def demand_from_acceleration(
     fx_whole = rb.mass * ax  # seed X = world x
     fz_whole = -rb.mass * (az + rb.gravity)  # seed Z = -world z; gravity pulls down
     dx, dz = body_drag_earth(rb, vx, vz, pitch)
-    dx_table, _ = body_drag_earth(rb, vx, 0.0, pitch)  # the table's cycles fly level
     wing_x, wing_z = 0.5 * (fx_whole - dx), 0.5 * (fz_whole - dz)
+    if table_climb:  # the table's cycles climb at vz and carry the same drag
+        return wing_x + dx, wing_z + dz
+    dx_table, _ = body_drag_earth(rb, vx, 0.0, pitch)  # the table's cycles fly level
     return wing_x + dx_table, wing_z
 
 

@@ -177,7 +177,8 @@ def fly(
         trim: start on the periodic orbit of the first wingbeat (see :func:`_trim`).
     Returns:
         FlightResult with arrays t, x, y, z, vx, vz, x_ref, z_ref, pitch, <params>,
-        Fx_demand, Fz_demand, V_air, saturated, pitch_moment, power, force_x, force_z,
+        Fx_demand, Fz_demand, climb_demand (the table's climb; 0 for a level table),
+        V_air, saturated, pitch_moment, power, force_x, force_z,
         qpos, qvel (reduced units).
     Raises:
         BirdsimError: non-finite demands, a diverging simulation.
@@ -220,6 +221,7 @@ def fly(
         for k in (
             "Fx_demand",
             "Fz_demand",
+            "climb_demand",
             "V_air",
             "saturated",
             "x_ref",
@@ -299,6 +301,7 @@ def fly(
             rows["z_ref"].extend(refs["z"].tolist())
             rows["Fx_demand"].extend([cmd.Fx] * n_new)
             rows["Fz_demand"].extend([cmd.Fz] * n_new)
+            rows["climb_demand"].extend([cmd.climb] * n_new)
             rows["saturated"].extend([cmd.saturated] * n_new)
             if progress is not None:
                 progress((k + 1) / per_beat_ctl)
