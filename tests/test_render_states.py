@@ -95,6 +95,11 @@ def test_playback_adapter_draws_what_the_playback_scene_draws(tmp_path):
     states = states_from_playback(pb, o.trail_substeps)
     with Scene(pb, o) as a, Scene(states, o) as b:
         assert a.frames == b.frames == 5
-        np.testing.assert_array_equal(a.rgb(3), b.rgb(3))
+        ra, rb = a.rgb(3), b.rgb(3)
+        # equal but for where two translucent pathline segments cross: MuJoCo depth-sorts
+        # translucent geoms and equal depths may blend in either order (seen once under
+        # load: 21 of 61440 values); anything drawn differently changes far more
+        differ = np.any(ra != rb, axis=-1)
+        assert differ.mean() <= 1e-3, f"{differ.sum()} pixels differ"
     res = render_states(states, tmp_path / "x.mp4", o)
     assert video_info(res.path)["frames"] == 5 == res.frames
