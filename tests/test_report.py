@@ -191,4 +191,4 @@ def test_full_report_builds(tmp_path: Path) -> None:
     sections = report.build_report(tmp_path / "report", quick=False, progress=False)
     assert not [s.error for s in sections if s.error]
     files = [e.file for s in sections for e in s.entries]
-    assert len(files) == 41 and all((tmp_path / "report" / f).stat().st_size > 20_000 for f in files)
+    assert len(files) == 42 and all((tmp_path / "report" / f).stat().st_size > 20_000 for f in files)  # 41 + smoothness
