@@ -164,7 +164,7 @@ def run(args: argparse.Namespace) -> int:
         total=round(beats, 3),
         desc=f"fly {reference.name}",
         unit="beat",
-        disable=args.quiet or args.json,
+        disable=True if (args.quiet or args.json) else None,  # None: only on a terminal
         file=sys.stderr,
     )
 

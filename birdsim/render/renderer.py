@@ -67,7 +67,7 @@ def render_states(
 
     render_s = 0.0
     with Scene(states, options) as scene, mp4_writer(out, options.width, options.height, options.fps, crf=options.crf, preset=options.preset) as writer:
-        for i in tqdm(range(scene.frames), desc=f"render {states.title}".rstrip(), unit="frame", disable=not options.progress, file=log):
+        for i in tqdm(range(scene.frames), desc=f"render {states.title}".rstrip(), unit="frame", disable=None if options.progress else True, file=log):
             t0 = time.perf_counter()
             scene.update(i)
             img = scene.renderer.render()

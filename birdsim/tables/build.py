@@ -110,7 +110,7 @@ def build_table(
         from tqdm import tqdm
 
         # the bar counts cells (each continuation pass solves every cell once: a pass is 1/passes of a cell)
-        bar = tqdm(total=ncells, unit="cell", desc=f"tables {cfg.model}", leave=False, bar_format="{l_bar}{bar}| {n:.0f}/{total} cells [{elapsed}<{remaining}]")
+        bar = tqdm(total=ncells, unit="cell", desc=f"tables {cfg.model}", leave=False, disable=None, bar_format="{l_bar}{bar}| {n:.0f}/{total} cells [{elapsed}<{remaining}]")
     tick = (lambda k: bar.update(k / passes)) if bar is not None else (lambda k: None)
     own = executor is None
     if own:

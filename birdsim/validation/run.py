@@ -109,7 +109,7 @@ def validate(
     if progress:
         from tqdm import tqdm
 
-        bar = tqdm(total=len(speeds), unit="speed", desc=f"validate {model}", leave=False)
+        bar = tqdm(total=len(speeds), unit="speed", desc=f"validate {model}", leave=False, disable=None)
     try:
         sweep = trim_sweep(model, bird, speeds, extra_starts=tab.starts if tab else None, progress=bar)
     finally:
