@@ -39,6 +39,7 @@ from typing import Any, Protocol
 import numpy as np
 
 from birdsim.errors import BirdsimError
+from birdsim.flight.demand import CLIMB_SPEED, air_path_angle  # one air-path rule (CLIMB_SPEED re-exported)
 from birdsim.physics.bird import Bird
 
 #: Wingbeats per closed-loop time constant 1 / omega_n (see gains_for and docs/flight.md).
@@ -46,9 +47,6 @@ TIME_CONSTANT_BEATS = 2.0
 #: A demand counts as reachable when the table's interpolated achieved force is within
 #: this of it (table force units; the tables' own "ok" tolerance).
 REACH_TOLERANCE = 0.01
-#: Forward airspeed (semispan omega) above which the table is turned into the air path's
-#: direction in full (see Controller.lookup); below, the turn fades out quadratically.
-CLIMB_SPEED = 0.2
 #: A lookup airspeed (or climb rate) clipped by more than this (semispan omega) counts
 #: as saturated.
 V_CLIP_TOLERANCE = 0.05
@@ -228,11 +226,7 @@ class Controller:
         if self.has_climb:
             return self._lookup_climbing(ax, az, vx_air, vz_air, pitch)
         m, grav = self.bird.mass, self.bird.gravity
-        speed = math.hypot(vx_air, vz_air)
-        gamma = math.atan2(vz_air, vx_air) if speed > 0 else 0.0
-        # fade the turn out with the forward airspeed: hovering up or down is not level
-        # flight turned by 90 degrees as far as the table's reach is concerned
-        gamma *= min(1.0, (max(vx_air, 0.0) / CLIMB_SPEED) ** 2)
+        gamma = float(air_path_angle(vx_air, vz_air))  # faded below CLIMB_SPEED of forward airspeed
         f_x, f_z = m * ax, m * (az + grav)  # aerodynamic force needed, world
         c, s = math.cos(gamma), math.sin(gamma)
         w_x, w_z = c * f_x + s * f_z, -s * f_x + c * f_z  # in the air-path frame

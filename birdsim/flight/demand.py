@@ -96,6 +96,17 @@ def demand_from_acceleration(
 CLIMB_SPEED = 0.2
 
 
+def air_path_angle(vx: Any, vz: Any, climb_speed: float = CLIMB_SPEED) -> Any:
+    """The angle [rad] by which a level table is turned into the air path: the flight-path
+    angle ``atan2(vz, vx)`` faded out quadratically below a *forward* airspeed of
+    ``climb_speed`` (none at hover, none when flying backwards through the air: hovering up
+    or down is not level flight turned by 90 degrees as far as the table's reach goes).
+    ``vx``, ``vz``: velocity relative to the air [omega s], floats or arrays."""
+    vx, vz = np.asarray(vx, dtype=float), np.asarray(vz, dtype=float)
+    gamma = np.where(np.hypot(vx, vz) > 0, np.arctan2(vz, vx), 0.0)
+    return gamma * np.minimum(1.0, (np.maximum(vx, 0.0) / climb_speed) ** 2)
+
+
 def air_path_demand(
     ax_up: Any,
     az_up: Any,
@@ -112,8 +123,8 @@ def air_path_demand(
     ``gamma = atan2(vz, vx)`` is level flight turned by gamma: the wings see the same flow
     when the body pitch is the table's plus gamma. So the needed aerodynamic force
     ``m (a - g)`` is turned into the air-path frame and looked up at the airspeed
-    ``hypot(vx, vz)`` (gamma faded by ``min(1, (speed / climb_speed)^2)``; no turn when
-    ``vx < 0``). In level flight this is :func:`demand_from_acceleration` exactly.
+    ``hypot(vx, vz)`` (gamma from :func:`air_path_angle`, the rule the controller flies).
+    In level flight this is :func:`demand_from_acceleration` exactly.
 
     Args (floats, or arrays that broadcast):
         ax_up, az_up: acceleration [omega^2 s], x forward, z up.
@@ -133,9 +144,7 @@ def air_path_demand(
     scalar = all(np.ndim(a) == 0 for a in (ax_up, az_up, vx, vz, pitch))
     ax, az, vx, vz, pitch = (np.asarray(a, dtype=float) for a in (ax_up, az_up, vx, vz, pitch))
     speed = np.hypot(vx, vz)
-    gamma = np.where(speed > 0, np.arctan2(vz, vx), 0.0)
-    gamma = gamma * np.minimum(1.0, (speed / climb_speed) ** 2)
-    gamma = np.where(vx < 0, 0.0, gamma)
+    gamma = air_path_angle(vx, vz, climb_speed)
     f_x, f_z = m * ax, m * (az + grav)  # aerodynamic force needed, world (z up)
     c, s = np.cos(gamma), np.sin(gamma)
     w_x, w_z = c * f_x + s * f_z, -s * f_x + c * f_z  # in the air-path frame
@@ -217,6 +226,7 @@ def path_schedule(path: FlightPath, bird: Bird, table: Any, *, per_beat: int = 4
 
 __all__ = [
     "CLIMB_SPEED",
+    "air_path_angle",
     "air_path_demand",
     "body_drag_earth",
     "demand_from_acceleration",
