@@ -177,7 +177,7 @@ class BuildConfig:
 
 #: Source files whose change changes the numbers of a table (relative to birdsim/).
 NUMERICAL_SOURCES = (
-    "physics/*.py", "tables/cost.py", "tables/optimize.py", "tables/point.py", "tables/sweeps.py", "tables/regularise.py", "tables/finish.py",
+    "physics/*.py", "tables/cost.py", "tables/optimize.py", "tables/point.py", "tables/slsqp_driver.py", "tables/sweeps.py", "tables/regularise.py", "tables/finish.py",
 )
 
 

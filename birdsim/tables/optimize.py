@@ -29,6 +29,7 @@ from scipy.stats import qmc
 
 from birdsim.physics.bird import Bird
 from birdsim.tables.cost import CostWeights, forces, forces_and_gradients, other_cost, other_cost_gradient, uses_orientation_cost
+from birdsim.tables import slsqp_driver
 from birdsim.tables.point import PointForces
 from birdsim.errors import BirdsimError, check_finite
 from birdsim.physics.kinematics import KinematicModel, get_model
@@ -344,20 +345,25 @@ def slsqp(
     r0 = val(np.concatenate([x0, np.zeros(K)]))[0]
     z0 = np.concatenate([x0, np.abs(r0)])
     track(z0)
-    bounds = list(zip(lo, hi)) + [(0.0, None)] * K
-    constraints = [{"type": "ineq", "fun": cons, "jac": cons_jac}] if K else []
-    res = so.minimize(
-        fun, z0, jac=jac, method="SLSQP", bounds=bounds, constraints=constraints,
-        options={"maxiter": maxiter, "ftol": ftol}, callback=track,
-    )
-    stalled = res.status == 99  # the callback raised StopIteration
-    x, _ = point(res.x)
+    if K:
+        res = slsqp_driver.minimize(
+            fun, jac, cons, cons_jac, z0, np.concatenate([lo, np.zeros(K)]), np.concatenate([hi, np.full(K, np.inf)]),
+            maxiter=maxiter, ftol=ftol, callback=track,
+        )
+        stalled, success, nit, res_message, res_x = res.stopped, res.success, res.nit, res.message, res.x
+    else:
+        sres = so.minimize(
+            fun, z0, jac=jac, method="SLSQP", bounds=list(zip(lo, hi)), options={"maxiter": maxiter, "ftol": ftol}, callback=track
+        )
+        stalled = sres.status == 99  # the callback raised StopIteration
+        success, nit, res_message, res_x = sres.success, sres.nit, sres.message, sres.x
+    x, _ = point(res_x)
     r, h = val(np.concatenate([x, np.zeros(K)]))
     if float(np.abs(r) @ w + h) > float(best["cost"]):  # type: ignore[arg-type]
         x = np.asarray(best["x"])
         r, h = val(np.concatenate([x, np.zeros(K)]))
-    message = f"no progress in {stall} iterations" if stalled else res.message
-    return _finish(problem, x, "slsqp", res.success and not stalled, message, evals0, res.nit, (r, h))
+    message = f"no progress in {stall} iterations" if stalled else res_message
+    return _finish(problem, x, "slsqp", success and not stalled, message, evals0, nit, (r, h))
 
 
 def multistart(problem: Problem, starts: np.ndarray, **kwargs: object) -> Solution:
