@@ -10,6 +10,7 @@ from birdsim.physics import kernel
 from birdsim.physics.aero import RoboflyPolar
 from birdsim.tables.cost import forces, forces_and_gradients
 from birdsim.tables.optimize import ForceProblem, slsqp
+from birdsim.tables import point
 from birdsim.tables.point import PointForces
 
 BIRDS = {
@@ -56,7 +57,13 @@ def test_refused_where_it_cannot_serve(monkeypatch):
     # joint motions that are not affine in the parameters (here: wrong derivatives)
     damp, dphase, dbias = kernel.joint_derivatives(m, Bird())
     monkeypatch.setattr(kernel, "joint_derivatives", lambda *a: (1.5 * damp + 0.1, dphase, dbias))
-    assert PointForces.create(m, Bird(), 0.5, 0.0, 32) is None
+    point._joint_map.cache_clear()
+    point._affine.cache_clear()
+    try:
+        assert PointForces.create(m, Bird(), 0.5, 0.0, 32) is None
+    finally:
+        point._joint_map.cache_clear()
+        point._affine.cache_clear()
 
 
 def test_slsqp_takes_the_same_path_with_and_without_it(monkeypatch):

@@ -17,6 +17,7 @@ model's own ``joint_motion`` when a :class:`PointForces` is made (at random rows
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -28,6 +29,28 @@ from birdsim.physics.kernel_dual import _grad_kernel
 from birdsim.physics.kinematics import KinematicModel
 
 
+_COMPILED = {"ok": False}  # both kernels ran once in this process
+
+
+@functools.lru_cache(maxsize=64)
+def _joint_map(model: KinematicModel, bird: Bird) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(c0 3 x J, D 3 x J x d, const J)``: the joints' (amplitude, phase, bias) of a row
+    ``x`` are ``c0 + D x``; ``const`` marks joints that never move."""
+    a0, p0, b0, const = kernel.joint_coefficients(model, {k: np.zeros(1) for k in model.param_names}, bird)
+    return np.stack([a0[0], p0[0], b0[0]]), np.stack(kernel.joint_derivatives(model, bird)), const
+
+
+@functools.lru_cache(maxsize=64)
+def _affine(model: KinematicModel, bird: Bird) -> bool:
+    """True when :func:`_joint_map` reproduces the model's ``joint_motion`` (at random
+    rows, to 1e-12)."""
+    c0, D, _ = _joint_map(model, bird)
+    lo, hi = model.bounds
+    X = np.random.default_rng(0).uniform(lo, hi, size=(3, lo.size))
+    a, p, b, _ = kernel.joint_coefficients(model, {k: X[:, i] for i, k in enumerate(model.param_names)}, bird)
+    return bool(np.allclose(c0[:, None, :] + np.einsum("qjd,bd->qbj", D, X), np.stack([a, p, b]), rtol=0.0, atol=1e-12))
+
+
 class PointForces:
     """Mean (Fx, Fz, P) of ONE parameter row, and their exact gradients, at a fixed
     speed V and climb (the dissertation's force: right wing + body drag, seed earth
@@ -37,14 +60,12 @@ class PointForces:
         st = kernel.setup(model, bird)
         names = model.param_names
         d = len(names)
-        a0, p0, b0, const = kernel.joint_coefficients(model, {k: np.zeros(1) for k in names}, bird)
-        self.c0 = np.stack([a0[0], p0[0], b0[0]])  # 3 x J
-        damp, dphase, dbias = kernel.joint_derivatives(model, bird)
-        self.D = np.stack([damp, dphase, dbias])  # 3 x J x d
+        self.c0, self.D, const = _joint_map(model, bird)
+        damp, dphase, dbias = self.D
         self.dim, self.ip = d, names.index("pitch")
         phases = np.ascontiguousarray(sample_phases(n, False), dtype=float)
         self.pitch, self.speed, self.climb = np.zeros(1), np.full(1, float(speed)), np.full(1, float(climb))
-        J = a0.shape[1]
+        J = const.size
         self.amp, self.phase, self.bias = np.zeros((1, J)), np.zeros((1, J)), np.zeros((1, J))
         K = len(st.length)
         self.F, self.P, self.JP = np.zeros((1, K, 3)), np.zeros((1, K)), np.zeros((1, 2))
@@ -74,22 +95,17 @@ class PointForces:
     def create(cls, model: KinematicModel, bird: Bird, speed: float, climb: float, n: int) -> PointForces | None:
         """A :class:`PointForces`, or None where the kernel cannot serve it (no JIT, a
         polar it does not know, induced velocity on, or joint motions not affine)."""
-        if not kernel.available() or not kernel.supported(bird) or bird.induced_velocity:
+        if not kernel.available() or not kernel.supported(bird) or bird.induced_velocity or not _affine(model, bird):
             return None
         pf = cls(model, bird, speed, climb, n)
-        try:  # the first call compiles (or loads from the disk cache)
-            pf.values(np.mean(model.bounds, axis=0))
-            pf.gradients(np.mean(model.bounds, axis=0))
-        except Exception as exc:  # noqa: BLE001 - a JIT failure must not stop a build
-            kernel._disable(f"{type(exc).__name__}: {str(exc).splitlines()[0] if str(exc) else ''}")
-            return None
-        rng = np.random.default_rng(0)
-        lo, hi = model.bounds
-        X = rng.uniform(lo, hi, size=(2, pf.dim))
-        a, p, b, _ = kernel.joint_coefficients(model, {k: X[:, i] for i, k in enumerate(model.param_names)}, bird)
-        lean = pf.c0[:, None, :] + np.einsum("qjd,bd->qbj", pf.D, X)
-        if not np.allclose(lean, np.stack([a, p, b]), rtol=0.0, atol=1e-12):
-            return None
+        if not _COMPILED["ok"]:
+            try:  # the first call compiles (or loads from the disk cache)
+                pf.values(np.mean(model.bounds, axis=0))
+                pf.gradients(np.mean(model.bounds, axis=0))
+            except Exception as exc:  # noqa: BLE001 - a JIT failure must not stop a build
+                kernel._disable(f"{type(exc).__name__}: {str(exc).splitlines()[0] if str(exc) else ''}")
+                return None
+            _COMPILED["ok"] = True
         return pf
 
     def _load(self, x: np.ndarray) -> None:
