@@ -8,9 +8,9 @@ import pytest
 from birdsim import Bird, get_model
 from birdsim.physics import kernel
 from birdsim.physics.aero import RoboflyPolar
+from birdsim.tables import point
 from birdsim.tables.cost import forces, forces_and_gradients
 from birdsim.tables.optimize import ForceProblem, slsqp
-from birdsim.tables import point
 from birdsim.tables.point import PointForces
 
 BIRDS = {

@@ -17,7 +17,9 @@ def _both(monkeypatch, make, x0, **kw):
     return direct, wrapped
 
 
-@pytest.mark.parametrize("model, demand", [("m1", (0.1, -0.3, 0.0)), ("m4", (0.05, -0.2, 0.6)), ("m3", (0.4, -0.5, 0.2))])
+@pytest.mark.parametrize(
+    "model, demand", [("m1", (0.1, -0.3, 0.0)), ("m4", (0.05, -0.2, 0.6)), ("m3", (0.4, -0.5, 0.2))]
+)
 def test_the_same_iterates_as_scipys_wrapper(monkeypatch, model, demand):
     # the same compiled routine fed the same numbers: bitwise the same answer, the same
     # number of iterations and of wingbeats evaluated (m3's demand is unreachable: a
@@ -27,7 +29,11 @@ def test_the_same_iterates_as_scipys_wrapper(monkeypatch, model, demand):
     x0 = list(get_model(model).guess("cruise").values())
     direct, wrapped = _both(monkeypatch, lambda: ForceProblem(model, *demand[:2], demand[2]), x0)
     np.testing.assert_array_equal(direct.x, wrapped.x)
-    assert (direct.iterations, direct.evaluations, direct.cost) == (wrapped.iterations, wrapped.evaluations, wrapped.cost)
+    assert (direct.iterations, direct.evaluations, direct.cost) == (
+        wrapped.iterations,
+        wrapped.evaluations,
+        wrapped.cost,
+    )
     assert direct.converged == wrapped.converged
 
 

@@ -28,7 +28,6 @@ from birdsim.physics.cycle import sample_phases
 from birdsim.physics.kernel_dual import _grad_kernel
 from birdsim.physics.kinematics import KinematicModel
 
-
 _COMPILED = {"ok": False}  # both kernels ran once in this process
 
 
@@ -36,7 +35,9 @@ _COMPILED = {"ok": False}  # both kernels ran once in this process
 def _joint_map(model: KinematicModel, bird: Bird) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """``(c0 3 x J, D 3 x J x d, const J)``: the joints' (amplitude, phase, bias) of a row
     ``x`` are ``c0 + D x``; ``const`` marks joints that never move."""
-    a0, p0, b0, const = kernel.joint_coefficients(model, {k: np.zeros(1) for k in model.param_names}, bird)
+    a0, p0, b0, const = kernel.joint_coefficients(
+        model, {k: np.zeros(1) for k in model.param_names}, bird
+    )
     return np.stack([a0[0], p0[0], b0[0]]), np.stack(kernel.joint_derivatives(model, bird)), const
 
 
@@ -47,8 +48,17 @@ def _affine(model: KinematicModel, bird: Bird) -> bool:
     c0, D, _ = _joint_map(model, bird)
     lo, hi = model.bounds
     X = np.random.default_rng(0).uniform(lo, hi, size=(3, lo.size))
-    a, p, b, _ = kernel.joint_coefficients(model, {k: X[:, i] for i, k in enumerate(model.param_names)}, bird)
-    return bool(np.allclose(c0[:, None, :] + np.einsum("qjd,bd->qbj", D, X), np.stack([a, p, b]), rtol=0.0, atol=1e-12))
+    a, p, b, _ = kernel.joint_coefficients(
+        model, {k: X[:, i] for i, k in enumerate(model.param_names)}, bird
+    )
+    return bool(
+        np.allclose(
+            c0[:, None, :] + np.einsum("qjd,bd->qbj", D, X),
+            np.stack([a, p, b]),
+            rtol=0.0,
+            atol=1e-12,
+        )
+    )
 
 
 class PointForces:
@@ -56,7 +66,9 @@ class PointForces:
     speed V and climb (the dissertation's force: right wing + body drag, seed earth
     axes; P the right wing's mean power).  Make one with :meth:`create`."""
 
-    def __init__(self, model: KinematicModel, bird: Bird, speed: float, climb: float, n: int) -> None:
+    def __init__(
+        self, model: KinematicModel, bird: Bird, speed: float, climb: float, n: int
+    ) -> None:
         st = kernel.setup(model, bird)
         names = model.param_names
         d = len(names)
@@ -64,21 +76,65 @@ class PointForces:
         damp, dphase, dbias = self.D
         self.dim, self.ip = d, names.index("pitch")
         phases = np.ascontiguousarray(sample_phases(n, False), dtype=float)
-        self.pitch, self.speed, self.climb = np.zeros(1), np.full(1, float(speed)), np.full(1, float(climb))
+        self.pitch, self.speed, self.climb = (
+            np.zeros(1),
+            np.full(1, float(speed)),
+            np.full(1, float(climb)),
+        )
         J = const.size
         self.amp, self.phase, self.bias = np.zeros((1, J)), np.zeros((1, J)), np.zeros((1, J))
         K = len(st.length)
         self.F, self.P, self.JP = np.zeros((1, K, 3)), np.zeros((1, K)), np.zeros((1, 2))
         self.out = np.zeros((1, 4, d + 1))
-        geometry = (st.kind, st.joint, st.axis, st.group, st.span, st.length, st.radius, st.area, st.strips, st.polar, st.coeffs)
+        geometry = (
+            st.kind,
+            st.joint,
+            st.axis,
+            st.group,
+            st.span,
+            st.length,
+            st.radius,
+            st.area,
+            st.strips,
+            st.polar,
+            st.coeffs,
+        )
         omega, rho = float(bird.omega), float(bird.rho)
         self._means_args = (
-            self.pitch, self.speed, self.climb, np.zeros((1, 3)), self.amp, self.phase, self.bias, const,
-            phases, kernel._half(phases), omega, rho, *geometry, self.F, self.P, self.JP,
+            self.pitch,
+            self.speed,
+            self.climb,
+            np.zeros((1, 3)),
+            self.amp,
+            self.phase,
+            self.bias,
+            const,
+            phases,
+            kernel._half(phases),
+            omega,
+            rho,
+            *geometry,
+            self.F,
+            self.P,
+            self.JP,
         )
         self._grad_args = (
-            self.pitch, self.speed, self.climb, self.amp, self.phase, self.bias, const, damp, dphase, dbias, self.ip,
-            phases, omega, rho, *geometry, self.out,
+            self.pitch,
+            self.speed,
+            self.climb,
+            self.amp,
+            self.phase,
+            self.bias,
+            const,
+            damp,
+            dphase,
+            dbias,
+            self.ip,
+            phases,
+            omega,
+            rho,
+            *geometry,
+            self.out,
         )
         # body drag (aero.body_drag) as a function of pitch alone: level flight
         # D = (k sin(pitch), 0); climbing D = |sin(pitch - gamma)| (kx, kz)
@@ -92,10 +148,17 @@ class PointForces:
             self.kx, self.kz, self.gamma = -half * v / vt, half * vc / vt, math.atan2(vc, v)
 
     @classmethod
-    def create(cls, model: KinematicModel, bird: Bird, speed: float, climb: float, n: int) -> PointForces | None:
+    def create(
+        cls, model: KinematicModel, bird: Bird, speed: float, climb: float, n: int
+    ) -> PointForces | None:
         """A :class:`PointForces`, or None where the kernel cannot serve it (no JIT, a
         polar it does not know, induced velocity on, or joint motions not affine)."""
-        if not kernel.available() or not kernel.supported(bird) or bird.induced_velocity or not _affine(model, bird):
+        if (
+            not kernel.available()
+            or not kernel.supported(bird)
+            or bird.induced_velocity
+            or not _affine(model, bird)
+        ):
             return None
         pf = cls(model, bird, speed, climb, n)
         if not _COMPILED["ok"]:
@@ -103,7 +166,9 @@ class PointForces:
                 pf.values(np.mean(model.bounds, axis=0))
                 pf.gradients(np.mean(model.bounds, axis=0))
             except Exception as exc:  # noqa: BLE001 - a JIT failure must not stop a build
-                kernel._disable(f"{type(exc).__name__}: {str(exc).splitlines()[0] if str(exc) else ''}")
+                kernel._disable(
+                    f"{type(exc).__name__}: {str(exc).splitlines()[0] if str(exc) else ''}"
+                )
                 return None
             _COMPILED["ok"] = True
         return pf
@@ -125,7 +190,11 @@ class PointForces:
         kernel._means_kernel(0, 1, *self._means_args)
         dx, dz = self._drag(float(x[self.ip]))
         panels = self.F[0].tolist()  # panel sums in the batched path's order
-        return sum(f[0] for f in panels) + dx, sum(f[2] for f in panels) + dz, sum(self.P[0].tolist())
+        return (
+            sum(f[0] for f in panels) + dx,
+            sum(f[2] for f in panels) + dz,
+            sum(self.P[0].tolist()),
+        )
 
     def gradients(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """``(r, J)``: (Fx, Fz, P) of the row ``x`` (3,) and their gradients (3 x d)."""

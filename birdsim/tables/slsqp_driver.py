@@ -80,14 +80,27 @@ def minimize(
             return _direct(fun, jac, cons, cons_jac, z0, lower, upper, maxiter, ftol, callback)
         except _Refused:
             _STATE["direct"] = False
-    bounds = [(a if np.isfinite(a) else None, b if np.isfinite(b) else None) for a, b in zip(lower, upper)]
+    bounds = [
+        (a if np.isfinite(a) else None, b if np.isfinite(b) else None) for a, b in zip(lower, upper)
+    ]
     res = so.minimize(
-        fun, z0, jac=jac, method="SLSQP", bounds=bounds,
+        fun,
+        z0,
+        jac=jac,
+        method="SLSQP",
+        bounds=bounds,
         constraints=[{"type": "ineq", "fun": cons, "jac": cons_jac}],
-        options={"maxiter": maxiter, "ftol": ftol}, callback=callback,
+        options={"maxiter": maxiter, "ftol": ftol},
+        callback=callback,
     )
     stopped = res.status == 99  # the callback raised StopIteration
-    return Result(np.asarray(res.x), bool(res.success) and not stopped, stopped, int(res.nit), str(res.message))
+    return Result(
+        np.asarray(res.x),
+        bool(res.success) and not stopped,
+        stopped,
+        int(res.nit),
+        str(res.message),
+    )
 
 
 class _Refused(Exception):
@@ -101,9 +114,27 @@ def _direct(fun, jac, cons, cons_jac, z0, lower, upper, maxiter, ftol, callback)
     d = np.atleast_1d(np.asarray(cons(x), dtype=float)).copy()
     m = d.size
     state = {
-        "acc": ftol, "alpha": 0.0, "f0": 0.0, "gs": 0.0, "h1": 0.0, "h2": 0.0, "h3": 0.0, "h4": 0.0, "t": 0.0,
-        "t0": 0.0, "tol": 10.0 * ftol, "exact": 0, "inconsistent": 0, "reset": 0, "iter": 0, "itermax": int(maxiter),
-        "line": 0, "m": m, "meq": 0, "mode": 0, "n": n,
+        "acc": ftol,
+        "alpha": 0.0,
+        "f0": 0.0,
+        "gs": 0.0,
+        "h1": 0.0,
+        "h2": 0.0,
+        "h3": 0.0,
+        "h4": 0.0,
+        "t": 0.0,
+        "t0": 0.0,
+        "tol": 10.0 * ftol,
+        "exact": 0,
+        "inconsistent": 0,
+        "reset": 0,
+        "iter": 0,
+        "itermax": int(maxiter),
+        "line": 0,
+        "m": m,
+        "meq": 0,
+        "mode": 0,
+        "n": n,
     }
     indices = np.zeros(max(m + 2 * n + 2, 1), dtype=np.int32)
     buffer = np.zeros(max(n * (n + 1) // 2 + 3 * m * n + 9 * m + 8 * n * n + 35 * n + 28, 1))
@@ -136,5 +167,7 @@ def _direct(fun, jac, cons, cons_jac, z0, lower, upper, maxiter, ftol, callback)
             except StopIteration:
                 return Result(x, False, True, int(state["iter"]), "stopped by the callback")
         if abs(mode) != 1:
-            return Result(x, mode == 0, False, int(state["iter"]), EXIT_MODES.get(mode, f"exit mode {mode}"))
+            return Result(
+                x, mode == 0, False, int(state["iter"]), EXIT_MODES.get(mode, f"exit mode {mode}")
+            )
         previous = state["iter"]
