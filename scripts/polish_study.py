@@ -16,8 +16,11 @@ Columns: ``good`` (the warm start beat the best screen candidate by ``screen_gap
 (the warm start's SLSQP answer), ``warm_miss`` / ``cand_miss`` / ``miss`` (max force
 miss of warm answer / candidate / polished answer), ``dist_max`` (largest parameter
 distance candidate - warm answer, in box widths), ``evaluations`` (of this polish),
-``before_cost`` (best answer before this polish), ``cost`` (after polishing), ``win``.
-A cold cell (no warm start) has empty warm columns.
+``before_cost`` (best answer before this polish), ``cost`` (after polishing), ``win``,
+``sol_dist_max`` (polished answer - warm answer), ``r0_*`` (second candidate: its
+distance to the first candidate and to the first's polished answer, the first's cost -
+warm cost), ``n_cheaper`` / ``n_within`` (screen candidates cheaper than the warm
+answer / than it + ``screen_gap``).  A cold cell (no warm start) has empty warm columns.
 """
 
 from __future__ import annotations
@@ -41,8 +44,8 @@ from birdsim.tables.build import BuildConfig, BuildSettings, Grid, build_table
 COLUMNS = (
     "model", "fx", "fz", "v", "climb", "cold", "good", "rank", "screen_best", "cand_cost", "cand_miss", "warm_cost",
     "warm_miss", "warm_converged", "warm_evaluations", "warm_iterations", "dist_max", "dist_rms", "before_cost", "cost", "miss",
-    "converged", "evaluations", "win", "sol_dist_max",
-) + ("r0_cand_dist", "r0_sol_dist", "r0_cost_minus_warm")
+    "converged", "evaluations", "win", "sol_dist_max", "r0_cand_dist", "r0_sol_dist", "r0_cost_minus_warm", "n_cheaper", "n_within",
+)
 _OUT_DIR: Path | None = None
 _LAST = threading.local()  # the first polish of the cell being solved in this thread
 
@@ -67,11 +70,12 @@ def _probe(*, cfg: Any, prob: Any, demand: tuple, warm: Any, before: Any, rank: 
             warm_converged=warm.converged, warm_evaluations=warm.evaluations, warm_iterations=warm.iterations,
             dist_max=float(dx.max()), dist_rms=float(np.sqrt(np.mean(dx**2))),
             sol_dist_max=float((np.abs(sol.x - warm.x) / span).max()),
+            n_cheaper=int(np.sum(screen_cost < warm.cost)), n_within=int(np.sum(screen_cost < warm.cost + st.screen_gap)),
         )
         if rank == 0:
-            _LAST.first = (candidate.copy(), sol)
-        else:  # the first polish of this cell (same thread: one cell per thread)
-            cand0, sol0 = _LAST.first
+            _LAST.first = (demand, candidate.copy(), sol)
+        elif getattr(_LAST, "first", (None,))[0] == demand:  # this cell's first polish (one cell per thread)
+            _, cand0, sol0 = _LAST.first
             row.update(
                 r0_cand_dist=float((np.abs(candidate - cand0) / span).max()), r0_sol_dist=float((np.abs(candidate - sol0.x) / span).max()),
                 r0_cost_minus_warm=sol0.cost - warm.cost,
