@@ -72,6 +72,7 @@ report: setup
 # and figdata.py wait for a split: formatted, they grow past 400 lines).
 LINT_FILES ?= $(filter-out birdsim/report/plots.py birdsim/report/figdata.py,$(wildcard birdsim/report/*.py)) birdsim/errors.py tests/test_bad_input.py tests/test_claims.py tests/test_common.py
 LINT_FILES += $(addprefix birdsim/flight/,path.py path_file.py presets.py demand.py envelope.py) birdsim/commands/envelope.py birdsim/tables/shipped.py $(addprefix tests/test_,path.py path_file.py presets.py demand.py envelope.py shipped.py)
+LINT_FILES += birdsim/tables/point.py birdsim/tables/slsqp_driver.py tests/test_point.py tests/test_slsqp_driver.py
 lint: setup
 	@test -x $(BIN)/ruff || $(BIN)/python -m pip install -q -e '.[lint]'
 	$(BIN)/ruff check $(LINT_FILES)

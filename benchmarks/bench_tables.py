@@ -1,5 +1,5 @@
-"""Lookup-table build speed: the full 11^3 table per model on all cores, and the two
-batching tricks it relies on, measured side by side.
+"""Lookup-table build speed: the full 11^3 table per model on all cores, and the lean
+one-row path the optimiser relies on against the batched path, side by side.
 
 ``BIRDSIM_BENCH_TABLE_MODELS=base,m4`` limits the models (default: all five).
 """
@@ -10,20 +10,12 @@ import os
 import resource
 import time
 
-import numpy as np
-
-from birdsim.physics.bird import Bird
-from birdsim.tables import sweeps as B
 from birdsim.tables.build import BuildConfig, Grid, build_table, solve_slice
-from birdsim.tables.cost import forces
+from birdsim.tables.point import PointForces
 from birdsim.tables.smoothness import table_smoothness
-from birdsim.physics.kinematics import MODELS, get_model
+from birdsim.physics.kinematics import MODELS
 
-TARGETS = {"base": 10.0, "m4": 60.0}  # seconds, issue 3
-
-
-def _sequential(model, bird, n, jobs):
-    return [job(lambda X, v: forces(model, X, v, bird, n)) for job in jobs]
+TARGETS = {"base": 10.0, "m4": 10.0}  # seconds on 2 cores: issue 3 (base), issue 17 (m4)
 
 
 def _cpu_all() -> float:
@@ -38,38 +30,22 @@ def _cpu(fn) -> float:
     return time.process_time() - t
 
 
-def lockstep_ratio(model: str = "base") -> None:
-    """One V slice (121 cells) with the Fx lines in lockstep vs one cell after another."""
+def point_ratio(model: str = "m4") -> None:
+    """One V slice (121 cells): the optimiser's lean one-row path
+    (:class:`birdsim.tables.point.PointForces`) vs the batched path called with one row
+    (what SLSQP's requests cost before), interleaved, best of two (CPU seconds)."""
     cfg = BuildConfig(model, Grid.default(11))
-    lock = B.run_lockstep
-    times = {"lockstep": [], "sequential": []}
+    create = PointForces.create
+    times: dict[str, list[float]] = {"lean": [], "batched": []}
     try:
         for _ in range(2):  # interleaved, best of two: other jobs share the machine
-            for name, fn in (("lockstep", lock), ("sequential", _sequential)):
-                B.run_lockstep = fn
+            for name, make in (("lean", create), ("batched", lambda *a: None)):
+                PointForces.create = make  # type: ignore[method-assign]
                 times[name].append(_cpu(lambda: solve_slice(cfg, 5)))
     finally:
-        B.run_lockstep = lock
-    a, b = min(times["lockstep"]), min(times["sequential"])
-    print(f"{model} slice V=0.5, 121 cells: lockstep {a:.2f} s CPU, sequential {b:.2f} s CPU -> {b / a:.2f}x")
-
-
-def batched_gradient_ratio(model: str = "m4") -> None:
-    """A central-difference gradient (2d+1 wingbeats): one batched call vs one by one."""
-    m = get_model(model)
-    lo, hi = m.bounds
-    X = np.random.default_rng(0).uniform(lo, hi, (2 * lo.size + 1, lo.size))
-    reps = 100
-    t0 = time.perf_counter()
-    for _ in range(reps):
-        forces(m, X, 0.5, Bird(), 32)
-    t1 = time.perf_counter()
-    for _ in range(reps):
-        for row in X:
-            forces(m, row[None], 0.5, Bird(), 32)
-    t2 = time.perf_counter()
-    one, many = (t1 - t0) / reps, (t2 - t1) / reps
-    print(f"{model} gradient, {len(X)} wingbeats at n=32: batched {1e3 * one:.2f} ms, one by one {1e3 * many:.2f} ms -> {many / one:.1f}x")
+        PointForces.create = create  # type: ignore[method-assign]
+    a, b = min(times["lean"]), min(times["batched"])
+    print(f"{model} slice V=0.5, 121 cells: lean one-row path {a:.2f} s CPU, batched path {b:.2f} s CPU -> {b / a:.2f}x")
 
 
 def full_tables(models: list[str]) -> None:
@@ -92,13 +68,28 @@ def full_tables(models: list[str]) -> None:
         )
 
 
+def climb_table(model: str = "m4", target: float = 90.0) -> None:
+    """The 4-axis table (11^3 x 7 climb rates) on all cores (issue 17: at most 90 s)."""
+    jobs = os.cpu_count() or 1
+    t0, c0 = time.perf_counter(), _cpu_all()
+    t = build_table(BuildConfig(model, Grid.parse("", 11, climb=True)), jobs=jobs)
+    dt, cpu = time.perf_counter() - t0, _cpu_all() - c0
+    c = t.meta["counts"]
+    print(
+        f"{model}: 4-axis table 11^3 x 7 in {dt:.1f} s on {jobs} processes (target < {target:.0f} s: "
+        f"{'met' if dt < target else 'MISSED'}); {cpu:.1f} CPU s; {c['ok']} ok, {c['unreachable']} unreachable, "
+        f"{c['failed']} failed; {t.evaluations.sum() / t.evaluations.size:.0f} wingbeats evaluated per cell"
+    )
+
+
 def main() -> None:
-    batched_gradient_ratio("m4")
-    lockstep_ratio("base")
-    lockstep_ratio("m4")
+    point_ratio("base")
+    point_ratio("m4")
     wanted = os.environ.get("BIRDSIM_BENCH_TABLE_MODELS")
     models = [m.strip() for m in wanted.split(",")] if wanted else list(MODELS)
     full_tables(models)
+    if not wanted or "m4" in models:
+        climb_table("m4")
 
 
 if __name__ == "__main__":

@@ -302,7 +302,9 @@ def template(tmp_path_factory: pytest.TempPathFactory) -> Path:
     )
     (w / "man_negative_v.toml").write_text("[[keyframe]]\nt = 0\nFx = 0\nFz = -0.3\nV = -1\n")
     (w / "man_nan.toml").write_text("[[keyframe]]\nt = 0\nFx = 0\nFz = nan\nV = 0\n")
-    (w / "man_below.toml").write_text("[[keyframe]]\nt = 0\nFx = 0\nFz = -0.2\nV = 0.5\nz = 6\n[[keyframe]]\nt = 3\nFx = 0\nFz = -0.2\nV = 0.5\nz = -1\n")
+    (w / "man_below.toml").write_text(
+        "[[keyframe]]\nt = 0\nFx = 0\nFz = -0.2\nV = 0.5\nz = 6\n[[keyframe]]\nt = 3\nFx = 0\nFz = -0.2\nV = 0.5\nz = -1\n"
+    )
     (w / "man_huge_t.toml").write_text(
         "[[keyframe]]\nt = 0\nFx = 0\nFz = -0.3\nV = 0\n[[keyframe]]\nt = 1e12\nFx = 0\nFz = -0.3\nV = 0\n"
     )

@@ -1,15 +1,13 @@
 """The lean optimiser: exact gradients of the wingbeat problem, gradients only at
-SLSQP's iterates (never at line-search trials), runs without progress ended, and the
-lockstep batcher serving gradients."""
+SLSQP's iterates (never at line-search trials) and runs without progress ended."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from birdsim import Bird, get_model
-from birdsim.tables.cost import CostWeights, forces_and_gradients
-from birdsim.tables.lockstep import run_lockstep
+from birdsim import get_model
+from birdsim.tables.cost import CostWeights
 from birdsim.tables.optimize import FunctionProblem, ForceProblem, slsqp
 
 
@@ -54,19 +52,3 @@ def test_a_run_without_progress_is_ended_at_its_best_point():
     sol = slsqp(prob, [0.9, -0.8], ftol=0.0, maxiter=500, stall=3)
     assert not sol.converged and "no progress in 3 iterations" in sol.message
     assert sol.iterations <= 4 and sol.cost <= 1e-11 * (0.6**2 + 1.1**2)
-
-
-def test_lockstep_gradients_equal_direct_ones():
-    m, bird = get_model("m4"), Bird()
-    rng = np.random.default_rng(1)
-    lo, hi = m.bounds
-    xs = [lo + (hi - lo) * rng.random((1, len(lo))) for _ in range(4)]
-
-    def job(x, climb):
-        return lambda ev: (ev(x, 0.4, climb), ev.gradients(x, 0.4, climb))
-
-    out = run_lockstep(m, bird, 32, [job(x, 0.1 * i) for i, x in enumerate(xs)])
-    for i, (x, (vals, (v2, g))) in enumerate(zip(xs, out)):
-        ref_v, ref_g = forces_and_gradients(m, x, 0.4, bird, 32, 0.1 * i)
-        for a, b in zip((*vals, *v2, *g), (*ref_v, *ref_v, *ref_g)):
-            np.testing.assert_allclose(a, b, rtol=0, atol=1e-14)

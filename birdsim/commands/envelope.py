@@ -18,12 +18,12 @@ from birdsim.physics.units import scales
 from birdsim.tables.lookup import load_table
 from birdsim.tables.shipped import shipped_table
 
-
 #: Whose force the envelope prints (docs/conventions.md, "Which force").
 FORCE_NOTE = (
     "whole bird (2 wings + body drag) unless marked as the table's "
     "(right wing + body drag, the dissertation's flapcost force)"
 )
+
 
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser(

@@ -128,9 +128,7 @@ def _grad_kernel(
                     cq[j, i] = -s * dbias[j, i - 1]
                     sq[j, i] = c * dbias[j, i - 1]
         p = np.zeros((3, D))
-        vs = np.zeros((3, D))
-        vw = np.zeros((3, D))
-        vf = np.zeros((3, D))
+        vf = np.zeros((3, D))  # flapping velocity (both groups: only their sum is needed here)
         v = np.zeros((3, D))
         g = np.zeros((3, D))
         dv = np.zeros((3, D))
@@ -157,8 +155,7 @@ def _grad_kernel(
                 L = length[k]
                 for e in range(strips[k]):
                     p[:, :] = 0.0
-                    vs[:, :] = 0.0
-                    vw[:, :] = 0.0
+                    vf[:, :] = 0.0
                     p[1, 0] = radius[k, e]
                     for il in range(L - 1, -1, -1):
                         kd = kind[k, il]
@@ -174,8 +171,7 @@ def _grad_kernel(
                                 dv[a, i] = qd[j, i]
                         else:
                             _drot(p, a, cq[j], sq[j], -1.0)
-                            _drot(vs, a, cq[j], sq[j], -1.0)
-                            _drot(vw, a, cq[j], sq[j], -1.0)
+                            _drot(vf, a, cq[j], sq[j], -1.0)
                             # dv = qd * (e_a x p)
                             if a == 0:
                                 r1, r2, o1, o2 = 1, 2, 2, 1  # (0, -z, y)
@@ -194,14 +190,11 @@ def _grad_kernel(
                                 else:
                                     dv[r1, i] = sg1 * (w0 * p[o1, i] + qd[j, i] * a1)
                                     dv[r2, i] = sg2 * (w0 * p[o2, i] + qd[j, i] * a2)
-                        grp = vs if group[k, il] == 0 else vw
-                        if True:
-                            for cc in range(3):
-                                for i in range(D):
-                                    grp[cc, i] += dv[cc, i]
+                        for cc in range(3):
+                            for i in range(D):
+                                vf[cc, i] += dv[cc, i]
                     for cc in range(3):
                         for i in range(D):
-                            vf[cc, i] = vs[cc, i] + vw[cc, i]
                             v[cc, i] = A[cc, i] + vf[cc, i]
                     for il in range(L):
                         if kind[k, il] == 1:

@@ -34,9 +34,9 @@ from birdsim.report.fig_costs import fig_landscapes, fig_wrist_activity
 from birdsim.report.fig_cycle import fig_histories, fig_paths, fig_thrust, fig_wrist
 from birdsim.report.fig_sweeps import fig_sweeps
 from birdsim.report.fig_tables import fig_optimisers, fig_tables
-from birdsim.report.smoothness import fig_smoothness
 from birdsim.report.page import render_html
 from birdsim.report.records import FULL, QUICK, SMALL_DEMAND, Claim, Context, Entry, Resolution
+from birdsim.report.smoothness import fig_smoothness
 
 __all__ = [
     "FAMILIES",

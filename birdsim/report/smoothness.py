@@ -7,10 +7,10 @@ from typing import Any
 
 import numpy as np
 
-from birdsim.tables.smoothness import ZIGZAG_RAD, table_smoothness, zigzags
-
 #: The committed tables (repository root / tables).
 from birdsim.report.fig_tables import TABLE_FOLDER  # the repository's tables/
+from birdsim.tables.smoothness import ZIGZAG_RAD, table_smoothness, zigzags
+
 MODELS = ("base", "m1", "m2", "m3", "m4")
 TARGET = 0.02
 
@@ -44,8 +44,19 @@ def smoothness_figure(tables: dict[str, Any]) -> Any:
     axes_names = list(next(iter(stats.values())).per_axis) if stats else []
     width = 0.8 / max(len(axes_names) + 1, 1)
     for k, ax_name in enumerate(axes_names):
-        a.bar(x + k * width, [100 * stats[m].per_axis[ax_name] for m in names], width, label=f"along {ax_name}")
-    a.bar(x + len(axes_names) * width, [100 * stats[m].zigzag_share for m in names], width, color="k", label="all axes")
+        a.bar(
+            x + k * width,
+            [100 * stats[m].per_axis[ax_name] for m in names],
+            width,
+            label=f"along {ax_name}",
+        )
+    a.bar(
+        x + len(axes_names) * width,
+        [100 * stats[m].zigzag_share for m in names],
+        width,
+        color="k",
+        label="all axes",
+    )
     a.axhline(100 * TARGET, ls="--", color="r", lw=1, label="target 2 %")
     a.set_xticks(x + 0.4 - width / 2, names)
     a.set_ylabel("zig-zag share of reachable triples (%)")
@@ -70,7 +81,11 @@ def fig_smoothness(ctx: Any) -> list[Any]:
     from birdsim.report.records import Claim, Entry  # the report's record types
     from birdsim.tables.lookup import load_table
 
-    tables = {m: load_table(TABLE_FOLDER / f"{m}.npz") for m in MODELS if (TABLE_FOLDER / f"{m}.npz").is_file()}
+    tables = {
+        m: load_table(TABLE_FOLDER / f"{m}.npz")
+        for m in MODELS
+        if (TABLE_FOLDER / f"{m}.npz").is_file()
+    }
     if not tables:
         return []
     name = ctx.save(smoothness_figure(tables), "table_smoothness")
@@ -86,9 +101,11 @@ def fig_smoothness(ctx: Any) -> list[Any]:
         Entry(
             name,
             "Smoothness of the lookup tables",
-            "Share of three consecutive reachable cells along an axis where a wingbeat parameter goes out and back "
-            f"by more than {ZIGZAG_RAD} rad (idle-wrist lag skipped), per committed table.",
-            "Sec. 4.1: results 'fit for animation purposes, which essentially suggests smooth results'.",
+            "Share of three consecutive reachable cells along an axis where a wingbeat "
+            f"parameter goes out and back by more than {ZIGZAG_RAD} rad (idle-wrist lag "
+            "skipped), per committed table.",
+            "Sec. 4.1: results 'fit for animation purposes, which essentially suggests smooth "
+            "results'.",
             claims,
         )
     ]

@@ -207,11 +207,15 @@ def _sweep(
     return X, cost, evals, conv
 
 
+#: Cells per task of the regularising pass: small enough to balance the cores.
+SMOOTH_TASK_CELLS = 8
+
+
 def _regularise(
     cfg: BuildConfig, executor: Executor, ckpt: Checkpoints, X: np.ndarray, cost: np.ndarray, evals: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray, dict[str, Any]]:
     """The regularising pass (:mod:`birdsim.tables.regularise`): red-black rounds over
-    the middle cells of zig-zags, one task per Fx index and colour.  Returns the new
+    the middle cells of zig-zags, tasks of a few cells of one colour.  Returns the new
     parameters, the evaluations and a summary for the provenance."""
     model = get_model(cfg.model)
     names, st = model.param_names, cfg.settings
@@ -231,10 +235,12 @@ def _regularise(
             if len(mids) == 0:
                 continue
             worked = True
-            groups = {int(i): mids[mids[:, 0] == i] for i in np.unique(mids[:, 0])}
+            # tasks of at most SMOOTH_TASK_CELLS cells (the cells of one colour are
+            # independent: how they are grouped does not change the result)
+            groups = np.array_split(mids, -(-len(mids) // SMOOTH_TASK_CELLS))
             tasks = {
-                f"smooth_r{r}c{colour}_Fx{i:03d}": (smooth_cells, (cfg, cells, X, ok, best[tuple(cells.T)], D))
-                for i, cells in groups.items()
+                f"smooth_r{r}c{colour}_{k:03d}": (smooth_cells, (cfg, cells, X, ok, best[tuple(cells.T)], D))
+                for k, cells in enumerate(groups)
             }
             done = _run(tasks, executor, ckpt, lambda k: None, 0)
             for name, (fn, args) in tasks.items():

@@ -179,7 +179,9 @@ class BuildConfig:
 
 
 #: Source files whose change changes the numbers of a table (relative to birdsim/).
-NUMERICAL_SOURCES = ("physics/*.py", "tables/cost.py", "tables/optimize.py", "tables/lockstep.py", "tables/sweeps.py", "tables/finish.py")
+NUMERICAL_SOURCES = (
+    "physics/*.py", "tables/cost.py", "tables/optimize.py", "tables/point.py", "tables/slsqp_driver.py", "tables/sweeps.py", "tables/regularise.py", "tables/finish.py",
+)
 
 
 def code_fingerprint() -> str:

@@ -28,7 +28,9 @@ from scipy import optimize as so
 from scipy.stats import qmc
 
 from birdsim.physics.bird import Bird
-from birdsim.tables.cost import CostWeights, forces, forces_and_gradients, other_cost, other_cost_gradient
+from birdsim.tables.cost import CostWeights, forces, forces_and_gradients, other_cost, other_cost_gradient, uses_orientation_cost
+from birdsim.tables import slsqp_driver
+from birdsim.tables.point import PointForces
 from birdsim.errors import BirdsimError, check_finite
 from birdsim.physics.kinematics import KinematicModel, get_model
 
@@ -110,6 +112,11 @@ class Problem:
         self.gradient_evaluations += 1
         return self._parts_and_jacobian(np.asarray(x, dtype=float))
 
+    def point_parts(self, x: np.ndarray) -> tuple[np.ndarray, float]:
+        """``(r (K,), h)`` at one point ``x`` (d,): :meth:`parts` of one row."""
+        R, h = self.parts(x[None])
+        return R[0], float(h[0])
+
     def achieved(self, x: np.ndarray) -> tuple[float, float, float]:
         """Achieved (Fx, Fz, P) for a wingbeat problem; NaN for a plain function."""
         return (float("nan"),) * 3
@@ -160,7 +167,32 @@ class ForceProblem(Problem):
         self.bird = bird or Bird()
         self.previous = None if previous is None else np.asarray(previous, dtype=float)
         self.n = n
-        self.evaluator = evaluator  # (X, speed) -> (Fx, Fz, P); e.g. a lockstep batcher
+        self.evaluator = evaluator  # (X, speed) -> (Fx, Fz, P), replaces the cycle evaluation
+        self._point: PointForces | None | bool = False  # made on first use (None: no lean path)
+        # other_cost of one row: the orientation term is linear in the pitch
+        self._ip = self.model.param_names.index("pitch")
+        orient = self.cost_weights.orientation > 0 and uses_orientation_cost(self.model) and self.speed == 0.0
+        self._orientation = self.cost_weights.orientation if orient else 0.0
+
+    def _point_forces(self) -> PointForces | None:
+        if self._point is False:
+            lean = self.evaluator is None
+            self._point = PointForces.create(self.model, self.bird, self.speed, self.climb, self.n) if lean else None
+        return self._point  # type: ignore[return-value]
+
+    def _other_point(self, x: np.ndarray) -> float:
+        """:func:`other_cost` of one row (the orientation term is linear in the pitch)."""
+        if self.cost_weights.distance > 0 and self.previous is not None:
+            return float(other_cost(self.model, x[None], self.speed, self.cost_weights, self.previous)[0])
+        return float(self._orientation * x[self._ip])
+
+    def point_parts(self, x: np.ndarray) -> tuple[np.ndarray, float]:
+        pf = self._point_forces()
+        if pf is None:
+            return super().point_parts(x)
+        self.evaluations += 1
+        fx, fz, p = pf.values(x)
+        return np.array([fx - self.Fx_demand, fz - self.Fz_demand, p]), self._other_point(x)
 
     def _forces(self, X: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         if self.evaluator is not None:
@@ -180,6 +212,17 @@ class ForceProblem(Problem):
 
     def _parts_and_jacobian(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, float, np.ndarray]:
         """Exact: the kernel's forward-mode gradients (or an evaluator's ``gradients``)."""
+        pf = self._point_forces()
+        if pf is not None:
+            self.evaluations += 1
+            vals, jr = pf.gradients(x)
+            r = np.array([vals[0] - self.Fx_demand, vals[1] - self.Fz_demand, vals[2]])
+            if self.cost_weights.distance > 0 and self.previous is not None:
+                gh = other_cost_gradient(self.model, x[None], self.speed, self.cost_weights, self.previous)[0]
+            else:
+                gh = np.zeros(self.dim)
+                gh[self._ip] = self._orientation
+            return r, jr, self._other_point(x), gh
         X = x[None]
         grad_fn = getattr(self.evaluator, "gradients", None) if self.evaluator is not None else None
         if self.evaluator is not None and grad_fn is None:
@@ -240,7 +283,7 @@ def slsqp(
     grads: dict[bytes, tuple[np.ndarray, np.ndarray]] = {}
 
     def point(z: np.ndarray) -> tuple[np.ndarray, bytes]:
-        x = np.clip(z[:d], lo, hi)
+        x = np.minimum(np.maximum(z[:d], lo), hi)
         return x, x.tobytes()
 
     def val(z: np.ndarray) -> tuple[np.ndarray, float]:
@@ -248,8 +291,7 @@ def slsqp(
         if key not in values:
             if len(values) > 256:
                 values.clear()
-            R, h = problem.parts(x[None])
-            values[key] = (R[0], float(h[0]))
+            values[key] = problem.point_parts(x)
         return values[key]
 
     def grad(z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -264,17 +306,26 @@ def slsqp(
     def fun(z: np.ndarray) -> float:
         return float(w @ z[d:] + val(z)[1])
 
+    grad_z = np.concatenate([np.zeros(d), w])
+
     def jac(z: np.ndarray) -> np.ndarray:
-        return np.concatenate([grad(z)[1], w])
+        grad_z[:d] = grad(z)[1]
+        return grad_z.copy()
+
+    cons_z = np.zeros(2 * K)
 
     def cons(z: np.ndarray) -> np.ndarray:
-        r = val(z)[0]
-        return np.concatenate([z[d:] - r, z[d:] + r])
+        r, s = val(z)[0], z[d:]
+        cons_z[:K], cons_z[K:] = s - r, s + r
+        return cons_z.copy()
+
+    # d(cons)/dz = [[-dr/dx, I], [dr/dx, I]]
+    cons_dz = np.block([[np.zeros((K, d)), np.eye(K)], [np.zeros((K, d)), np.eye(K)]])
 
     def cons_jac(z: np.ndarray) -> np.ndarray:
         jr = grad(z)[0]
-        eye = np.eye(K)
-        return np.block([[-jr, eye], [jr, eye]])
+        cons_dz[:K, :d], cons_dz[K:, :d] = -jr, jr
+        return cons_dz.copy()
 
     best: dict[str, object] = {"cost": np.inf, "x": x0, "since": 0}
 
@@ -294,20 +345,25 @@ def slsqp(
     r0 = val(np.concatenate([x0, np.zeros(K)]))[0]
     z0 = np.concatenate([x0, np.abs(r0)])
     track(z0)
-    bounds = list(zip(lo, hi)) + [(0.0, None)] * K
-    constraints = [{"type": "ineq", "fun": cons, "jac": cons_jac}] if K else []
-    res = so.minimize(
-        fun, z0, jac=jac, method="SLSQP", bounds=bounds, constraints=constraints,
-        options={"maxiter": maxiter, "ftol": ftol}, callback=track,
-    )
-    stalled = res.status == 99  # the callback raised StopIteration
-    x, _ = point(res.x)
+    if K:
+        res = slsqp_driver.minimize(
+            fun, jac, cons, cons_jac, z0, np.concatenate([lo, np.zeros(K)]), np.concatenate([hi, np.full(K, np.inf)]),
+            maxiter=maxiter, ftol=ftol, callback=track,
+        )
+        stalled, success, nit, res_message, res_x = res.stopped, res.success, res.nit, res.message, res.x
+    else:
+        sres = so.minimize(
+            fun, z0, jac=jac, method="SLSQP", bounds=list(zip(lo, hi)), options={"maxiter": maxiter, "ftol": ftol}, callback=track
+        )
+        stalled = sres.status == 99  # the callback raised StopIteration
+        success, nit, res_message, res_x = sres.success, sres.nit, sres.message, sres.x
+    x, _ = point(res_x)
     r, h = val(np.concatenate([x, np.zeros(K)]))
     if float(np.abs(r) @ w + h) > float(best["cost"]):  # type: ignore[arg-type]
         x = np.asarray(best["x"])
         r, h = val(np.concatenate([x, np.zeros(K)]))
-    message = f"no progress in {stall} iterations" if stalled else res.message
-    return _finish(problem, x, "slsqp", res.success and not stalled, message, evals0, res.nit, (r, h))
+    message = f"no progress in {stall} iterations" if stalled else res_message
+    return _finish(problem, x, "slsqp", success and not stalled, message, evals0, nit, (r, h))
 
 
 def multistart(problem: Problem, starts: np.ndarray, **kwargs: object) -> Solution:

@@ -16,21 +16,17 @@ steps, parameters without effect skipped).
 
 Cells are updated in a red-black order (cells whose index sum is even, then odd), so
 that no two neighbours move at once; rounds repeat while zig-zags remain (at most
-``smooth_rounds``).  A task is one Fx index's cells of one colour in one round, all
-their candidate solves batched in lockstep.
+``smooth_rounds``).  A task is one Fx index's cells of one colour in one round.
 """
 
 from __future__ import annotations
 
 from dataclasses import replace
-from functools import partial
-from typing import Any
 
 import numpy as np
 
 from birdsim.physics.kinematics import KinematicModel, get_model
 from birdsim.tables.grid import BuildConfig
-from birdsim.tables.lockstep import run_lockstep
 from birdsim.tables.optimize import ForceProblem, slsqp
 from birdsim.tables.smoothness import ZIGZAG_RAD, effect_mask, zigzags
 
@@ -103,11 +99,11 @@ def _targets(cell: tuple[int, ...], X: np.ndarray, ok: np.ndarray) -> list[np.nd
     return kept
 
 
-def _candidate(cfg: BuildConfig, model: KinematicModel, demand: tuple[float, ...], target: np.ndarray, evaluator: Any) -> tuple[np.ndarray, int, bool]:
+def _candidate(cfg: BuildConfig, model: KinematicModel, demand: tuple[float, ...], target: np.ndarray) -> tuple[np.ndarray, int, bool]:
     fx, fz, v, vc = (tuple(demand) + (0.0,))[:4]
     weights = replace(cfg.weights, distance=cfg.weights.distance + cfg.settings.smooth_nu)
     prob = ForceProblem(
-        model, fx, fz, v, weights=weights, bird=cfg.bird, previous=target, n=cfg.settings.n_search, evaluator=evaluator, climb=vc
+        model, fx, fz, v, weights=weights, bird=cfg.bird, previous=target, n=cfg.settings.n_search, climb=vc
     )
     sol = slsqp(prob, target, maxiter=cfg.settings.maxiter)
     return sol.x, prob.evaluations, sol.converged
@@ -130,12 +126,11 @@ def smooth_cells(
     st = cfg.settings
     names = model.param_names
     cells = [tuple(int(i) for i in c) for c in cells]
-    jobs, owner = [], []
+    owner, results = [], []
     for m, cell in enumerate(cells):
         for target in _targets(cell, X, ok):
-            jobs.append(partial(_candidate, cfg, model, tuple(demands[cell]), target))
+            results.append(_candidate(cfg, model, tuple(demands[cell]), target))
             owner.append(m)
-    results = run_lockstep(model, cfg.bird, st.n_search, jobs)
     pool: list[list[np.ndarray]] = [[X[c].copy()] for c in cells]
     evals = np.zeros(len(cells), dtype=np.int64)
     conv = np.ones(len(cells), dtype=bool)

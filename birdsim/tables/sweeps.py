@@ -8,7 +8,6 @@ picklable frozen dataclasses, so that process and cluster executors can run them
 from __future__ import annotations
 
 from collections.abc import Callable
-from functools import partial
 from typing import Any
 
 import numpy as np
@@ -16,7 +15,6 @@ import numpy as np
 from birdsim.physics.kinematics import KinematicModel, get_model
 from birdsim.tables.cost import breakdown_from_forces, forces, other_cost
 from birdsim.tables.grid import BuildConfig
-from birdsim.tables.lockstep import run_lockstep
 from birdsim.tables.optimize import ForceProblem, box_corners, random_starts, slsqp
 
 
@@ -24,13 +22,9 @@ from birdsim.tables.optimize import ForceProblem, box_corners, random_starts, sl
 
 
 def _problem(
-    cfg: BuildConfig, model: KinematicModel, fx: float, fz: float, v: float, previous: np.ndarray | None, evaluator: Any = None,
-    climb: float = 0.0,
+    cfg: BuildConfig, model: KinematicModel, fx: float, fz: float, v: float, previous: np.ndarray | None, climb: float = 0.0
 ) -> ForceProblem:
-    return ForceProblem(
-        model, fx, fz, v, weights=cfg.weights, bird=cfg.bird, previous=previous, n=cfg.settings.n_search, evaluator=evaluator,
-        climb=climb,
-    )
+    return ForceProblem(model, fx, fz, v, weights=cfg.weights, bird=cfg.bird, previous=previous, n=cfg.settings.n_search, climb=climb)
 
 
 def _screen(cfg: BuildConfig, model: KinematicModel, v: float, climb: float = 0.0) -> tuple[np.ndarray, tuple[np.ndarray, ...], np.ndarray]:
@@ -57,7 +51,6 @@ def _solve_cell(
     v: float,
     warm: np.ndarray | None,
     screen: tuple[np.ndarray, tuple[np.ndarray, ...], np.ndarray],
-    evaluator: Any = None,
     climb: float = 0.0,
 ) -> tuple[np.ndarray, float, int, bool]:
     """Warm-started SLSQP, multi-start from the screen where the warm start is poor.
@@ -76,7 +69,7 @@ def _solve_cell(
     S, (Fx, Fz, P), other = screen
     c = breakdown_from_forces(Fx, Fz, P, fx, fz, cfg.weights, other).total
     order = np.argsort(c)
-    prob = _problem(cfg, model, fx, fz, v, warm if cfg.weights.distance > 0 else None, evaluator, climb)
+    prob = _problem(cfg, model, fx, fz, v, warm if cfg.weights.distance > 0 else None, climb)
     best = None
     polish = max(st.starts, 1)
     if warm is not None:
@@ -105,10 +98,9 @@ def _solve_cell(
 
 
 def _resolve_from(
-    cfg: BuildConfig, model: KinematicModel, fx: float, fz: float, v: float, start: np.ndarray, evaluator: Any = None,
-    climb: float = 0.0,
+    cfg: BuildConfig, model: KinematicModel, fx: float, fz: float, v: float, start: np.ndarray, climb: float = 0.0
 ) -> tuple[np.ndarray, float, int, bool]:
-    prob = _problem(cfg, model, fx, fz, v, start if cfg.weights.distance > 0 else None, evaluator, climb)
+    prob = _problem(cfg, model, fx, fz, v, start if cfg.weights.distance > 0 else None, climb)
     sol = slsqp(prob, start, maxiter=cfg.settings.maxiter)
     return sol.x, sol.cost, prob.evaluations, sol.converged
 
@@ -135,11 +127,10 @@ def canonical_params(model: KinematicModel, X: np.ndarray) -> np.ndarray:
 
 
 def _improve_cell(
-    cfg: BuildConfig, model: KinematicModel, fx: float, fz: float, v: float, starts: list[np.ndarray], evaluator: Any = None,
-    climb: float = 0.0,
+    cfg: BuildConfig, model: KinematicModel, fx: float, fz: float, v: float, starts: list[np.ndarray], climb: float = 0.0
 ) -> tuple[np.ndarray | None, float, int, bool]:
     """The best SLSQP answer from ``starts`` (None if there are none)."""
-    prob = _problem(cfg, model, fx, fz, v, None, evaluator, climb)
+    prob = _problem(cfg, model, fx, fz, v, None, climb)
     best = None
     for x0 in starts:
         sol = slsqp(prob, x0, maxiter=cfg.settings.maxiter)
@@ -158,8 +149,7 @@ def solve_slice(cfg: BuildConfig, iv: int, ic: int | None = None) -> dict[str, n
     climb axis, else 0): sweep Fz (inner) and Fx (outer, downwards).
 
     The first column (strongest lift demand) is a chain of warm starts from +Fx_max
-    down; then every Fx line sweeps Fz upwards, the lines in lockstep (their
-    evaluations batched, :mod:`birdsim.tables.lockstep`); then a backward pass in Fz re-solves
+    down; then every Fx line sweeps Fz upwards; then a backward pass in Fz re-solves
     each cell from its Fx/Fz neighbours on other branches."""
     model = get_model(cfg.model)
     g = cfg.grid
@@ -175,24 +165,21 @@ def solve_slice(cfg: BuildConfig, iv: int, ic: int | None = None) -> dict[str, n
     for i in reversed(range(nfx)):  # Fx from +max down, Fz at the strongest lift demand
         X[i, 0], cost[i, 0], evals[i, 0], conv[i, 0] = _solve_cell(cfg, model, g.Fx[i], g.Fz[0], v, warm, screen, climb=vc)
         warm = X[i, 0]
-    for j in range(1, nfz):  # Fz upwards to 0, all Fx lines at once
-        jobs = [partial(_solve_cell, cfg, model, g.Fx[i], g.Fz[j], v, X[i, j - 1], screen, climb=vc) for i in range(nfx)]
-        for i, (x, c, e, ok) in enumerate(run_lockstep(model, cfg.bird, cfg.settings.n_search, jobs)):
-            X[i, j], cost[i, j], evals[i, j], conv[i, j] = x, c, e, ok
+    for j in range(1, nfz):  # Fz upwards to 0 along every Fx line
+        for i in range(nfx):
+            X[i, j], cost[i, j], evals[i, j], conv[i, j] = _solve_cell(cfg, model, g.Fx[i], g.Fz[j], v, X[i, j - 1], screen, vc)
     X = canonical_params(model, X)
     if cfg.weights.distance == 0:
         # backward pass in Fz (0 -> strongest lift): each cell re-solved from those of its
         # Fx/Fz neighbours that sit on another branch; kept if cheaper
         for j in reversed(range(nfz)):
-            jobs = []
             for i in range(nfx):
                 near = [(i, j + 1), (i - 1, j), (i + 1, j)]
                 starts = [
                     X[a, b].copy() for a, b in near
                     if 0 <= a < nfx and b < nfz and np.max(np.abs(X[a, b] - X[i, j])) >= cfg.settings.branch_tol
                 ]
-                jobs.append(partial(_improve_cell, cfg, model, g.Fx[i], g.Fz[j], v, starts, climb=vc))
-            for i, (x, c, e, ok) in enumerate(run_lockstep(model, cfg.bird, cfg.settings.n_search, jobs)):
+                x, c, e, ok = _improve_cell(cfg, model, g.Fx[i], g.Fz[j], v, starts, vc)
                 evals[i, j] += e
                 if x is not None and c < cost[i, j] - 1e-12:
                     X[i, j], cost[i, j], conv[i, j] = canonical_params(model, x), c, ok
@@ -203,7 +190,7 @@ def solve_slice(cfg: BuildConfig, iv: int, ic: int | None = None) -> dict[str, n
 def solve_v_line(cfg: BuildConfig, ifx: int, X: np.ndarray, cost: np.ndarray, conv: np.ndarray, ic: int | None = None) -> dict[str, np.ndarray]:
     """Phase 2 for the line Fx = grid.Fx[ifx] (at climb = grid.climb[ic], else 0; arrays
     nFz x nV): a forward and a backward pass in V, each cell re-solved from its
-    V-neighbour (all Fz of one V in lockstep) and kept if cheaper.  With
+    V-neighbour and kept if cheaper.  With
     under-relaxation (relax < 1) the forward pass stores ``relax x* + (1 - relax) x_prev``
     (eq. 94) and the backward pass, which would undo that smoothing, is skipped."""
     g = cfg.grid
@@ -235,15 +222,12 @@ def _line_passes(
         for k in order:
             # a neighbour this close is on the same branch: a re-solve would land here again
             todo = [j for j in range(nfz) if not (plain and np.max(np.abs(X[j, k + step] - X[j, k])) < st.branch_tol)]
-            jobs = []
             for j in todo:
                 fz, v, vc = point(j, k)
-                jobs.append(partial(_resolve_from, cfg, model, fx, fz, v, X[j, k + step].copy(), climb=vc))
-            for j, (x_new, c_new, e, ok) in zip(todo, run_lockstep(model, cfg.bird, st.n_search, jobs)):
+                x_new, c_new, e, ok = _resolve_from(cfg, model, fx, fz, v, X[j, k + step].copy(), vc)
                 prev = X[j, k + step]
                 evals[j, k] += e
                 if not plain:
-                    fz, v, vc = point(j, k)
                     prob = _problem(cfg, model, fx, fz, v, prev if cfg.weights.distance > 0 else None, climb=vc)
                     if st.relax < 1.0:
                         x_new = st.relax * x_new + (1.0 - st.relax) * prev
