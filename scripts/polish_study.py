@@ -1,7 +1,8 @@
 """Where do the screen-candidate polishes of a table build win?  Usage:
 
-``python scripts/polish_study.py collect --out polish.csv [--models base m1 ...] [--settings polish_rule=0 ...]``
-    builds each model's default 11^3 table (not written anywhere) with the measurement
+``python scripts/polish_study.py collect --out polish.csv [--models base m1 ...] [--settings polish_rule=0 ...] [--tables T.npz ...]``
+    builds each model's default 11^3 table (or each given table's configuration; not
+    written anywhere) with the measurement
     hook :data:`birdsim.tables.sweeps.POLISH_PROBE` installed and writes one CSV row per
     polish of a screen candidate in ``_solve_cell``: what was known before the polish
     and its outcome (``win``: it replaced the answer so far).
@@ -39,7 +40,8 @@ from typing import Any
 import numpy as np
 
 from birdsim.tables import sweeps
-from birdsim.tables.build import BuildConfig, BuildSettings, Grid, build_table
+from birdsim.tables.build import BuildConfig, BuildSettings, Grid, build_table, config_from_meta
+from birdsim.tables.lookup import load_table
 
 COLUMNS = (
     "model", "fx", "fz", "v", "climb", "cold", "good", "rank", "screen_best", "cand_cost", "cand_miss", "warm_cost",
@@ -94,18 +96,22 @@ def _settings(pairs: list[str]) -> dict[str, Any]:
     return out
 
 
-def collect(models: list[str], out: Path, jobs: int, overrides: dict[str, Any]) -> None:
-    """Builds each model's 11^3 table with the probe and writes the rows to ``out``."""
+def collect(models: list[str], out: Path, jobs: int, overrides: dict[str, Any], tables: list[Path] | None = None) -> None:
+    """Builds each model's 11^3 table (or, with ``tables``, each table's own configuration)
+    with the probe and writes the rows to ``out``."""
     global _OUT_DIR
     with tempfile.TemporaryDirectory() as tmp:
         _OUT_DIR = Path(tmp)
         sweeps.POLISH_PROBE = _probe  # inherited by the forked worker processes
         try:
-            for m in models:
+            configs = [BuildConfig(model=m, grid=Grid.default(11)) for m in models]
+            if tables:
+                configs = [config_from_meta(load_table(p)) for p in tables]
+            for cfg in configs:
                 t0 = time.perf_counter()
-                cfg = BuildConfig(model=m, grid=Grid.default(11), settings=replace(BuildSettings(), **overrides))
+                cfg = replace(cfg, settings=replace(cfg.settings, **overrides))
                 table = build_table(cfg, jobs=jobs)
-                print(f"{m}: {time.perf_counter() - t0:.1f} s, {table.evaluations.mean():.0f} wingbeats per cell", flush=True)
+                print(f"{cfg.model}: {time.perf_counter() - t0:.1f} s, {table.evaluations.mean():.0f} wingbeats per cell", flush=True)
         finally:
             sweeps.POLISH_PROBE = None
         with open(out, "w", newline="") as f:
@@ -181,13 +187,14 @@ def main(argv: list[str]) -> int:
     c.add_argument("--out", type=Path, required=True)
     c.add_argument("--jobs", type=int, default=2)
     c.add_argument("--settings", nargs="*", default=[], help="BuildSettings overrides NAME=VALUE")
+    c.add_argument("--tables", nargs="*", type=Path, help="build these tables' configurations instead (e.g. tables/seed-m3-climb.npz)")
     a = sub.add_parser("analyse")
     a.add_argument("csv", type=Path)
     a.add_argument("--near", type=float, default=BuildSettings().polish_near)
     a.add_argument("--excess", type=float, default=BuildSettings().polish_excess)
     args = ap.parse_args(argv)
     if args.cmd == "collect":
-        collect(args.models, args.out, args.jobs, _settings(args.settings))
+        collect(args.models, args.out, args.jobs, _settings(args.settings), args.tables)
     else:
         analyse(args.csv, args.near, args.excess)
     return 0

@@ -73,7 +73,10 @@ def test_cold_cells_are_always_polished():
     assert on[2] == off[2] > 0 and np.array_equal(on[0], off[0])
 
 
-@pytest.mark.parametrize("name, value", [("polish_near", float("nan")), ("polish_near", -0.1), ("polish_excess", float("nan")), ("polish_excess", -1.0)])
+@pytest.mark.parametrize(
+    "name, value",
+    [("polish_near", float("nan")), ("polish_near", -0.1), ("polish_excess", float("nan")), ("polish_excess", -1.0)],
+)
 def test_bad_polish_settings(name, value):
     with pytest.raises(BirdsimError, match=f"{name}=.* is invalid"):
         BuildSettings(**{name: value})

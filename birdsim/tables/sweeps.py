@@ -82,7 +82,8 @@ def _solve_cell(
     for rank, k in enumerate(order[:polish]):
         if st.polish_rule and warm_sol is not None and best is not None:
             near = np.max(np.abs(S[k] - warm_sol.x) / width) <= st.polish_near
-            if best.cost <= floor + st.switch_margin or (near and warm_sol.cost <= c[k] <= (1.0 + st.polish_excess) * warm_sol.cost):
+            returns = near and warm_sol.cost <= c[k] <= (1.0 + st.polish_excess) * warm_sol.cost
+            if best.cost <= floor + st.switch_margin or returns:
                 continue
         before, e0 = best, prob.evaluations
         sol = slsqp(prob, S[k], maxiter=st.maxiter)
