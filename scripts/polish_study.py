@@ -7,7 +7,7 @@
     polish of a screen candidate in ``_solve_cell``: what was known before the polish
     and its outcome (``win``: it replaced the answer so far).
 
-``python scripts/polish_study.py analyse polish.csv [--near 0.12 --excess 0.5]``
+``python scripts/polish_study.py analyse polish.csv [--near 0.12 --excess 0.1]``
     prints wins and evaluations by kind of polish (from rows collected with
     ``polish_rule=0``: every polish run) and what the rule of ``_solve_cell``
     (``BuildSettings.polish_near`` / ``polish_excess``) skips and loses, also at other values.
@@ -174,7 +174,7 @@ def analyse(path: Path, near: float, excess: float) -> None:
           f"loses {lost.sum()} wins" + (f" (largest gain {gain[lost].max():.1e})" if lost.any() else ""))
     print("\nother thresholds: near  excess  skipped  wingbeats saved  wins lost")
     for n_ in (0.08, 0.1, 0.12, 0.14, 0.16, 0.2):
-        for e_ in (0.3, 0.5, 1.0):
+        for e_ in (0.1, 0.3, 0.5, 1.0):
             sk = rule_skips(d, n_, e_)
             print(f"  {n_:4.2f}  {e_:4.1f}  {sk.sum() / warm.sum():4.0%}  {ev[sk].sum() / ev[warm].sum():4.0%}  {(sk & d['win']).sum():3d}")
 

@@ -41,7 +41,8 @@ def optimum():
 
 def test_near_candidate_is_not_polished(optimum):
     (fx, fz, v), x, prob = optimum
-    cand = x + 0.05 * (prob.upper - prob.lower) * np.array([1.0, -1.0, 1.0])  # 5 % of each range away
+    step = 0.03 * (prob.upper - prob.lower) * np.array([-1.0, 1.0, -1.0])  # 3 % of each range
+    cand = np.clip(x + step, prob.lower, prob.upper)
     cw, cc = prob.cost(np.vstack([x, cand]))
     assert cw < cc <= (1 + CFG.settings.polish_excess) * cw  # the rule's premise holds here
     on, off = _both(fx, fz, v, x, cand)

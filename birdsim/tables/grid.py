@@ -113,7 +113,7 @@ class BuildSettings:
     switch_margin: float = 1e-4  # another branch must beat the warm-start branch by this
     polish_rule: bool = True  # skip the polishes that cannot win (docs/performance.md); False: polish every candidate
     polish_near: float = 0.12  # ... a candidate this near the warm answer (fraction of every parameter's range)
-    polish_excess: float = 0.5  # ... and costing 0 to this fraction more than the warm answer
+    polish_excess: float = 0.1  # ... and costing 0 to this fraction more than the warm answer
     reach_tol: float = 0.01  # |achieved - demanded| force above which a cell is unreachable
     v_passes: bool = True  # forward and backward passes in V after the slices
     branch_tol: float = 0.25  # rad; a neighbour this close is on the same branch (no re-solve)

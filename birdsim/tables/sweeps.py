@@ -63,8 +63,8 @@ def _solve_cell(
     can beat it by the margin; (b) the candidate lies within ``polish_near`` of the
     warm answer in every parameter (as a fraction of the parameter's range) and costs
     between 1 and 1 + ``polish_excess`` times as much: its polish returns to the warm
-    answer's minimum (none of those won in the measured builds, so the shipped tables
-    rebuild bit for bit).  Cold cells (no warm start) are always polished."""
+    answer's minimum (none of those won in the measured builds, which gave the same
+    tables as without the rule).  Cold cells (no warm start) are always polished."""
     st = cfg.settings
     S, (Fx, Fz, P), other = screen
     c = breakdown_from_forces(Fx, Fz, P, fx, fz, cfg.weights, other).total
