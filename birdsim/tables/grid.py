@@ -111,6 +111,9 @@ class BuildSettings:
     screen_gap: float = 0.02  # multi-start unless the warm start beats the best screen candidate by this
     always_polish: int = 1  # screen candidates polished even after a good warm start
     switch_margin: float = 1e-4  # another branch must beat the warm-start branch by this
+    polish_rule: bool = True  # skip the polishes that cannot win (docs/performance.md); False: polish every candidate
+    polish_near: float = 0.12  # ... a candidate this near the warm answer (fraction of every parameter's range)
+    polish_excess: float = 0.1  # ... and costing 0 to this fraction more than the warm answer
     reach_tol: float = 0.01  # |achieved - demanded| force above which a cell is unreachable
     v_passes: bool = True  # forward and backward passes in V after the slices
     branch_tol: float = 0.25  # rad; a neighbour this close is on the same branch (no re-solve)
@@ -130,7 +133,7 @@ class BuildSettings:
         # written as "not (ok)" so that NaN is refused too (every comparison with NaN is False)
         if not self.reach_tol > 0:
             raise BirdsimError(f"reach_tol={self.reach_tol!r} is invalid; allowed: a number > 0")
-        for name in ("starts", "always_polish", "switch_margin", "screen_gap", "branch_tol", "smooth_tol", "smooth_nu", "smooth_rounds"):
+        for name in ("starts", "always_polish", "switch_margin", "screen_gap", "polish_near", "polish_excess", "branch_tol", "smooth_tol", "smooth_nu", "smooth_rounds"):
             value = getattr(self, name)
             if not value >= 0:
                 raise BirdsimError(f"{name}={value!r} is invalid; allowed: a number >= 0")

@@ -7,6 +7,7 @@ picklable frozen dataclasses, so that process and cluster executors can run them
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -37,6 +38,11 @@ def _screen(cfg: BuildConfig, model: KinematicModel, v: float, climb: float = 0.
     return S, F, other_cost(model, S, v, cfg.weights)
 
 
+#: Measurement hook of ``scripts/polish_study.py`` (None in builds): called once per
+#: polish in :func:`_solve_cell` with what was known before it and its outcome.
+POLISH_PROBE: Callable[..., None] | None = None
+
+
 def _solve_cell(
     cfg: BuildConfig,
     model: KinematicModel,
@@ -48,7 +54,17 @@ def _solve_cell(
     climb: float = 0.0,
 ) -> tuple[np.ndarray, float, int, bool]:
     """Warm-started SLSQP, multi-start from the screen where the warm start is poor.
-    Returns (x, cost at n_search, cycle evaluations, SLSQP converged)."""
+    Returns (x, cost at n_search, cycle evaluations, SLSQP converged).
+
+    With ``polish_rule`` a screen candidate is not polished after a warm start where
+    the polish cannot win (docs/performance.md, "Where polishes win"): (a) the answer
+    so far is within ``switch_margin`` of the cost's lower bound on the box (the force
+    and power terms are >= 0, the rest is smallest at the lower bounds), so nothing
+    can beat it by the margin; (b) the candidate lies within ``polish_near`` of the
+    warm answer in every parameter (as a fraction of the parameter's range) and costs
+    between 1 and 1 + ``polish_excess`` times as much: its polish returns to the warm
+    answer's minimum (none of those won in the measured builds, which gave the same
+    tables as without the rule).  Cold cells (no warm start) are always polished."""
     st = cfg.settings
     S, (Fx, Fz, P), other = screen
     c = breakdown_from_forces(Fx, Fz, P, fx, fz, cfg.weights, other).total
@@ -60,10 +76,24 @@ def _solve_cell(
         best = slsqp(prob, warm, maxiter=st.maxiter)
         if best.cost < c[order[0]] - st.screen_gap:
             polish = st.always_polish  # a good warm start: still try the best screen candidate(s)
-    for k in order[:polish]:
+    warm_sol = best
+    floor = float(other_cost(model, prob.lower[None], v, cfg.weights)[0])  # the cost's lower bound on the box
+    width = np.where(prob.upper > prob.lower, prob.upper - prob.lower, 1.0)
+    for rank, k in enumerate(order[:polish]):
+        if st.polish_rule and warm_sol is not None and best is not None:
+            near = np.max(np.abs(S[k] - warm_sol.x) / width) <= st.polish_near
+            returns = near and warm_sol.cost <= c[k] <= (1.0 + st.polish_excess) * warm_sol.cost
+            if best.cost <= floor + st.switch_margin or returns:
+                continue
+        before, e0 = best, prob.evaluations
         sol = slsqp(prob, S[k], maxiter=st.maxiter)
         if best is None or sol.cost < best.cost - st.switch_margin:
             best = sol
+        if POLISH_PROBE is not None:
+            POLISH_PROBE(
+                cfg=cfg, prob=prob, demand=(fx, fz, v, climb), warm=warm_sol, before=before, rank=rank, candidate=S[k],
+                screen_cost=c[order], screen_force=(Fx[k], Fz[k]), sol=sol, evaluations=prob.evaluations - e0,
+            )
     assert best is not None
     return best.x, best.cost, prob.evaluations, best.converged
 
