@@ -10,7 +10,8 @@ Order of the work (the dissertation's stable order: Fz, then Fx, then V):
    cell warm-started from the previous cell.  Where the warm start is poor (its optimum
    is not better than the best screen candidate by ``screen_gap``: polishing a screen
    candidate often gains that much) the best ``starts`` screen
-   candidates are polished too (multi-start) and the best answer wins; another branch
+   candidates are polished too (multi-start; except polishes that cannot win, the
+   polish rule of :func:`birdsim.tables.sweeps._solve_cell`) and the best answer wins; another branch
    replaces the warm-start branch only when it is cheaper by ``switch_margin``, which
    keeps the table smooth where the minima are nearly tied.  A backward pass in Fz
    (0 -> strongest lift) then re-solves every cell from those of its Fx/Fz neighbours
