@@ -239,9 +239,9 @@ def test_batched_equals_one_at_a_time(name, count, seed):
     x = lo + (hi - lo) * r.random((count, len(lo)))
     v = 1.5 * r.random(count)
     names = get_model(name).param_names
-    batch = evaluate_cycle(name, {n: x[:, i] for i, n in enumerate(names)}, v)
+    batch = evaluate_cycle(name, {n: x[:, i] for i, n in enumerate(names)}, v, n=64)  # layout, not resolution
     for j in sorted({0, count // 2, count - 1}):
-        one = evaluate_cycle(name, {n: x[j, i] for i, n in enumerate(names)}, v[j])
+        one = evaluate_cycle(name, {n: x[j, i] for i, n in enumerate(names)}, v[j], n=64)
         # same arithmetic in a different array layout: round-off only
         np.testing.assert_allclose(batch.panel_force_earth[j], one.panel_force_earth, rtol=0, atol=1e-14)
         np.testing.assert_allclose(batch.mean.P[j], one.mean.P, rtol=0, atol=1e-14)
