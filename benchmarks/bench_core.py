@@ -63,6 +63,42 @@ def _kernel_vs_numpy(n: int = 64, count: int = 4096) -> None:
     print("targets (issue 17): m4 kernel >= 2e5/s and >= 4x numpy; m3 kernel >= 4e5/s")
 
 
+def _default_samples(count: int = 4096, reference: int = 4096) -> None:
+    """The default samples per wingbeat (``DEFAULT_SAMPLES``): its accuracy (share of
+    random sets whose mean force, max(|dFx|, |dFz|), is within 1e-7 of n = ``reference``,
+    and the 99.9th percentile of that error) and its cost: the kernel at the default n
+    against today's numpy path at n = 64, side by side (best of 3), wall clock (the
+    kernel's default threads) and per CPU-second."""
+    import os as _os
+    import time as _t
+
+    from birdsim.physics import kernel
+    from birdsim.physics.cycle import DEFAULT_SAMPLES
+
+    n = DEFAULT_SAMPLES
+    print(f"default samples n = {n}: accuracy against n = {reference}, and kernel@{n} vs numpy@64 "
+          f"({count} wingbeats, kernel threads = {kernel.threads()}, load {_os.getloadavg()[0]:.1f})")
+    print(f"{'model':6s} {'within 1e-7':>11s} {'p99.9':>8s} | {'kernel/s':>9s} {'numpy64/s':>9s} {'ratio':>6s} | "
+          f"{'kernel/CPU-s':>12s} {'numpy64/CPU-s':>13s} {'ratio':>6s}")
+    for model in birdsim.MODELS:
+        params, speed = _params(model, count, seed=11)
+        ref = birdsim.evaluate_cycle(model, params, speed, n=reference).mean
+        a = birdsim.evaluate_cycle(model, params, speed, n=n).mean
+        err = np.maximum(np.abs(a.Fx - ref.Fx), np.abs(a.Fz - ref.Fz))
+        best = {}
+        for _ in range(3):
+            for be, nn in (("kernel", n), ("numpy", 64)):
+                t0, c0 = _t.perf_counter(), _t.process_time()
+                birdsim.evaluate_cycle(model, params, speed, n=nn, backend=be).mean
+                w, c = count / (_t.perf_counter() - t0), count / max(_t.process_time() - c0, 1e-9)
+                bw, bc = best.get(be, (0.0, 0.0))
+                best[be] = (max(bw, w), max(bc, c))
+        (kw, kc), (nw, nc) = best["kernel"], best["numpy"]
+        print(f"{model:6s} {np.mean(err <= 1e-7):11.3%} {np.quantile(err, 0.999):8.1e} | {kw:9.0f} {nw:9.0f} {kw / nw:5.2f}x | "
+              f"{kc:12.0f} {nc:13.0f} {kc / nc:5.2f}x")
+    print(f"target (issue 17): >= 99.9 % within 1e-7 for every model, kernel@{n} wall >= numpy@64 wall")
+
+
 def _callback_cost() -> None:
     """Microseconds per call of the passive aero callback (what every MuJoCo step pays)."""
     import time as _t
@@ -93,6 +129,7 @@ def _callback_cost() -> None:
 
 def main() -> None:
     _kernel_vs_numpy()
+    _default_samples()
     _callback_cost()
     n = 64
     print(f"numpy path: wingbeat evaluations per second, {n} samples each (mean forces and power of one wing)")

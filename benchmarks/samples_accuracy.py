@@ -16,7 +16,7 @@ import numpy as np
 import birdsim
 from birdsim.physics.cycle import evaluate_cycle
 
-NS = (32, 48, 64, 80, 96, 128, 192, 256)
+NS = (32, 48, 64, 80, 96, 128, 192, 224, 230, 234, 236, 238, 240, 244, 248, 256)
 REFERENCE = 4096
 
 

@@ -440,14 +440,14 @@ def test_a_climb_table_continues_the_level_table_and_records_the_axis(tmp_path):
     t3 = build_table(BuildConfig("base", level, settings=settings), jobs=1)
     t4 = build_table(BuildConfig("base", climbing, settings=settings), jobs=1, out=tmp_path / "c.npz")
     # climb = 0: the same slices and V passes; the climb passes only keep answers cheaper
-    # at the search resolution (1e-9: n = 32 search vs the n = 64 check)
+    # at the search resolution (1e-9: n = 32 search vs the n_final check)
     assert np.all(t4.cost[..., 1] <= t3.cost + 1e-9)
     np.testing.assert_array_equal(t4.status[..., 1], t3.status)
     back = load_table(tmp_path / "c.npz")
     assert back.axis_names[-1] == "climb" and back.meta["grid"]["climb"] == [-0.2, 0.0, 0.2]
     assert config_from_meta(back).grid == climbing
     # the stored forces are those of the climbing bird: re-evaluate one cell independently
-    prob = ForceProblem("base", 0.25, -0.25, 0.9, n=64, climb=0.2)
+    prob = ForceProblem("base", 0.25, -0.25, 0.9, n=back.meta["solver"]["n_final"], climb=0.2)  # the table's own check
     np.testing.assert_allclose(prob.achieved(back.params[1, 0, 1, 2])[:2], back.achieved[1, 0, 1, 2, :2], atol=1e-12)
     # climbing costs more lift than descending for the same demand where both are reachable
     ok = (back.status[..., 0] == "ok") & (back.status[..., 2] == "ok")

@@ -27,9 +27,9 @@ BIRDS = {"plain": Bird(), "strips": Bird(strips=3), "induced": Bird(induced_velo
 @pytest.mark.parametrize("bird", list(BIRDS))
 def test_zero_climb_is_bit_for_bit_level_flight(model, bird):
     p, v = _random(model, 5)
-    a = evaluate_cycle(model, p, v, bird=BIRDS[bird], backend="numpy")
-    b = evaluate_cycle(model, p, v, climb=0.0, bird=BIRDS[bird], backend="numpy")
-    c = evaluate_cycle(model, p, v, climb=np.zeros(5), bird=BIRDS[bird], backend="numpy")
+    a = evaluate_cycle(model, p, v, bird=BIRDS[bird], n=64, backend="numpy")
+    b = evaluate_cycle(model, p, v, climb=0.0, bird=BIRDS[bird], n=64, backend="numpy")
+    c = evaluate_cycle(model, p, v, climb=np.zeros(5), bird=BIRDS[bird], n=64, backend="numpy")
     for other in (b, c):
         for k in ("Fx", "Fy", "Fz", "P"):
             assert np.array_equal(getattr(a.mean, k), getattr(other.mean, k))

@@ -12,6 +12,7 @@ from hypothesis import strategies as st
 
 import birdsim
 from birdsim import Bird, evaluate_cycle, get_model
+from birdsim.physics.cycle import DEFAULT_SAMPLES
 from birdsim.physics.examples import EXAMPLES, example
 from reference_flapcost import flapcost_histories
 
@@ -19,8 +20,9 @@ PI = math.pi
 
 
 def ev(eq: int, **kw):
+    # n = 64 unless given: the example tests below index samples (phase k / 64)
     e = example(eq)
-    return evaluate_cycle(e.model, e.params, e.speed, check_bounds=False, **kw)
+    return evaluate_cycle(e.model, e.params, e.speed, check_bounds=False, **{"n": 64, **kw})
 
 
 # ---- an independent path: the appendix flapcost, transcribed as a loop ---------------
@@ -237,9 +239,9 @@ def test_batched_equals_one_at_a_time(name, count, seed):
     x = lo + (hi - lo) * r.random((count, len(lo)))
     v = 1.5 * r.random(count)
     names = get_model(name).param_names
-    batch = evaluate_cycle(name, {n: x[:, i] for i, n in enumerate(names)}, v)
+    batch = evaluate_cycle(name, {n: x[:, i] for i, n in enumerate(names)}, v, n=64)  # layout, not resolution
     for j in sorted({0, count // 2, count - 1}):
-        one = evaluate_cycle(name, {n: x[j, i] for i, n in enumerate(names)}, v[j])
+        one = evaluate_cycle(name, {n: x[j, i] for i, n in enumerate(names)}, v[j], n=64)
         # same arithmetic in a different array layout: round-off only
         np.testing.assert_allclose(batch.panel_force_earth[j], one.panel_force_earth, rtol=0, atol=1e-14)
         np.testing.assert_allclose(batch.mean.P[j], one.mean.P, rtol=0, atol=1e-14)
@@ -248,7 +250,8 @@ def test_batched_equals_one_at_a_time(name, count, seed):
 def test_batch_shape_broadcasts():
     p = dict(pitch=np.array([[0.1], [0.2]]), flap_amp=np.array([0.3, 0.4, 0.5]), twist_amp=0.2)
     c = evaluate_cycle("m1", p, 0.5)
-    assert c.mean.Fz.shape == (2, 3) and c.Fz.shape == (2, 3, 64) and c.panel_force_earth.shape == (2, 3, 1, 64, 3)
+    n = DEFAULT_SAMPLES  # the default sample count
+    assert c.mean.Fz.shape == (2, 3) and c.Fz.shape == (2, 3, n) and c.panel_force_earth.shape == (2, 3, 1, n, 3)
 
 
 def test_shapes_that_do_not_broadcast_are_one_line():
@@ -274,7 +277,7 @@ def test_induced_velocity_is_the_fixed_point(speed):
 
     bird = Bird(induced_velocity=True)
     p = dict(pitch=1.4, flap_amp=1.5, twist_amp=0.7) if speed == 0 else dict(pitch=0.2, flap_amp=1.0, twist_amp=0.3)
-    c = evaluate_cycle("m1", p, speed, bird=bird)
+    c = evaluate_cycle("m1", p, speed, bird=bird, n=64)
     f = 2.0 * c.force_earth.mean(axis=-2)[None]
     f[:, 1] = 0.0
     vi = induced_velocity(f, np.array([speed]), bird.rho, bird.disc_area)

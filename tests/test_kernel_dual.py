@@ -39,7 +39,7 @@ def test_gradients_equal_central_differences(model, option):
     C = np.full(len(V), climb * bird.omega * bird.semispan)
     flat = {k: X[:, j] for j, k in enumerate(m.param_names)}
     vals, grads = kernel.means_and_gradients(m, flat, V, C, bird, sample_phases(64, False))
-    ref = evaluate_cycle(model, flat, V, climb=C, bird=bird, backend="numpy")
+    ref = evaluate_cycle(model, flat, V, climb=C, bird=bird, n=64, backend="numpy")
     np.testing.assert_allclose(vals[:, 2], ref.force_earth[..., 2].mean(-1), rtol=0, atol=1e-12 * np.abs(vals).max())
     fd = _fd(m, X, V, C, bird)
     for r in (0, 2, 3):

@@ -16,6 +16,7 @@ import numpy as np
 
 from birdsim.errors import BirdsimError
 from birdsim.physics.bird import Bird
+from birdsim.physics.cycle import DEFAULT_SAMPLES
 from birdsim.tables.cost import CostWeights
 from birdsim.tables.lookup import AXES, CLIMB
 
@@ -105,7 +106,7 @@ class BuildSettings:
     """Solver settings of a table build (recorded in the table's provenance)."""
 
     n_search: int = 32  # samples per wingbeat during the search
-    n_final: int = 64  # samples per wingbeat of the final check (the stored values)
+    n_final: int = DEFAULT_SAMPLES  # samples per wingbeat of the final check (the stored values)
     screen: int = 1024  # space-filling candidates per V slice, shared by its cells
     starts: int = 2  # screen candidates polished where the warm start is poor
     screen_gap: float = 0.02  # multi-start unless the warm start beats the best screen candidate by this
