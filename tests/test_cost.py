@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from birdsim import evaluate_cycle, get_model
+from birdsim.physics.cycle import DEFAULT_SAMPLES
 from birdsim.tables.cost import FRACTION_NAMES, CostWeights, breakdown_from_forces, evaluate_cost, other_cost
 from birdsim.errors import BirdsimError
 
@@ -21,7 +22,7 @@ def test_cost_is_the_flapcost_of_the_cycle_means(model):
     m, X = rows(model, 5)
     b = evaluate_cost(m, X, 0.1, -0.2, 0.4)
     for k in range(5):
-        mean = evaluate_cycle(model, dict(zip(m.param_names, X[k])), 0.4, n=64).mean  # one by one, cost's n
+        mean = evaluate_cycle(model, dict(zip(m.param_names, X[k])), 0.4).mean  # one by one, the same default n
         expect = abs(float(mean.Fx) - 0.1) + abs(float(mean.Fz) + 0.2) + 0.5 * abs(float(mean.P))
         # 1e-12: the same arithmetic, batched vs single
         assert float(b.total[k]) == pytest.approx(expect, abs=1e-12)
@@ -75,9 +76,9 @@ def test_climb_threads_through_cost_and_force_problem():
     m = get_model("m3")
     X = np.array([[0.3, 0.8, 0.3, 0.2]])
     b = evaluate_cost(m, X, 0.1, -0.2, 0.5, climb=0.3)
-    c = evaluate_cycle("m3", {k: X[0, i] for i, k in enumerate(m.param_names)}, 0.5, climb=0.3, n=64).mean
+    c = evaluate_cycle("m3", {k: X[0, i] for i, k in enumerate(m.param_names)}, 0.5, climb=0.3).mean
     assert float(b.Fz[0]) == float(c.Fz) and float(b.Fx[0]) == float(c.Fx)
-    prob = ForceProblem(m, 0.1, -0.2, 0.5, climb=0.3, n=64)
+    prob = ForceProblem(m, 0.1, -0.2, 0.5, climb=0.3, n=DEFAULT_SAMPLES)
     assert prob.achieved(X[0]) == (float(c.Fx), float(c.Fz), float(c.P))
     level = evaluate_cost(m, X, 0.1, -0.2, 0.5)
     assert float(level.Fz[0]) != float(b.Fz[0])

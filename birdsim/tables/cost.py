@@ -25,7 +25,7 @@ import numpy as np
 from birdsim.physics import kernel
 from birdsim.physics.aero import body_drag
 from birdsim.physics.bird import Bird
-from birdsim.physics.cycle import evaluate_cycle, sample_phases
+from birdsim.physics.cycle import DEFAULT_SAMPLES, evaluate_cycle, sample_phases
 from birdsim.errors import BirdsimError
 from birdsim.physics.kinematics import KinematicModel
 
@@ -108,7 +108,7 @@ def forces(
     X: np.ndarray,
     speed: np.ndarray | float,
     bird: Bird,
-    n: int = 64,
+    n: int = DEFAULT_SAMPLES,
     climb: np.ndarray | float = 0.0,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Achieved mean (Fx, Fz, P) of the parameter rows ``X`` (B x d), one batched cycle
@@ -136,7 +136,7 @@ def forces_and_gradients(
     X: np.ndarray,
     speed: np.ndarray | float,
     bird: Bird,
-    n: int = 64,
+    n: int = DEFAULT_SAMPLES,
     climb: np.ndarray | float = 0.0,
 ) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]:
     """Mean (Fx, Fz, P) of the rows of ``X`` (B x d) and their exact gradients.
@@ -271,7 +271,7 @@ def evaluate_cost(
     weights: CostWeights | None = None,
     bird: Bird | None = None,
     previous: np.ndarray | None = None,
-    n: int = 64,
+    n: int = DEFAULT_SAMPLES,
     climb: np.ndarray | float = 0.0,
 ) -> CostBreakdown:
     """Every cost term of the parameter rows ``X`` (B x d) for demands (Fx_d, Fz_d) at
