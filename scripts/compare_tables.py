@@ -32,9 +32,11 @@ def recost(t: dict, meta: dict, samples: int) -> tuple[np.ndarray, np.ndarray]:
     model = get_model(meta["model"])
     bird = Bird.from_dict(meta["bird"]) if "bird" in meta else Bird()
     weights = CostWeights(**meta["cost_weights"]) if "cost_weights" in meta else CostWeights()
-    Fx, Fz, V = np.meshgrid(t["axis_Fx"], t["axis_Fz"], t["axis_V"], indexing="ij")
+    axes = [t["axis_Fx"], t["axis_Fz"], t["axis_V"]] + ([t["axis_climb"]] if "axis_climb" in t else [])
+    Fx, Fz, V, *climb = np.meshgrid(*axes, indexing="ij")
     X = t["params"].reshape(-1, t["params"].shape[-1])
-    b = evaluate_cost(model, X, Fx.ravel(), Fz.ravel(), V.ravel(), weights=weights, bird=bird, n=samples)
+    vc = climb[0].ravel() if climb else 0.0
+    b = evaluate_cost(model, X, Fx.ravel(), Fz.ravel(), V.ravel(), weights=weights, bird=bird, n=samples, climb=vc)
     miss = np.maximum(np.abs(b.Fx - Fx.ravel()), np.abs(b.Fz - Fz.ravel()))
     return b.total.reshape(Fx.shape), miss.reshape(Fx.shape)
 
@@ -61,7 +63,8 @@ def main(argv: list[str]) -> int:
         print(f"wingbeat evaluations per cell: old {t0['evaluations'].mean():.0f}, new {t1['evaluations'].mean():.0f}")
     for idx in np.argwhere(worse)[:10]:
         i = tuple(idx)
-        print(f"  worse at Fx={t0['axis_Fx'][i[0]]:+.2f} Fz={t0['axis_Fz'][i[1]]:+.2f} V={t0['axis_V'][i[2]]:.1f}: {diff[i]:+.2e}")
+        at_climb = f" climb={t0['axis_climb'][i[3]]:+.2f}" if len(i) > 3 else ""
+        print(f"  worse at Fx={t0['axis_Fx'][i[0]]:+.2f} Fz={t0['axis_Fz'][i[1]]:+.2f} V={t0['axis_V'][i[2]]:.1f}{at_climb}: {diff[i]:+.2e}")
     return 0 if not worse.any() and not (ok0 & ~ok1).any() else 1
 
 
