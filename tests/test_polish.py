@@ -76,7 +76,8 @@ def test_cold_cells_are_always_polished():
 
 @pytest.mark.parametrize(
     "name, value",
-    [("polish_near", float("nan")), ("polish_near", -0.1), ("polish_excess", float("nan")), ("polish_excess", -1.0)],
+    [("polish_near", float("nan")), ("polish_near", -0.1), ("polish_excess", float("nan")), ("polish_excess", -1.0),
+     ("polish_rule", "yes"), ("polish_rule", 1), ("v_passes", "no")],
 )
 def test_bad_polish_settings(name, value):
     with pytest.raises(BirdsimError, match=f"{name}=.* is invalid"):

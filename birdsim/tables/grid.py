@@ -131,6 +131,9 @@ class BuildSettings:
         for name in ("n_search", "n_final", "screen", "maxiter"):
             if int(getattr(self, name)) < 2:
                 raise BirdsimError(f"{name}={getattr(self, name)!r} is invalid; allowed: an integer >= 2")
+        for name in ("polish_rule", "v_passes"):
+            if not isinstance(getattr(self, name), bool):
+                raise BirdsimError(f"{name}={getattr(self, name)!r} is invalid; allowed: True or False")
         # written as "not (ok)" so that NaN is refused too (every comparison with NaN is False)
         if not self.reach_tol > 0:
             raise BirdsimError(f"reach_tol={self.reach_tol!r} is invalid; allowed: a number > 0")
