@@ -23,7 +23,10 @@ CLIMB_GRID = "Fx=-0.5:0.5:5,Fz=-0.5:0:5,V=0:1:3,climb=-0.5:0.5:3"  # m4, 225 cel
 
 
 def _cpu_children() -> float:
-    own, kids = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+    own, kids = (
+        resource.getrusage(resource.RUSAGE_SELF),
+        resource.getrusage(resource.RUSAGE_CHILDREN),
+    )
     return own.ru_utime + own.ru_stime + kids.ru_utime + kids.ru_stime
 
 
@@ -56,7 +59,10 @@ def pool_vs_dask() -> tuple[float, float]:
         t1 = time.perf_counter()
         dask = build_table(cfg, executor=ex)
         t_dask = time.perf_counter() - t1
-    same = all(getattr(pool, k).tobytes() == getattr(dask, k).tobytes() for k in ("params", "cost", "status_code"))
+    same = all(
+        getattr(pool, k).tobytes() == getattr(dask, k).tobytes()
+        for k in ("params", "cost", "status_code")
+    )
     cells = math.prod(cfg.grid.shape)
     print(
         f"m1 {'x'.join(map(str, cfg.grid.shape))} ({cells} cells, tasks of {cfg.grid.shape[0] * cfg.grid.shape[1]} cells): "
@@ -80,16 +86,22 @@ def climb_cost(per_task: float) -> None:
         f"{t.meta['counts']['ok']} ok"
     )
     full = 11 * 11 * 11 * 7
-    print(f"  -> 11x11x11x7 m4 ({full} cells) on 2 idle cores: about {full * per_cell / 2 / 60:.1f} min")
+    print(
+        f"  -> 11x11x11x7 m4 ({full} cells) on 2 idle cores: about {full * per_cell / 2 / 60:.1f} min"
+    )
     # 21^3 x 11 on 64 workers: phases run one after the other; a phase of T tasks of
     # c cells each takes ceil(T / 64) waves of c * per_cell (+ overhead) seconds
     n, nv, nc, w = 21, 21, 11, 64
-    phases = [(nv * nc, n * n), (n * nc, n * nv), (n * nv, n * nc)]  # slices, V lines, climb lines: (tasks, cells per task)
+    phases = [
+        (nv * nc, n * n),
+        (n * nc, n * nv),
+        (n * nv, n * nc),
+    ]  # slices, V lines, climb lines: (tasks, cells per task)
     # upper bound: every phase charged the whole per-cell cost; lower: perfectly spread
     upper = sum(math.ceil(T / w) * (c * per_cell + per_task) for T, c in phases)
-    lower = n ** 3 * nc * per_cell / w + sum(math.ceil(T / w) for T, _ in phases) * per_task
+    lower = n**3 * nc * per_cell / w + sum(math.ceil(T / w) for T, _ in phases) * per_task
     print(
-        f"  -> 21x21x21x11 m4 ({n ** 3 * nc} cells) on {w} workers: between {lower / 60:.1f} min (work spread perfectly) "
+        f"  -> 21x21x21x11 m4 ({n**3 * nc} cells) on {w} workers: between {lower / 60:.1f} min (work spread perfectly) "
         f"and {upper / 60:.1f} min (each of the 3 phases, 231, 231 and 441 tasks, charged the whole per-cell cost)"
     )
 

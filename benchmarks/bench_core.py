@@ -44,7 +44,9 @@ def _kernel_vs_numpy(n: int = 64, count: int = 4096) -> None:
     from birdsim.tables.cost import forces_and_gradients
 
     print(f"kernel vs numpy, {count} wingbeats x {n} samples, kernel threads = {kernel.threads()}")
-    print(f"{'model':6s} {'kernel/s':>10s} {'numpy/s':>10s} {'ratio':>6s} | {'kernel/CPU-s':>12s} {'numpy/CPU-s':>12s} | {'grad/s':>8s}")
+    print(
+        f"{'model':6s} {'kernel/s':>10s} {'numpy/s':>10s} {'ratio':>6s} | {'kernel/CPU-s':>12s} {'numpy/CPU-s':>12s} | {'grad/s':>8s}"
+    )
     for model in birdsim.MODELS:
         params, speed = _params(model, count)
         best = {}
@@ -59,7 +61,9 @@ def _kernel_vs_numpy(n: int = 64, count: int = 4096) -> None:
         X = np.stack([params[k] for k in m.param_names], axis=-1)
         grad = _rate(lambda: forces_and_gradients(m, X, speed, birdsim.Bird(), n), count, 0.5)
         (kw, kc), (nw, nc) = best["kernel"], best["numpy"]
-        print(f"{model:6s} {kw:10.0f} {nw:10.0f} {kw / nw:5.1f}x | {kc:12.0f} {nc:12.0f} | {grad:8.0f}")
+        print(
+            f"{model:6s} {kw:10.0f} {nw:10.0f} {kw / nw:5.1f}x | {kc:12.0f} {nc:12.0f} | {grad:8.0f}"
+        )
     print("targets (issue 17): m4 kernel >= 2e5/s and >= 4x numpy; m3 kernel >= 4e5/s")
 
 
@@ -76,10 +80,14 @@ def _default_samples(count: int = 4096, reference: int = 4096) -> None:
     from birdsim.physics.cycle import DEFAULT_SAMPLES
 
     n = DEFAULT_SAMPLES
-    print(f"default samples n = {n}: accuracy against n = {reference}, and kernel@{n} vs numpy@64 "
-          f"({count} wingbeats, kernel threads = {kernel.threads()}, load {_os.getloadavg()[0]:.1f})")
-    print(f"{'model':6s} {'within 1e-7':>11s} {'p99.9':>8s} | {'kernel/s':>9s} {'numpy64/s':>9s} {'ratio':>6s} | "
-          f"{'kernel/CPU-s':>12s} {'numpy64/CPU-s':>13s} {'ratio':>6s}")
+    print(
+        f"default samples n = {n}: accuracy against n = {reference}, and kernel@{n} vs numpy@64 "
+        f"({count} wingbeats, kernel threads = {kernel.threads()}, load {_os.getloadavg()[0]:.1f})"
+    )
+    print(
+        f"{'model':6s} {'within 1e-7':>11s} {'p99.9':>8s} | {'kernel/s':>9s} {'numpy64/s':>9s} {'ratio':>6s} | "
+        f"{'kernel/CPU-s':>12s} {'numpy64/CPU-s':>13s} {'ratio':>6s}"
+    )
     for model in birdsim.MODELS:
         params, speed = _params(model, count, seed=11)
         ref = birdsim.evaluate_cycle(model, params, speed, n=reference).mean
@@ -94,9 +102,13 @@ def _default_samples(count: int = 4096, reference: int = 4096) -> None:
                 bw, bc = best.get(be, (0.0, 0.0))
                 best[be] = (max(bw, w), max(bc, c))
         (kw, kc), (nw, nc) = best["kernel"], best["numpy"]
-        print(f"{model:6s} {np.mean(err <= 1e-7):11.3%} {np.quantile(err, 0.999):8.1e} | {kw:9.0f} {nw:9.0f} {kw / nw:5.2f}x | "
-              f"{kc:12.0f} {nc:13.0f} {kc / nc:5.2f}x")
-    print(f"target (issue 17): >= 99.9 % within 1e-7 for every model, kernel@{n} wall >= numpy@64 wall")
+        print(
+            f"{model:6s} {np.mean(err <= 1e-7):11.3%} {np.quantile(err, 0.999):8.1e} | {kw:9.0f} {nw:9.0f} {kw / nw:5.2f}x | "
+            f"{kc:12.0f} {nc:13.0f} {kc / nc:5.2f}x"
+        )
+    print(
+        f"target (issue 17): >= 99.9 % within 1e-7 for every model, kernel@{n} wall >= numpy@64 wall"
+    )
 
 
 def _callback_cost() -> None:
@@ -112,8 +124,15 @@ def _callback_cost() -> None:
     bird = birdsim.Bird()
     for name in ("m1", "m4"):
         m = build_model(name, bird, scene=True)
-        traj = trajectory(m, name, birdsim.get_model(name).guess("cruise"), np.arange(8) * m.opt.timestep, bird,
-                          position_seed=(0, 0, -50), velocity_seed=(0.5, 0, 0.2))
+        traj = trajectory(
+            m,
+            name,
+            birdsim.get_model(name).guess("cruise"),
+            np.arange(8) * m.opt.timestep,
+            bird,
+            position_seed=(0, 0, -50),
+            velocity_seed=(0.5, 0, 0.2),
+        )
         d = mujoco.MjData(m)
         d.qpos[:], d.qvel[:] = traj.qpos[3], traj.qvel[3]
         mujoco.mj_forward(m, d)
@@ -124,7 +143,9 @@ def _callback_cost() -> None:
             for _ in range(1000):
                 cb(m, d)
             best = min(best, (_t.perf_counter() - t0) / 1000)
-        print(f"passive callback {name}: {best * 1e6:6.1f} us per call (climbing body: drag with X and Z parts)")
+        print(
+            f"passive callback {name}: {best * 1e6:6.1f} us per call (climbing body: drag with X and Z parts)"
+        )
 
 
 def main() -> None:
@@ -132,18 +153,34 @@ def main() -> None:
     _default_samples()
     _callback_cost()
     n = 64
-    print(f"numpy path: wingbeat evaluations per second, {n} samples each (mean forces and power of one wing)")
-    print(f"{'model':6s} {'batched':>12s} {'one-at-a-time':>14s} {'plain loop':>11s} {'batch/one':>10s} {'batch/plain':>12s}")
+    print(
+        f"numpy path: wingbeat evaluations per second, {n} samples each (mean forces and power of one wing)"
+    )
+    print(
+        f"{'model':6s} {'batched':>12s} {'one-at-a-time':>14s} {'plain loop':>11s} {'batch/one':>10s} {'batch/plain':>12s}"
+    )
     for model in birdsim.MODELS:
         params, speed = _params(model, 4096)
-        batched = _rate(lambda: birdsim.evaluate_cycle(model, params, speed, n=n, backend="numpy").mean, 4096)
+        batched = _rate(
+            lambda: birdsim.evaluate_cycle(model, params, speed, n=n, backend="numpy").mean, 4096
+        )
         single_p = {k: float(v[0]) for k, v in params.items()}
-        one = _rate(lambda: birdsim.evaluate_cycle(model, single_p, float(speed[0]), n=n, backend="numpy").mean, 1, 0.5)
+        one = _rate(
+            lambda: (
+                birdsim.evaluate_cycle(model, single_p, float(speed[0]), n=n, backend="numpy").mean
+            ),
+            1,
+            0.5,
+        )
         if model != "m4":  # the appendix transcription covers the single-panel models
             times = np.linspace(0, 2 * np.pi, n, endpoint=False)
-            plain = _rate(lambda: flapcost_histories(model, single_p, float(speed[0]), times), 1, 0.5)
+            plain = _rate(
+                lambda: flapcost_histories(model, single_p, float(speed[0]), times), 1, 0.5
+            )
             plain_s, ratio_plain = f"{plain:11.0f}", f"{batched / plain:11.0f}x"
         else:
             plain_s, ratio_plain = f"{'-':>11s}", f"{'-':>12s}"
-        print(f"{model:6s} {batched:12.0f} {one:14.0f} {plain_s} {batched / one:9.0f}x {ratio_plain}")
+        print(
+            f"{model:6s} {batched:12.0f} {one:14.0f} {plain_s} {batched / one:9.0f}x {ratio_plain}"
+        )
     print("target (issue 2): >= 1e5 batched evaluations per second for m3 on this 2-core machine")

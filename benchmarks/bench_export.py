@@ -36,9 +36,22 @@ def _free_flight(bird_file: str, beat_rate: float | None):
     bird = Bird.from_toml(bird_file)
     c0, t0 = time.process_time(), time.perf_counter()
     beats = (SECONDS + 1.0 / FPS) * time_per_second(bird, beat_rate) / bird.period
-    result = fly(PATH_PRESETS["cruise"], load_table_for(bird, DEMO_MODEL, None), bird, DEMO_MODEL, beats=beats)
-    frames = frames_from_log(log_arrays(result, "cruise"), fps=FPS, beat_rate=beat_rate, seconds=SECONDS)
-    return frames, time.perf_counter() - t0, time.process_time() - c0, f"{beats:.1f} wingbeats flown"
+    result = fly(
+        PATH_PRESETS["cruise"],
+        load_table_for(bird, DEMO_MODEL, None),
+        bird,
+        DEMO_MODEL,
+        beats=beats,
+    )
+    frames = frames_from_log(
+        log_arrays(result, "cruise"), fps=FPS, beat_rate=beat_rate, seconds=SECONDS
+    )
+    return (
+        frames,
+        time.perf_counter() - t0,
+        time.process_time() - c0,
+        f"{beats:.1f} wingbeats flown",
+    )
 
 
 def _kinematic():
@@ -47,7 +60,9 @@ def _kinematic():
     from birdsim.tables.lookup import load_table
 
     c0, t0 = time.process_time(), time.perf_counter()
-    frames = from_playback(get_manoeuvre("cruise"), load_table("tables/m4.npz"), model="m4", fps=FPS, seconds=SECONDS)
+    frames = from_playback(
+        get_manoeuvre("cruise"), load_table("tables/m4.npz"), model="m4", fps=FPS, seconds=SECONDS
+    )
     return frames, time.perf_counter() - t0, time.process_time() - c0, "playback"
 
 
@@ -66,16 +81,29 @@ def main() -> None:
         if which not in (name, "all"):
             continue
         frames, base, cpu_base, note = make()
-        print(f"{name}: {frames.frames} frames ({note}): flight and frames {base:.2f} s wall, {cpu_base:.2f} s CPU")
+        print(
+            f"{name}: {frames.frames} frames ({note}): flight and frames {base:.2f} s wall, {cpu_base:.2f} s CPU"
+        )
         with tempfile.TemporaryDirectory() as tmp:
-            for fmt, suffix in (("usd", ".usd"), ("usda", ".usda"), ("bvh", ".bvh"), ("csv", ".csv")):
+            for fmt, suffix in (
+                ("usd", ".usd"),
+                ("usda", ".usda"),
+                ("bvh", ".bvh"),
+                ("csv", ".csv"),
+            ):
                 path = Path(tmp) / f"cruise{suffix}"
                 c0, t0 = time.process_time(), time.perf_counter()
                 write(frames, "usd" if fmt == "usda" else fmt, path)
                 dt, dc = time.perf_counter() - t0, time.process_time() - c0
                 size = path.stat().st_size / 1e6
-                verdict = "ok" if base + dt < 10 and (not fmt.startswith("usd") or size < 20) else "OVER TARGET (wall)"
-                print(f"  {fmt:5s} write {dt:5.2f} s; total {base + dt:5.2f} s wall, {cpu_base + dc:5.2f} s CPU; {size:6.2f} MB  {verdict}")
+                verdict = (
+                    "ok"
+                    if base + dt < 10 and (not fmt.startswith("usd") or size < 20)
+                    else "OVER TARGET (wall)"
+                )
+                print(
+                    f"  {fmt:5s} write {dt:5.2f} s; total {base + dt:5.2f} s wall, {cpu_base + dc:5.2f} s CPU; {size:6.2f} MB  {verdict}"
+                )
 
 
 if __name__ == "__main__":

@@ -55,29 +55,65 @@ def _table_path(tmp: Path) -> tuple[str, str]:
 
 
 def _python() -> str:
-    return str(ROOT / ".venv" / "bin" / "python") if (ROOT / ".venv" / "bin" / "python").exists() else sys.executable
+    return (
+        str(ROOT / ".venv" / "bin" / "python")
+        if (ROOT / ".venv" / "bin" / "python").exists()
+        else sys.executable
+    )
 
 
 QUALITIES = ("draft", "good", "best")
 
 
-def render_only(backend: str, w: int, h: int, table: str, quality: str = "good") -> tuple[float, float]:
+def render_only(
+    backend: str, w: int, h: int, table: str, quality: str = "good"
+) -> tuple[float, float]:
     """(frames per wall second, CPU milliseconds per frame) of the renderer alone."""
-    out = subprocess.run([_python(), "-c", _RENDER_ONLY, backend, str(w), str(h), table, quality], capture_output=True, text=True, cwd=ROOT)
+    out = subprocess.run(
+        [_python(), "-c", _RENDER_ONLY, backend, str(w), str(h), table, quality],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+    )
     if out.returncode:
         raise RuntimeError(out.stderr.strip().splitlines()[-1])
     r = json.loads(out.stdout.strip().splitlines()[-1])
     return r["frames"] / r["seconds"], 1000.0 * r["cpu"] / r["frames"]
 
 
-def command(backend: str, w: int, h: int, table: str | None, tmp: Path, preset: str = "cruise", seconds: str | None = "3", quality: str = "good") -> tuple[float, float, int]:
+def command(
+    backend: str,
+    w: int,
+    h: int,
+    table: str | None,
+    tmp: Path,
+    preset: str = "cruise",
+    seconds: str | None = "3",
+    quality: str = "good",
+) -> tuple[float, float, int]:
     """(wall seconds, video seconds, frames) of one ``birdsim render`` process: the
     kinematic playback of ``table``, or with ``table=None`` the demo's free flight (demo
     bird, m3, 3 wingbeats per second of video, as ``make demo``)."""
     out = tmp / f"{preset}-{backend}-{w}.mp4"
     source = ["--kinematic", "--table", table] if table else ["--model", "m3", "--beat-rate", "3"]
-    argv = [_python(), "-m", "birdsim.cli", "render", preset, *source, "--out", str(out), "--size", f"{w}x{h}", "--gl", backend,
-            "--force", "--quiet", "--quality", quality]
+    argv = [
+        _python(),
+        "-m",
+        "birdsim.cli",
+        "render",
+        preset,
+        *source,
+        "--out",
+        str(out),
+        "--size",
+        f"{w}x{h}",
+        "--gl",
+        backend,
+        "--force",
+        "--quiet",
+        "--quality",
+        quality,
+    ]
     if seconds:
         argv += ["--seconds", seconds]
     t0 = time.perf_counter()
@@ -102,12 +138,16 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as d:
         tmp = Path(d)
         table, what = _table_path(tmp)
-        print(f"table: {what}; clip: cruise, 3 s of video at 30 fps (90 frames), trails and overlay on; machine load {_load()}")
+        print(
+            f"table: {what}; clip: cruise, 3 s of video at 30 fps (90 frames), trails and overlay on; machine load {_load()}"
+        )
         b = backends[0]
         for w, h in SIZES:
             for q in QUALITIES:
                 fps_render, cpu_ms = render_only(b, w, h, table, q)
-                print(f"{w}x{h} {b:6s} --quality {q:5s}: renderer alone {fps_render:6.1f} frames/s ({cpu_ms:5.1f} CPU ms/frame)")
+                print(
+                    f"{w}x{h} {b:6s} --quality {q:5s}: renderer alone {fps_render:6.1f} frames/s ({cpu_ms:5.1f} CPU ms/frame)"
+                )
         rates: dict[tuple[str, int], float] = {}
         for w, h in SIZES:
             for b in backends:
@@ -120,7 +160,9 @@ def main() -> None:
                 )
         if len(backends) == 2:
             for w, _ in SIZES:
-                print(f"ratio renderer alone EGL/OSMesa at {w} wide: {rates[('egl', w)] / rates[('osmesa', w)]:.2f}")
+                print(
+                    f"ratio renderer alone EGL/OSMesa at {w} wide: {rates[('egl', w)] / rates[('osmesa', w)]:.2f}"
+                )
         b = backends[0]
         for (w, h), quality, target in (((640, 480), "good", 60.0), ((1280, 720), "best", 180.0)):
             t0, c0 = time.perf_counter(), _children_cpu()

@@ -31,28 +31,48 @@ def main() -> None:
     def batched() -> None:
         fd.wrist_upward_force(math.pi / 5, 2 * math.pi / 5, lag[:, None], bias[None, :], n=32)
 
-    sub = [(a, b) for a in lag[::3] for b in bias[::3]]  # a loop over every set takes long; time a tenth
+    sub = [
+        (a, b) for a in lag[::3] for b in bias[::3]
+    ]  # a loop over every set takes long; time a tenth
 
     def looped() -> None:
         for a, b in sub:
             evaluate_cycle(
                 "m4",
-                dict(pitch=0.0, flap_amp=math.pi / 5, twist_amp=0.0, stroke_plane=0.0, wrist_amp=2 * math.pi / 5, wrist_bias=b, wrist_lag=a),
-                0.5, n=32, check_bounds=False,
+                dict(
+                    pitch=0.0,
+                    flap_amp=math.pi / 5,
+                    twist_amp=0.0,
+                    stroke_plane=0.0,
+                    wrist_amp=2 * math.pi / 5,
+                    wrist_bias=b,
+                    wrist_lag=a,
+                ),
+                0.5,
+                n=32,
+                check_bounds=False,
             )
 
     tb = _best(batched)
     tl = _best(looped, 1) * sets / len(sub)
-    print(f"report grid (Fig 26, m4, {sets} sets x 32 samples): batched {tb * 1e3:.1f} ms, "
-          f"one call per set {tl * 1e3:.0f} ms (from {len(sub)} sets), ratio {tl / tb:.1f}x")
+    print(
+        f"report grid (Fig 26, m4, {sets} sets x 32 samples): batched {tb * 1e3:.1f} ms, "
+        f"one call per set {tl * 1e3:.0f} ms (from {len(sub)} sets), ratio {tl / tb:.1f}x"
+    )
 
     from birdsim.report.report import build_report
 
     with tempfile.TemporaryDirectory() as out:
         t0 = time.perf_counter()
-        secs = build_report(out, quick=True, progress=False, only=["thrust", "wrist", "landscapes", "activity"])
+        secs = build_report(
+            out, quick=True, progress=False, only=["thrust", "wrist", "landscapes", "activity"]
+        )
         total = time.perf_counter() - t0
-    print("report --quick grid families: " + ", ".join(f"{s.family.key} {s.seconds:.2f} s" for s in secs) + f"; total {total:.2f} s")
+    print(
+        "report --quick grid families: "
+        + ", ".join(f"{s.family.key} {s.seconds:.2f} s" for s in secs)
+        + f"; total {total:.2f} s"
+    )
 
 
 if __name__ == "__main__":

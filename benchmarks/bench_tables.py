@@ -10,17 +10,20 @@ import os
 import resource
 import time
 
+from birdsim.physics.kinematics import MODELS
 from birdsim.tables.build import BuildConfig, Grid, build_table, solve_slice
 from birdsim.tables.point import PointForces
 from birdsim.tables.smoothness import table_smoothness
-from birdsim.physics.kinematics import MODELS
 
 TARGETS = {"base": 10.0, "m4": 10.0}  # seconds on 2 cores: issue 3 (base), issue 17 (m4)
 
 
 def _cpu_all() -> float:
     """CPU seconds of this process and its finished children (the worker processes)."""
-    own, kids = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+    own, kids = (
+        resource.getrusage(resource.RUSAGE_SELF),
+        resource.getrusage(resource.RUSAGE_CHILDREN),
+    )
     return own.ru_utime + own.ru_stime + kids.ru_utime + kids.ru_stime
 
 
@@ -45,7 +48,9 @@ def point_ratio(model: str = "m4") -> None:
     finally:
         PointForces.create = create  # type: ignore[method-assign]
     a, b = min(times["lean"]), min(times["batched"])
-    print(f"{model} slice V=0.5, 121 cells: lean one-row path {a:.2f} s CPU, batched path {b:.2f} s CPU -> {b / a:.2f}x")
+    print(
+        f"{model} slice V=0.5, 121 cells: lean one-row path {a:.2f} s CPU, batched path {b:.2f} s CPU -> {b / a:.2f}x"
+    )
 
 
 def full_tables(models: list[str]) -> None:
@@ -57,7 +62,11 @@ def full_tables(models: list[str]) -> None:
         c = t.meta["counts"]
         rp = t.meta.get("regularising_pass", {})
         sm = table_smoothness(t)
-        target = f" (target < {TARGETS[model]:.0f} s: {'met' if dt < TARGETS[model] else 'MISSED'})" if model in TARGETS else ""
+        target = (
+            f" (target < {TARGETS[model]:.0f} s: {'met' if dt < TARGETS[model] else 'MISSED'})"
+            if model in TARGETS
+            else ""
+        )
         print(
             f"{model}: 11^3 table in {dt:.1f} s on {jobs} processes = {1331 / dt:.0f} cells/s{target}; "
             f"{cpu:.1f} CPU s (= {cpu / jobs:.1f} s on {jobs} idle cores); "

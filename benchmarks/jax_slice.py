@@ -40,7 +40,10 @@ def _jax_m4(jnp, n: int):
             "flap": (flap * jnp.sin(wt), flap * jnp.cos(wt)),
             "twist": (twist * jnp.sin(wt - jnp.pi / 2), twist * jnp.cos(wt - jnp.pi / 2)),
             "wrist_flap": (wa * jnp.sin(wt - wl) + wb, wa * jnp.cos(wt - wl)),
-            "wrist_twist": (0.25 * twist * jnp.sin(wt - jnp.pi / 2), 0.25 * twist * jnp.cos(wt - jnp.pi / 2)),
+            "wrist_twist": (
+                0.25 * twist * jnp.sin(wt - jnp.pi / 2),
+                0.25 * twist * jnp.cos(wt - jnp.pi / 2),
+            ),
         }
         cs = {k: (jnp.cos(a), jnp.sin(a), r) for k, (a, r) in q.items()}
         axes = {"stroke": "y", "flap": "x", "twist": "y", "wrist_flap": "x", "wrist_twist": "y"}
@@ -107,7 +110,9 @@ def main() -> int:
     t = time.perf_counter()
     np.asarray(grad(X, V))
     t_compile_g = time.perf_counter() - t
-    ref = birdsim.evaluate_cycle("m4", {k: X[:, i] for i, k in enumerate(m.param_names)}, V, backend="numpy")
+    ref = birdsim.evaluate_cycle(
+        "m4", {k: X[:, i] for i, k in enumerate(m.param_names)}, V, backend="numpy"
+    )
     err = np.abs(out[:, 2] - np.asarray(ref.mean.Fz)).max()
 
     def rate(fn, reps=3):
@@ -121,13 +126,21 @@ def main() -> int:
     flat = {k: X[:, i] for i, k in enumerate(m.param_names)}
     ph = sample_phases(n, False)
     rows = {
-        "numpy (reference)": rate(lambda: birdsim.evaluate_cycle("m4", flat, V, backend="numpy").mean),
-        "numba kernel, means": rate(lambda: kernel.means(m, flat, V, np.zeros(B), np.zeros((B, 3)), birdsim.Bird(), ph)),
+        "numpy (reference)": rate(
+            lambda: birdsim.evaluate_cycle("m4", flat, V, backend="numpy").mean
+        ),
+        "numba kernel, means": rate(
+            lambda: kernel.means(m, flat, V, np.zeros(B), np.zeros((B, 3)), birdsim.Bird(), ph)
+        ),
         "jax jit(vmap), means": rate(lambda: np.asarray(batched(X, V))),
-        "numba kernel, means + gradients": rate(lambda: kernel.means_and_gradients(m, flat, V, np.zeros(B), birdsim.Bird(), ph)),
+        "numba kernel, means + gradients": rate(
+            lambda: kernel.means_and_gradients(m, flat, V, np.zeros(B), birdsim.Bird(), ph)
+        ),
         "jax jit(vmap(jacfwd))": rate(lambda: np.asarray(grad(X, V))),
     }
-    print(f"m4 slice, {B} wingbeats x {n} samples; JAX {jax.__version__}; |Fz jax - numpy| = {err:.1e}")
+    print(
+        f"m4 slice, {B} wingbeats x {n} samples; JAX {jax.__version__}; |Fz jax - numpy| = {err:.1e}"
+    )
     print(f"jax compile: means {t_compile:.1f} s, gradients {t_compile_g:.1f} s")
     for k, v in rows.items():
         print(f"{k:34s} {v:10.0f} wingbeats/s")

@@ -22,8 +22,12 @@ REFERENCE = 4096
 
 def main(argv: list[str] | None = None) -> None:
     count = int((argv or sys.argv[1:] or ["4000"])[0])
-    print(f"{count} random parameter sets per model; reference n = {REFERENCE}; force error = max(|dFx|, |dFz|)")
-    print(f"{'model':6s} {'n':>5s} {'within 1e-7':>12s} {'p99.9 force':>12s} {'max force':>10s} {'p99.9 P':>10s}")
+    print(
+        f"{count} random parameter sets per model; reference n = {REFERENCE}; force error = max(|dFx|, |dFz|)"
+    )
+    print(
+        f"{'model':6s} {'n':>5s} {'within 1e-7':>12s} {'p99.9 force':>12s} {'max force':>10s} {'p99.9 P':>10s}"
+    )
     for model in birdsim.MODELS:
         m = birdsim.get_model(model)
         rng = np.random.default_rng(11)
@@ -36,7 +40,9 @@ def main(argv: list[str] | None = None) -> None:
             a = evaluate_cycle(model, p, V, n=n).mean
             ef = np.maximum(np.abs(a.Fx - ref.Fx), np.abs(a.Fz - ref.Fz))
             ep = np.abs(a.P - ref.P)
-            print(f"{model:6s} {n:5d} {np.mean(ef <= 1e-7):12.4%} {np.quantile(ef, 0.999):12.1e} {ef.max():10.1e} {np.quantile(ep, 0.999):10.1e}")
+            print(
+                f"{model:6s} {n:5d} {np.mean(ef <= 1e-7):12.4%} {np.quantile(ef, 0.999):12.1e} {ef.max():10.1e} {np.quantile(ep, 0.999):10.1e}"
+            )
 
 
 if __name__ == "__main__":

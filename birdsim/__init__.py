@@ -1,9 +1,9 @@
 """birdsim: physics-based animation of flapping bird flight (MuJoCo + blade-element aerodynamics)."""
 
+from birdsim.errors import BirdsimError, ParameterError, UnknownModelError
 from birdsim.physics.aero import Polar, RoboflyPolar, SeedPolar
 from birdsim.physics.bird import Bird
 from birdsim.physics.cycle import Cycle, MeanForces, evaluate_cycle
-from birdsim.errors import BirdsimError, ParameterError, UnknownModelError
 from birdsim.physics.kinematics import MODELS, get_model
 from birdsim.tables.lookup import LookupTable, load_table
 

@@ -30,18 +30,37 @@ COMMAND_MODULES = (
 #: The library names Python arguments at the start of its messages; per subcommand, the
 #: flag each one is on the command line (see ``commands.common.translate``).
 FLAG_NAMES: dict[str, dict[str, str]] = {
-    "forces": {"model ": "--model ", "parameter ": "--param ", "speed=": "--speed=", "n=": "--samples "},
+    "forces": {
+        "model ": "--model ",
+        "parameter ": "--param ",
+        "speed=": "--speed=",
+        "n=": "--samples ",
+    },
     "tables": {
-        "model ": "--model ", "screen=": "--screen ", "starts=": "--starts ", "relax=": "--relax ",
-        "reach_tol=": "--reach-tol ", "cost weight power=": "--power-weight ", "cost weight distance=": "--distance ",
-        "grid ": "--grid ", "Fx=": "--Fx=", "Fz=": "--Fz=", "V=": "--V=", "path (json) ": "--out (json) ", "path ": "--out ",
+        "model ": "--model ",
+        "screen=": "--screen ",
+        "starts=": "--starts ",
+        "relax=": "--relax ",
+        "reach_tol=": "--reach-tol ",
+        "cost weight power=": "--power-weight ",
+        "cost weight distance=": "--distance ",
+        "grid ": "--grid ",
+        "Fx=": "--Fx=",
+        "Fz=": "--Fz=",
+        "V=": "--V=",
+        "path (json) ": "--out (json) ",
+        "path ": "--out ",
     },
     "render": {"model ": "--model ", "path ": "--out "},
     "report": {"out=": "--out ", "only=": "--only "},
     "crosscheck": {"model ": "--model "},
 }
 #: Python hints inside a message and their flags.
-FLAG_HINTS = {"force=True (--force on the command line)": "--force", "force=True": "--force", "clip=True": "--clip"}
+FLAG_HINTS = {
+    "force=True (--force on the command line)": "--force",
+    "force=True": "--force",
+    "clip=True": "--clip",
+}
 
 #: What ``birdsim --help`` says first (the module docstring is for developers).
 DESCRIPTION = (

@@ -28,20 +28,30 @@ def check_output(path: Path, force: bool, arg: str = "path") -> Path:
     """
     path = Path(path)
     if path.exists() and not force:
-        raise BirdsimError(f"{arg} {str(path)!r} exists; allowed: a new path, or force=True to overwrite")
+        raise BirdsimError(
+            f"{arg} {str(path)!r} exists; allowed: a new path, or force=True to overwrite"
+        )
     if path.exists() and path.is_dir():
         raise BirdsimError(f"{arg} {str(path)!r} is a directory; allowed: a file path")
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
-        why = "a parent is not a folder" if isinstance(exc, (FileExistsError, NotADirectoryError)) else exc.strerror
+        why = (
+            "a parent is not a folder"
+            if isinstance(exc, (FileExistsError, NotADirectoryError))
+            else exc.strerror
+        )
         raise BirdsimError(f"{arg} {str(path)!r} cannot be created: {why}") from None
     if not os.access(path.parent, os.W_OK):
-        raise BirdsimError(f"{arg} {str(path)!r} is not writable; allowed: a path in a writable folder")
+        raise BirdsimError(
+            f"{arg} {str(path)!r} is not writable; allowed: a path in a writable folder"
+        )
     try:
         os.unlink(temporary_sibling(path))
     except OSError as exc:
-        raise BirdsimError(f"{arg} {str(path)!r} is not writable: {exc.strerror}; allowed: a path in a writable folder") from None
+        raise BirdsimError(
+            f"{arg} {str(path)!r} is not writable: {exc.strerror}; allowed: a path in a writable folder"
+        ) from None
     return path
 
 
@@ -54,7 +64,9 @@ def _umask() -> int:
 def temporary_sibling(path: Path) -> Path:
     """A fresh temporary file name in the same folder as ``path`` (same file system),
     with the permissions an ordinary new file gets (mkstemp's are 0600)."""
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".partial" + path.suffix, dir=path.parent)
+    fd, tmp = tempfile.mkstemp(
+        prefix=f".{path.name}.", suffix=".partial" + path.suffix, dir=path.parent
+    )
     os.fchmod(fd, 0o666 & ~_umask())
     os.close(fd)
     return Path(tmp)

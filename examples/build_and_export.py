@@ -51,8 +51,10 @@ path = FlightPath(
 result = fly(path, table, bird, model)
 log = log_arrays(result, path.name)
 info = summary(log)
-print(f"flew {path.name}: {info['wingbeats']:g} wingbeats, position error RMS {info['rms_error']:.3f} "
-      f"semispans, saturated in {info['wingbeats_saturated']} wingbeat(s)")
+print(
+    f"flew {path.name}: {info['wingbeats']:g} wingbeats, position error RMS {info['rms_error']:.3f} "
+    f"semispans, saturated in {info['wingbeats_saturated']} wingbeat(s)"
+)
 save_log(log, out / f"{path.name}.npz", force=True)
 
 # Export: 30 frames per second, 2 wingbeats per second of animation (the seed bird is

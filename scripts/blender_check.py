@@ -35,7 +35,15 @@ def prepare(out: Path) -> None:
     from birdsim.tables.lookup import load_table
 
     out.mkdir(parents=True, exist_ok=True)
-    fr = from_playback(get_manoeuvre("cruise"), load_table("tables/m4.npz"), model="m4", fps=FPS, beat_rate=BEAT_RATE, seconds=SECONDS, metres_per_unit=METRES_PER_UNIT)
+    fr = from_playback(
+        get_manoeuvre("cruise"),
+        load_table("tables/m4.npz"),
+        model="m4",
+        fps=FPS,
+        beat_rate=BEAT_RATE,
+        seconds=SECONDS,
+        metres_per_unit=METRES_PER_UNIT,
+    )
     write(fr, "usd", out / "cruise.usd")
     write(fr, "bvh", out / "cruise.bvh")
     expected = {
@@ -74,46 +82,84 @@ def check(out: Path) -> int:
     def report(name: str, problem: str) -> None:
         nonlocal failures
         failures += bool(problem)
-        print(f"{'FAIL' if problem else 'ok  '} {name}{': ' + problem if problem else ''}", flush=True)
+        print(
+            f"{'FAIL' if problem else 'ok  '} {name}{': ' + problem if problem else ''}", flush=True
+        )
 
     def elevation(vec) -> float:  # of the right wing's span (it points along -y), in rad
         return math.atan2(vec[2], -vec[1])
 
     def close(name: str, got, want, scale: float) -> None:
         err = max(abs(g / scale - w) for g, w in zip(got, want))
-        report(name, "" if err <= TOL else f"off by {err:.3g} semispan: {[g / scale for g in got]} vs {want}")
+        report(
+            name,
+            ""
+            if err <= TOL
+            else f"off by {err:.3g} semispan: {[g / scale for g in got]} vs {want}",
+        )
 
     # ---- USD ---------------------------------------------------------------------------
     bpy.ops.wm.read_factory_settings(use_empty=True)
     bpy.ops.wm.usd_import(filepath=str(out / "cruise.usd"))
     scene = bpy.context.scene
     first = scene.frame_start
-    report("usd frame range", "" if scene.frame_end - scene.frame_start + 1 == exp["frames"] else f"{scene.frame_start}..{scene.frame_end} for {exp['frames']} frames")
+    report(
+        "usd frame range",
+        ""
+        if scene.frame_end - scene.frame_start + 1 == exp["frames"]
+        else f"{scene.frame_start}..{scene.frame_end} for {exp['frames']} frames",
+    )
     fps = scene.render.fps / scene.render.fps_base
     if abs(fps - exp["fps"]) > 1e-9:
         # Blender 4.5's USD importer sets the frame range but not the scene's rate (it has no
         # option for it): the import step in docs/export.md sets it by hand, as done here; the
         # positions below then show that time code k is Blender frame first + k at that rate.
-        print(f"note usd frame rate: Blender's USD import left the scene at {fps:g} fps; set to the stage's {exp['fps']} fps (docs/export.md)")
+        print(
+            f"note usd frame rate: Blender's USD import left the scene at {fps:g} fps; set to the stage's {exp['fps']} fps (docs/export.md)"
+        )
         scene.render.fps, scene.render.fps_base = int(exp["fps"]), 1.0
     fps = scene.render.fps / scene.render.fps_base
-    report("usd frame rate (after the documented step)", "" if abs(fps - exp["fps"]) < 1e-9 else f"{fps} fps, expected {exp['fps']}")
+    report(
+        "usd frame rate (after the documented step)",
+        "" if abs(fps - exp["fps"]) < 1e-9 else f"{fps} fps, expected {exp['fps']}",
+    )
     body = bpy.data.objects.get("birdsim_body")
-    arm = next((o for o in bpy.data.objects if o.name.startswith("Mesh_r_arm_panel") or o.name.startswith("Mesh_Xform_r_arm_panel")), None)
-    report("usd objects", "" if body and arm else f"birdsim_body {body}, r_arm_panel {arm}; objects: {[o.name for o in bpy.data.objects][:20]}")
+    arm = next(
+        (
+            o
+            for o in bpy.data.objects
+            if o.name.startswith("Mesh_r_arm_panel") or o.name.startswith("Mesh_Xform_r_arm_panel")
+        ),
+        None,
+    )
+    report(
+        "usd objects",
+        ""
+        if body and arm
+        else f"birdsim_body {body}, r_arm_panel {arm}; objects: {[o.name for o in bpy.data.objects][:20]}",
+    )
     if body and arm:
         for k in map(int, exp["body"]):
             scene.frame_set(first + k)
-            close(f"usd body at frame {k}", list(body.matrix_world.translation), exp["body"][str(k)], exp["metres_per_unit"])
+            close(
+                f"usd body at frame {k}",
+                list(body.matrix_world.translation),
+                exp["body"][str(k)],
+                exp["metres_per_unit"],
+            )
         angles = []
         for k in range(exp["frames"]):
             scene.frame_set(first + k)
             angles.append(elevation(-arm.matrix_world.to_3x3().col[1]))
-        report("usd wing: one wingbeat per period", one_beat_per_period(angles, exp["frames_per_beat"]))
+        report(
+            "usd wing: one wingbeat per period", one_beat_per_period(angles, exp["frames_per_beat"])
+        )
 
     # ---- BVH ---------------------------------------------------------------------------
     bpy.ops.wm.read_factory_settings(use_empty=True)
-    bpy.ops.import_anim.bvh(filepath=str(out / "cruise.bvh"), update_scene_fps=True, update_scene_duration=True)
+    bpy.ops.import_anim.bvh(
+        filepath=str(out / "cruise.bvh"), update_scene_fps=True, update_scene_duration=True
+    )
     scene = bpy.context.scene
     first = scene.frame_start
     rig = next((o for o in bpy.data.objects if o.type == "ARMATURE"), None)
@@ -121,20 +167,40 @@ def check(out: Path) -> int:
     if rig is None:
         return 1
     names = [b.name for b in rig.data.bones]
-    report("bvh bones named after the MJCF joints", "" if {"root", "r_shoulder", "r_wrist_flap", "r_wrist_twist", "l_shoulder"} <= set(names) else str(names))
+    report(
+        "bvh bones named after the MJCF joints",
+        ""
+        if {"root", "r_shoulder", "r_wrist_flap", "r_wrist_twist", "l_shoulder"} <= set(names)
+        else str(names),
+    )
     # the importer never shortens the scene (1..250 by default): the action holds the range
     lo, hi = rig.animation_data.action.frame_range
-    report("bvh frame range", "" if (lo, hi) == (first, first + exp["frames"] - 1) else f"action {lo:g}..{hi:g} for {exp['frames']} frames from {first}")
+    report(
+        "bvh frame range",
+        ""
+        if (lo, hi) == (first, first + exp["frames"] - 1)
+        else f"action {lo:g}..{hi:g} for {exp['frames']} frames from {first}",
+    )
     fps = scene.render.fps / scene.render.fps_base
-    report("bvh frame rate", "" if abs(fps - exp["fps"]) < 1e-6 else f"{fps} fps, expected {exp['fps']}")
+    report(
+        "bvh frame rate",
+        "" if abs(fps - exp["fps"]) < 1e-6 else f"{fps} fps, expected {exp['fps']}",
+    )
     pose = rig.pose.bones
     for k in map(int, exp["body"]):
         scene.frame_set(first + k)
-        close(f"bvh body at frame {k}", list(rig.matrix_world @ pose["root"].head), exp["body"][str(k)], exp["metres_per_unit"])
+        close(
+            f"bvh body at frame {k}",
+            list(rig.matrix_world @ pose["root"].head),
+            exp["body"][str(k)],
+            exp["metres_per_unit"],
+        )
     angles = []
     for k in range(exp["frames"]):
         scene.frame_set(first + k)
-        span = (rig.matrix_world @ pose["r_wrist_flap"].head) - (rig.matrix_world @ pose["r_shoulder"].head)
+        span = (rig.matrix_world @ pose["r_wrist_flap"].head) - (
+            rig.matrix_world @ pose["r_shoulder"].head
+        )
         angles.append(elevation(span))
     report("bvh wing: one wingbeat per period", one_beat_per_period(angles, exp["frames_per_beat"]))
     print(f"{failures} failed" if failures else "all Blender checks passed")

@@ -32,11 +32,15 @@ def recost(t: dict, meta: dict, samples: int) -> tuple[np.ndarray, np.ndarray]:
     model = get_model(meta["model"])
     bird = Bird.from_dict(meta["bird"]) if "bird" in meta else Bird()
     weights = CostWeights(**meta["cost_weights"]) if "cost_weights" in meta else CostWeights()
-    axes = [t["axis_Fx"], t["axis_Fz"], t["axis_V"]] + ([t["axis_climb"]] if "axis_climb" in t else [])
+    axes = [t["axis_Fx"], t["axis_Fz"], t["axis_V"]] + (
+        [t["axis_climb"]] if "axis_climb" in t else []
+    )
     Fx, Fz, V, *climb = np.meshgrid(*axes, indexing="ij")
     X = t["params"].reshape(-1, t["params"].shape[-1])
     vc = climb[0].ravel() if climb else 0.0
-    b = evaluate_cost(model, X, Fx.ravel(), Fz.ravel(), V.ravel(), weights=weights, bird=bird, n=samples, climb=vc)
+    b = evaluate_cost(
+        model, X, Fx.ravel(), Fz.ravel(), V.ravel(), weights=weights, bird=bird, n=samples, climb=vc
+    )
     miss = np.maximum(np.abs(b.Fx - Fx.ravel()), np.abs(b.Fz - Fz.ravel()))
     return b.total.reshape(Fx.shape), miss.reshape(Fx.shape)
 
@@ -55,16 +59,26 @@ def main(argv: list[str]) -> int:
     ok0, ok1 = miss0 <= a.reach_tol, miss1 <= a.reach_tol
     worse = diff > 1e-6
     print(f"cells {diff.size}; cost re-evaluated at {a.samples} samples per wingbeat")
-    print(f"mean cost old {c0.mean():.6f} new {c1.mean():.6f}; new - old: mean {diff.mean():+.2e}, "
-          f"max {diff.max():+.2e}, min {diff.min():+.2e}")
-    print(f"cells costing more than 1e-6 more: {int(worse.sum())}; cheaper by more than 1e-6: {int((diff < -1e-6).sum())}")
-    print(f"reachable cells old {int(ok0.sum())} new {int(ok1.sum())}; lost {int((ok0 & ~ok1).sum())}, gained {int((ok1 & ~ok0).sum())}")
+    print(
+        f"mean cost old {c0.mean():.6f} new {c1.mean():.6f}; new - old: mean {diff.mean():+.2e}, "
+        f"max {diff.max():+.2e}, min {diff.min():+.2e}"
+    )
+    print(
+        f"cells costing more than 1e-6 more: {int(worse.sum())}; cheaper by more than 1e-6: {int((diff < -1e-6).sum())}"
+    )
+    print(
+        f"reachable cells old {int(ok0.sum())} new {int(ok1.sum())}; lost {int((ok0 & ~ok1).sum())}, gained {int((ok1 & ~ok0).sum())}"
+    )
     if "evaluations" in t0 and "evaluations" in t1:
-        print(f"wingbeat evaluations per cell: old {t0['evaluations'].mean():.0f}, new {t1['evaluations'].mean():.0f}")
+        print(
+            f"wingbeat evaluations per cell: old {t0['evaluations'].mean():.0f}, new {t1['evaluations'].mean():.0f}"
+        )
     for idx in np.argwhere(worse)[:10]:
         i = tuple(idx)
         at_climb = f" climb={t0['axis_climb'][i[3]]:+.2f}" if len(i) > 3 else ""
-        print(f"  worse at Fx={t0['axis_Fx'][i[0]]:+.2f} Fz={t0['axis_Fz'][i[1]]:+.2f} V={t0['axis_V'][i[2]]:.1f}{at_climb}: {diff[i]:+.2e}")
+        print(
+            f"  worse at Fx={t0['axis_Fx'][i[0]]:+.2f} Fz={t0['axis_Fz'][i[1]]:+.2f} V={t0['axis_V'][i[2]]:.1f}{at_climb}: {diff[i]:+.2e}"
+        )
     return 0 if not worse.any() and not (ok0 & ~ok1).any() else 1
 
 

@@ -21,7 +21,12 @@ def cruise_frames(metres_per_unit: float = 1.0):
     from birdsim.tables.lookup import load_table
 
     return from_playback(
-        get_manoeuvre("cruise"), load_table("tables/m4.npz"), model="m4", fps=FPS, beat_rate=BEAT_RATE, seconds=SECONDS,
+        get_manoeuvre("cruise"),
+        load_table("tables/m4.npz"),
+        model="m4",
+        fps=FPS,
+        beat_rate=BEAT_RATE,
+        seconds=SECONDS,
         metres_per_unit=metres_per_unit,
     )
 

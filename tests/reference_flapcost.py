@@ -24,7 +24,9 @@ def _sweep(a: float) -> np.ndarray:
     return np.array([[np.cos(a), np.sin(a), 0], [-np.sin(a), np.cos(a), 0], [0, 0, 1]])
 
 
-def flapcost_histories(model: str, params: dict, speed: float, times: np.ndarray, s: float = 1.0, c: float = 1.0):
+def flapcost_histories(
+    model: str, params: dict, speed: float, times: np.ndarray, s: float = 1.0, c: float = 1.0
+):
     """Earth-axes force (N x 3) and power (N,) of the right wing, no body drag."""
     cl_max, cd0, cd_max, rho, omega = 2.0, 0.05, 1.0, 1.0, 1.0
     theta, phi_amp, theta_amp = params["pitch"], params["flap_amp"], params["twist_amp"]
@@ -43,10 +45,14 @@ def flapcost_histories(model: str, params: dict, speed: float, times: np.ndarray
             v1f = np.array([0.0, -w * np.sin(phi), w * np.cos(phi)])
             r12 = _pitch(thetaf) @ _flap(phi)
         elif model == "m2":  # eq 66-67 with a constant sweep (Gamma_f = 0)
-            v1f = np.array([w * np.sin(phi) * np.sin(gamma), -w * np.sin(phi) * np.cos(gamma), w * np.cos(phi)])
+            v1f = np.array(
+                [w * np.sin(phi) * np.sin(gamma), -w * np.sin(phi) * np.cos(gamma), w * np.cos(phi)]
+            )
             r12 = _pitch(thetaf) @ _flap(phi) @ _sweep(gamma)
         elif model == "m3":  # eq 73-74, stroke plane as a pitch-type matrix (docs/design.md)
-            v1f = np.array([w * np.cos(phi) * np.sin(sp), -w * np.sin(phi), w * np.cos(phi) * np.cos(sp)])
+            v1f = np.array(
+                [w * np.cos(phi) * np.sin(sp), -w * np.sin(phi), w * np.cos(phi) * np.cos(sp)]
+            )
             r12 = _pitch(thetaf) @ _flap(phi) @ _pitch(sp)
         else:
             raise ValueError(model)

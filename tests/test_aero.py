@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 from birdsim import Bird, evaluate_cycle
-from birdsim.physics.aero import Polar, RoboflyPolar, SeedPolar, induced_velocity, polar_from_dict
 from birdsim.errors import BirdConfigError
+from birdsim.physics.aero import Polar, RoboflyPolar, SeedPolar, induced_velocity, polar_from_dict
 
 
 def test_seed_fast_path_equals_coefficient_path():
@@ -49,7 +49,9 @@ def test_robofly_polar_degrees_done_right():
     cl, cd = RoboflyPolar().coefficients(np.radians([45.0, -45.0, 45.0 + 180.0]))
     np.testing.assert_allclose(cl, [1.8046, -1.8046, 1.8046], atol=1e-4)
     np.testing.assert_allclose(cd, [1.7037, 1.7037, 1.7037], atol=1e-4)
-    c = evaluate_cycle("m1", dict(pitch=1.5, flap_amp=1.5, twist_amp=0.7), 0.0, bird=Bird(polar=RoboflyPolar()))
+    c = evaluate_cycle(
+        "m1", dict(pitch=1.5, flap_amp=1.5, twist_amp=0.7), 0.0, bird=Bird(polar=RoboflyPolar())
+    )
     assert float(c.mean.Fz) < 0  # a hovering wing still lifts
 
 
@@ -59,7 +61,9 @@ def test_polar_from_dict_errors():
         polar_from_dict({"kind": "foo"})
     # a NaN or infinite coefficient would turn every force into NaN without a word
     for bad in (float("nan"), float("inf"), "2"):
-        with pytest.raises(BirdConfigError, match="polar.cd0=.* is invalid; allowed: a finite number"):
+        with pytest.raises(
+            BirdConfigError, match="polar.cd0=.* is invalid; allowed: a finite number"
+        ):
             polar_from_dict({"kind": "seed", "cd0": bad})
     with pytest.raises(BirdConfigError, match="polar.cl_max=nan"):
         Bird().with_overrides({"polar.cl_max": "nan"})
@@ -74,7 +78,9 @@ def _instantaneous_cfx(zeta: np.ndarray, twist: np.ndarray) -> np.ndarray:
     speed V chosen so that the advance angle is ``zeta``; Fx / (q S)."""
     w = 0.5  # CP speed at t = 0 with flap_amp = 1
     speed = np.where(zeta < math.pi / 2, w / np.tan(np.minimum(zeta, 1.5707963)), 0.0)
-    c = evaluate_cycle("base", dict(pitch=0.0, flap_amp=1.0, twist_amp=twist), speed, n=4, check_bounds=False)
+    c = evaluate_cycle(
+        "base", dict(pitch=0.0, flap_amp=1.0, twist_amp=twist), speed, n=4, check_bounds=False
+    )
     q = 0.5 * (speed**2 + w**2)
     return c.Fx[..., 0] / q
 
@@ -93,7 +99,9 @@ def test_translating_wing_thrust_sign_follows_eq15():
 
 
 def test_rotating_wing_thrust_eq20_and_fig9_maximum():
-    zeta, twist = np.meshgrid(np.linspace(0.05, math.pi / 2, 40), np.linspace(0, math.pi / 2, 91), indexing="ij")
+    zeta, twist = np.meshgrid(
+        np.linspace(0.05, math.pi / 2, 40), np.linspace(0, math.pi / 2, 91), indexing="ij"
+    )
     cfx = _instantaneous_cfx(zeta, twist)
     alpha = zeta - twist  # eq. 23: incidence = advance angle - twist
     closed = 2 * np.sin(2 * alpha) * np.sin(zeta) - (0.05 + np.sin(alpha) ** 2) * np.cos(zeta)
@@ -109,4 +117,6 @@ def test_induced_velocity_axial_flow_is_appendix_formula():
     for v_inf in (0.0, 0.7):
         f = np.stack([thrust, 0 * thrust, 0 * thrust], -1)  # force along the flight path
         vi = induced_velocity(f, np.full(3, v_inf), 1.0, area)
-        np.testing.assert_allclose(vi, -v_inf / 2 + np.sqrt(v_inf**2 / 4 + thrust / (2 * area)), rtol=1e-12)
+        np.testing.assert_allclose(
+            vi, -v_inf / 2 + np.sqrt(v_inf**2 / 4 + thrust / (2 * area)), rtol=1e-12
+        )

@@ -4,18 +4,26 @@ shipped tables (rebuilt corners, optimiser quality, the regimes of sec. 4.1)."""
 from __future__ import annotations
 
 import math
-from dataclasses import replace
 from concurrent.futures import Executor, Future, ThreadPoolExecutor
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
 import pytest
 
-from birdsim.tables.build import BuildConfig, BuildSettings, Checkpoints, Grid, build_table, config_from_meta, sub_grid
 from birdsim.errors import BirdsimError
 from birdsim.physics.kinematics import get_model
-from birdsim.tables.optimize import ForceProblem, random_starts, multistart
+from birdsim.tables.build import (
+    BuildConfig,
+    BuildSettings,
+    Checkpoints,
+    Grid,
+    build_table,
+    config_from_meta,
+    sub_grid,
+)
 from birdsim.tables.lookup import load_table
+from birdsim.tables.optimize import ForceProblem, multistart, random_starts
 
 TABLES = Path(__file__).resolve().parent.parent / "tables"
 MODELS = ("base", "m1", "m2", "m3", "m4")
@@ -28,7 +36,14 @@ SMALL = Grid((0.0, 0.25), (-0.5, -0.25, 0.0), (0.0, 0.5, 0.9))
 def test_default_grid_is_design_md():
     g = Grid.default(11)
     assert g.shape == (11, 11, 11)
-    assert (g.Fx[0], g.Fx[-1], g.Fz[0], g.Fz[-1], g.V[0], g.V[-1]) == (-0.5, 0.5, -0.5, 0.0, 0.0, 1.0)
+    assert (g.Fx[0], g.Fx[-1], g.Fz[0], g.Fz[-1], g.V[0], g.V[-1]) == (
+        -0.5,
+        0.5,
+        -0.5,
+        0.0,
+        0.0,
+        1.0,
+    )
 
 
 def test_grid_spec():
@@ -38,8 +53,16 @@ def test_grid_spec():
 
 @pytest.mark.parametrize(
     "spec, message",
-    [("Fx=0:1", "malformed"), ("Fx=0:1:1", "malformed"), ("Fx=a|b", "malformed"), ("W=1|2", "malformed"),
-     ("Fz=0|0", "invalid"), ("V=-1|0", "speeds >= 0"), ("Fx=0|nan", "invalid"), ("Fx", "malformed")],
+    [
+        ("Fx=0:1", "malformed"),
+        ("Fx=0:1:1", "malformed"),
+        ("Fx=a|b", "malformed"),
+        ("W=1|2", "malformed"),
+        ("Fz=0|0", "invalid"),
+        ("V=-1|0", "speeds >= 0"),
+        ("Fx=0|nan", "invalid"),
+        ("Fx", "malformed"),
+    ],
 )
 def test_malformed_grid(spec, message):
     with pytest.raises(BirdsimError, match=message):
@@ -82,7 +105,15 @@ def test_status_is_honest(small_base):
     assert t.achieved[0, 0, 0, 1] == pytest.approx(-0.2895, abs=2e-3)  # Fx = 0: all of it upwards
     assert t.status[0, 1, 2] == "ok"  # cruise-like demand Fx=0, Fz=-0.25, V=0.9
     np.testing.assert_allclose(t.cost_fractions.sum(axis=-1), 1.0, atol=1e-12)
-    for key in ("package_version", "git_commit", "built_at", "cost_weights", "solver", "grid", "build_seconds"):
+    for key in (
+        "package_version",
+        "git_commit",
+        "built_at",
+        "cost_weights",
+        "solver",
+        "grid",
+        "build_seconds",
+    ):
         assert key in t.meta
     assert t.converged.dtype == bool and t.converged.shape == t.shape and t.converged.mean() > 0.9
 
@@ -116,7 +147,9 @@ def test_interrupted_build_resumes_from_checkpoints(tmp_path, small_base):
     np.testing.assert_array_equal(t.params, small_base.params)  # same answer as uninterrupted
 
 
-def test_a_failed_final_write_keeps_the_checkpoints_and_resumes_to_the_same_table(tmp_path, monkeypatch, small_base):
+def test_a_failed_final_write_keeps_the_checkpoints_and_resumes_to_the_same_table(
+    tmp_path, monkeypatch, small_base
+):
     """Defect: the checkpoints were deleted before the final save, so a failed save (disk
     full, unwritable target, Ctrl-C) lost the whole build."""
     import birdsim.io
@@ -130,7 +163,10 @@ def test_a_failed_final_write_keeps_the_checkpoints_and_resumes_to_the_same_tabl
         raise OSError(28, "No space left on device")
 
     monkeypatch.setattr(LookupTable, "save", disk_full)
-    with pytest.raises(BirdsimError, match=r"--out .*t.npz' could not be written: No space left on device; .*run the same command again"):
+    with pytest.raises(
+        BirdsimError,
+        match=r"--out .*t.npz' could not be written: No space left on device; .*run the same command again",
+    ):
         build_table(cfg, jobs=1, checkpoint_dir=ckpt, out=out)
     assert not out.exists() and len(list(ckpt.glob("*.npz"))) == len(SMALL.V) + len(SMALL.Fx)
     monkeypatch.setattr(LookupTable, "save", real_save)
@@ -160,7 +196,9 @@ def test_a_failed_final_write_keeps_the_checkpoints_and_resumes_to_the_same_tabl
     assert len(list(ckpt.glob("*.npz"))) == len(SMALL.V) + len(SMALL.Fx)
 
 
-def test_checkpoints_of_another_version_or_configuration_are_discarded_with_a_reason(tmp_path, monkeypatch):
+def test_checkpoints_of_another_version_or_configuration_are_discarded_with_a_reason(
+    tmp_path, monkeypatch
+):
     import birdsim
 
     cfg = BuildConfig("base", SMALL)
@@ -192,16 +230,33 @@ def test_the_same_table_twice_and_on_one_or_two_processes_is_bitwise_identical(s
     again = build_table(BuildConfig("base", SMALL), jobs=1)
     pooled = build_table(BuildConfig("base", SMALL), jobs=2)
     for t in (again, pooled):
-        for name in ("params", "cost", "cost_fractions", "achieved", "status_code", "evaluations", "converged"):
+        for name in (
+            "params",
+            "cost",
+            "cost_fractions",
+            "achieved",
+            "status_code",
+            "evaluations",
+            "converged",
+        ):
             a, b = getattr(t, name), getattr(small_base, name)
             assert a.dtype == b.dtype and a.tobytes() == b.tobytes(), name
 
 
 @pytest.mark.parametrize(
     "argv, flag",
-    [(["--screen", "0"], "--screen 0"), (["--starts", "-1"], "--starts -1"), (["--relax", "0"], "--relax 0"),
-     (["--relax", "nan"], "--relax"), (["--reach-tol", "0"], "--reach-tol 0"), (["--power-weight", "-1"], "--power-weight -1"),
-     (["--distance", "inf"], "--distance"), (["--smooth-tol", "-1"], "--smooth-tol -1"), (["--jobs", "0"], "--jobs 0"), (["--size", "1"], "--size 1")],
+    [
+        (["--screen", "0"], "--screen 0"),
+        (["--starts", "-1"], "--starts -1"),
+        (["--relax", "0"], "--relax 0"),
+        (["--relax", "nan"], "--relax"),
+        (["--reach-tol", "0"], "--reach-tol 0"),
+        (["--power-weight", "-1"], "--power-weight -1"),
+        (["--distance", "inf"], "--distance"),
+        (["--smooth-tol", "-1"], "--smooth-tol -1"),
+        (["--jobs", "0"], "--jobs 0"),
+        (["--size", "1"], "--size 1"),
+    ],
 )
 def test_build_option_errors_name_the_flag(tmp_path, capsys, argv, flag):
     from birdsim.cli import main
@@ -232,7 +287,12 @@ def test_checkpoints_never_clear_a_foreign_folder_and_recompute_damaged_files(tm
     empty = tmp_path / "empty"
     empty.mkdir()
     ck = Checkpoints(empty, "abc")  # an empty folder is fine
-    arrays = {"params": np.zeros((2, 3, 1)), "cost": np.zeros((2, 3)), "evaluations": np.zeros((2, 3), int), "converged": np.ones((2, 3), bool)}
+    arrays = {
+        "params": np.zeros((2, 3, 1)),
+        "cost": np.zeros((2, 3)),
+        "evaluations": np.zeros((2, 3), int),
+        "converged": np.ones((2, 3), bool),
+    }
     ck.save("slice_V000", arrays)
     assert ck.load("slice_V000") is not None
     full = (empty / "slice_V000.npz").read_bytes()
@@ -305,7 +365,9 @@ def test_rebuilt_corner_matches_the_shipped_table(model):
     cfg = config_from_meta(t)
     tol = cfg.settings.smooth_tol
     settings = replace(cfg.settings, smooth_tol=0.0)
-    cfg = BuildConfig(cfg.model, sub_grid(cfg.grid, [9, 10], [0, 1], range(11)), cfg.bird, cfg.weights, settings)
+    cfg = BuildConfig(
+        cfg.model, sub_grid(cfg.grid, [9, 10], [0, 1], range(11)), cfg.bird, cfg.weights, settings
+    )
     corner = build_table(cfg, jobs=1)
     diff = t.cost[9:, :2, :] - corner.cost
     assert diff.min() >= -1e-6 and diff.max() <= tol + 1e-6
@@ -333,7 +395,12 @@ def test_fresh_multistart_never_beats_the_table(model):
         demand = (t.axes["Fx"][i], t.axes["Fz"][j], t.axes["V"][k])
         prob = ForceProblem(model, *demand, n=64)
         fresh = multistart(prob, random_starts(prob, 12, seed=int(rng.integers(1 << 30))))
-        assert t.cost[i, j, k] <= fresh.cost + margin, (demand, t.cost[i, j, k], fresh.cost, fresh.x)
+        assert t.cost[i, j, k] <= fresh.cost + margin, (
+            demand,
+            t.cost[i, j, k],
+            fresh.cost,
+            fresh.x,
+        )
 
 
 def regime(t, Fx, Fz, V):
@@ -438,7 +505,9 @@ def test_a_climb_table_continues_the_level_table_and_records_the_axis(tmp_path):
     climbing = Grid(level.Fx, level.Fz, level.V, (-0.2, 0.0, 0.2))
     settings = BuildSettings(smooth_tol=0.0)
     t3 = build_table(BuildConfig("base", level, settings=settings), jobs=1)
-    t4 = build_table(BuildConfig("base", climbing, settings=settings), jobs=1, out=tmp_path / "c.npz")
+    t4 = build_table(
+        BuildConfig("base", climbing, settings=settings), jobs=1, out=tmp_path / "c.npz"
+    )
     # climb = 0: the same slices and V passes; the climb passes only keep answers cheaper
     # at the search resolution (1e-9: n = 32 search vs the n_final check)
     assert np.all(t4.cost[..., 1] <= t3.cost + 1e-9)
@@ -447,8 +516,12 @@ def test_a_climb_table_continues_the_level_table_and_records_the_axis(tmp_path):
     assert back.axis_names[-1] == "climb" and back.meta["grid"]["climb"] == [-0.2, 0.0, 0.2]
     assert config_from_meta(back).grid == climbing
     # the stored forces are those of the climbing bird: re-evaluate one cell independently
-    prob = ForceProblem("base", 0.25, -0.25, 0.9, n=back.meta["solver"]["n_final"], climb=0.2)  # the table's own check
-    np.testing.assert_allclose(prob.achieved(back.params[1, 0, 1, 2])[:2], back.achieved[1, 0, 1, 2, :2], atol=1e-12)
+    prob = ForceProblem(
+        "base", 0.25, -0.25, 0.9, n=back.meta["solver"]["n_final"], climb=0.2
+    )  # the table's own check
+    np.testing.assert_allclose(
+        prob.achieved(back.params[1, 0, 1, 2])[:2], back.achieved[1, 0, 1, 2, :2], atol=1e-12
+    )
     # climbing costs more lift than descending for the same demand where both are reachable
     ok = (back.status[..., 0] == "ok") & (back.status[..., 2] == "ok")
     assert ok.any() and np.mean(back.cost[..., 2][ok]) > np.mean(back.cost[..., 0][ok])

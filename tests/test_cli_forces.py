@@ -41,10 +41,19 @@ def test_forces_geometry_override_changes_result(capsys):
         (["--model", "m1", "--speed", "0", *HOVER, "--param", "oops"], "malformed"),
         (["--model", "m1", "--speed", "0", *HOVER, "--param", "pitch=0.2"], "pitch is given twice"),
         (["--model", "m1", "--speed", "0", *HOVER[:-1], "twist_amp=x"], "not a number; allowed"),
-        (["--model", "m1", "--speed", "0", *HOVER, "--bird", "/nonexistent.toml"], "does not exist"),
-        (["--model", "m1", "--speed", "0", *HOVER, "--samples", "0"], "--samples 0 is invalid; allowed: an integer >= 2"),
+        (
+            ["--model", "m1", "--speed", "0", *HOVER, "--bird", "/nonexistent.toml"],
+            "does not exist",
+        ),
+        (
+            ["--model", "m1", "--speed", "0", *HOVER, "--samples", "0"],
+            "--samples 0 is invalid; allowed: an integer >= 2",
+        ),
         (["--model", "m1", "--speed", "0", *HOVER, "--climb", "nan"], "--climb nan is invalid"),
-        (["--model", "m1", "--speed", "0", *HOVER, "--climb", "up"], "--climb='up' is not a number"),
+        (
+            ["--model", "m1", "--speed", "0", *HOVER, "--climb", "up"],
+            "--climb='up' is not a number",
+        ),
     ],
 )
 def test_forces_bad_input_one_line(args, text, capsys):
@@ -57,11 +66,20 @@ def test_missing_subcommand_names_the_choices(capsys):
     with pytest.raises(SystemExit) as exc:
         main(["tables"])
     err = capsys.readouterr().err
-    assert exc.value.code == 2 and err.count("\n") == 1 and "{build,info,lookup}" in err and "tables_command" not in err
+    assert (
+        exc.value.code == 2
+        and err.count("\n") == 1
+        and "{build,info,lookup}" in err
+        and "tables_command" not in err
+    )
 
 
 def test_console_script_usage_error_is_one_line():
-    r = subprocess.run([sys.executable, "-m", "birdsim.cli", "forces", "--speed", "0"], capture_output=True, text=True)
+    r = subprocess.run(
+        [sys.executable, "-m", "birdsim.cli", "forces", "--speed", "0"],
+        capture_output=True,
+        text=True,
+    )
     assert r.returncode == 2 and r.stderr.count("\n") == 1 and "--model" in r.stderr
 
 
@@ -78,23 +96,35 @@ def test_forces_fills_missing_parameters_from_the_defaults(capsys):
 
     from birdsim.physics.kinematics import get_model
 
-    assert main(["forces", "--model", "m3", "--speed", "0.5", "--param", "pitch=0.2", "--json"]) == 0
+    assert (
+        main(["forces", "--model", "m3", "--speed", "0.5", "--param", "pitch=0.2", "--json"]) == 0
+    )
     partial = json.loads(capsys.readouterr().out)
     cruise = get_model("m3").guess("cruise")
     assert partial["filled"] == {k: v for k, v in cruise.items() if k != "pitch"}
-    full = ["--param", "pitch=0.2"] + [a for k, v in partial["filled"].items() for a in ("--param", f"{k}={v!r}")]
+    full = ["--param", "pitch=0.2"] + [
+        a for k, v in partial["filled"].items() for a in ("--param", f"{k}={v!r}")
+    ]
     assert main(["forces", "--model", "m3", "--speed", "0.5", *full, "--json"]) == 0
     given = json.loads(capsys.readouterr().out)
     assert given["filled"] == {} and given["mean"] == partial["mean"]
     assert main(["forces", "--model", "m1", "--speed", "0", "--param", "pitch=0.1"]) == 0
-    assert "filled from the model's hover defaults (not given): flap_amp = 1.5708, twist_amp = 0.785398" in capsys.readouterr().out
+    assert (
+        "filled from the model's hover defaults (not given): flap_amp = 1.5708, twist_amp = 0.785398"
+        in capsys.readouterr().out
+    )
 
 
 def test_forces_climb_matches_api(capsys):
-    assert main(["forces", "--model", "m1", "--speed", "0.4", "--climb", "-0.3", *HOVER, "--json"]) == 0
+    assert (
+        main(["forces", "--model", "m1", "--speed", "0.4", "--climb", "-0.3", *HOVER, "--json"])
+        == 0
+    )
     out = json.loads(capsys.readouterr().out)
     c = evaluate_cycle("m1", dict(pitch=1.5, flap_amp=1.5, twist_amp=0.7), 0.4, climb=-0.3)
-    assert out["climb"] == -0.3 and out["body_drag_z"] == pytest.approx(float(c.body_drag_z), abs=1e-15)
+    assert out["climb"] == -0.3 and out["body_drag_z"] == pytest.approx(
+        float(c.body_drag_z), abs=1e-15
+    )
     for k in ("Fx", "Fz", "P"):
         assert out["mean"][k] == pytest.approx(float(getattr(c.mean, k)), abs=1e-15)
     assert out["body_drag_z"] < 0  # sinking: the air comes from below, the drag pushes up

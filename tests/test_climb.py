@@ -62,11 +62,17 @@ def test_climb_is_level_flight_at_vt_and_pitch_minus_gamma_turned_by_gamma(model
     mag = 0.5 * vt**2 * np.abs(np.sin(p["pitch"] - gamma))
     np.testing.assert_allclose(a.body_drag_x, -mag * v / vt, rtol=0, atol=1e-14)
     np.testing.assert_allclose(a.body_drag_z, mag * climb / vt, rtol=0, atol=1e-14)
-    np.testing.assert_allclose(np.asarray(a.mean.Fz), a.force_earth[..., 2].mean(-1) + a.body_drag_z, atol=1e-14)
+    np.testing.assert_allclose(
+        np.asarray(a.mean.Fz), a.force_earth[..., 2].mean(-1) + a.body_drag_z, atol=1e-14
+    )
 
 
 def test_body_drag_opposes_the_velocity_and_is_eq7_at_zero_climb():
-    v, climb, pitch = np.array([0.5, 0.0, 0.3]), np.array([0.2, -0.4, 0.0]), np.array([0.3, 1.0, 0.6])
+    v, climb, pitch = (
+        np.array([0.5, 0.0, 0.3]),
+        np.array([0.2, -0.4, 0.0]),
+        np.array([0.3, 1.0, 0.6]),
+    )
     dx, dz = body_drag(v, climb, pitch, 1.0, 1.0)
     vel = np.stack([v, -climb], -1)  # seed earth (x, z) velocity
     drag = np.stack([dx, dz], -1)

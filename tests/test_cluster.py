@@ -11,7 +11,6 @@ import sys
 import threading
 import time
 
-import numpy as np
 import pytest
 
 from birdsim.cli import main
@@ -22,14 +21,21 @@ from birdsim.tables.cluster import dask_executor, parse_scheduler
 
 @pytest.mark.parametrize(
     "spec, want",
-    [("local:2", (None, 2)), ("tcp://10.0.0.5:8786", ("tcp://10.0.0.5:8786", None)), (" local:1 ", (None, 1))],
+    [
+        ("local:2", (None, 2)),
+        ("tcp://10.0.0.5:8786", ("tcp://10.0.0.5:8786", None)),
+        (" local:1 ", (None, 1)),
+    ],
 )
 def test_scheduler_specs(spec, want):
     s = parse_scheduler(spec)
     assert (s.address, s.local_workers) == want
 
 
-@pytest.mark.parametrize("spec", ["local:0", "local:-1", "local:x", "local:1000", "tcp://host", "host:8786", "", "udp://a:1"])
+@pytest.mark.parametrize(
+    "spec",
+    ["local:0", "local:-1", "local:x", "local:1000", "tcp://host", "host:8786", "", "udp://a:1"],
+)
 def test_bad_scheduler_specs_are_one_line(spec):
     with pytest.raises(BirdsimError, match=r"--dask .* is invalid; allowed: "):
         parse_scheduler(spec)
@@ -37,7 +43,10 @@ def test_bad_scheduler_specs_are_one_line(spec):
 
 def test_dask_not_installed_names_the_extra(monkeypatch):
     monkeypatch.setitem(sys.modules, "distributed", None)  # import distributed -> ImportError
-    with pytest.raises(BirdsimError, match=r"--dask needs dask.distributed, which is not installed; allowed: pip install 'birdsim\[cluster\]'"):
+    with pytest.raises(
+        BirdsimError,
+        match=r"--dask needs dask.distributed, which is not installed; allowed: pip install 'birdsim\[cluster\]'",
+    ):
         with dask_executor("local:1"):
             pass
 
@@ -48,11 +57,28 @@ def test_cli_dask_errors_before_any_work(tmp_path, capsys, monkeypatch):
         (["--dask", "local:0"], "--dask 'local:0' is invalid"),
         (["--dask", "local:2", "--jobs", "2"], "--jobs 2 with --dask 'local:2'"),
     ):
-        assert main(["tables", "build", "--model", "base", "--out", str(out), "--quiet", *argv]) == 2
+        assert (
+            main(["tables", "build", "--model", "base", "--out", str(out), "--quiet", *argv]) == 2
+        )
         err = capsys.readouterr().err.strip()
         assert len(err.splitlines()) == 1 and message in err, err
     monkeypatch.setitem(sys.modules, "distributed", None)
-    assert main(["tables", "build", "--model", "base", "--out", str(out), "--quiet", "--dask", "local:1"]) == 2
+    assert (
+        main(
+            [
+                "tables",
+                "build",
+                "--model",
+                "base",
+                "--out",
+                str(out),
+                "--quiet",
+                "--dask",
+                "local:1",
+            ]
+        )
+        == 2
+    )
     assert "birdsim[cluster]" in capsys.readouterr().err
     assert not any(tmp_path.iterdir())
 

@@ -6,9 +6,15 @@ import numpy as np
 import pytest
 
 from birdsim import evaluate_cycle, get_model
-from birdsim.physics.cycle import DEFAULT_SAMPLES
-from birdsim.tables.cost import FRACTION_NAMES, CostWeights, breakdown_from_forces, evaluate_cost, other_cost
 from birdsim.errors import BirdsimError
+from birdsim.physics.cycle import DEFAULT_SAMPLES
+from birdsim.tables.cost import (
+    FRACTION_NAMES,
+    CostWeights,
+    breakdown_from_forces,
+    evaluate_cost,
+    other_cost,
+)
 
 
 def rows(model, n, seed=0):
@@ -22,7 +28,9 @@ def test_cost_is_the_flapcost_of_the_cycle_means(model):
     m, X = rows(model, 5)
     b = evaluate_cost(m, X, 0.1, -0.2, 0.4)
     for k in range(5):
-        mean = evaluate_cycle(model, dict(zip(m.param_names, X[k])), 0.4).mean  # one by one, the same default n
+        mean = evaluate_cycle(
+            model, dict(zip(m.param_names, X[k])), 0.4
+        ).mean  # one by one, the same default n
         expect = abs(float(mean.Fx) - 0.1) + abs(float(mean.Fz) + 0.2) + 0.5 * abs(float(mean.P))
         # 1e-12: the same arithmetic, batched vs single
         assert float(b.total[k]) == pytest.approx(expect, abs=1e-12)
@@ -31,7 +39,13 @@ def test_cost_is_the_flapcost_of_the_cycle_means(model):
 
 def test_orientation_cost_only_for_stroke_plane_models_at_rest():
     w = CostWeights(orientation=0.01)
-    for model, expected in (("base", False), ("m1", False), ("m2", False), ("m3", True), ("m4", True)):
+    for model, expected in (
+        ("base", False),
+        ("m1", False),
+        ("m2", False),
+        ("m3", True),
+        ("m4", True),
+    ):
         m, X = rows(model, 4)
         at_rest = other_cost(m, X, 0.0, w)
         moving = other_cost(m, X, 0.3, w)
@@ -52,14 +66,21 @@ def test_fractions_sum_to_one_and_name_each_term():
     m, X = rows("m3", 50, seed=2)
     b = evaluate_cost(m, X, 0.0, -0.3, 0.0, weights=CostWeights(distance=0.1), previous=X[0])
     f = b.fractions
-    assert f.shape == (50, len(FRACTION_NAMES)) and FRACTION_NAMES == ("force_x", "force_z", "power", "other")
+    assert f.shape == (50, len(FRACTION_NAMES)) and FRACTION_NAMES == (
+        "force_x",
+        "force_z",
+        "power",
+        "other",
+    )
     assert np.all(f >= 0)
     np.testing.assert_allclose(f.sum(axis=1), 1.0, rtol=1e-12)
     np.testing.assert_allclose(f[:, 2] * b.total, b.power, rtol=1e-12)
 
 
 def test_zero_cost_has_zero_fractions():
-    b = breakdown_from_forces(np.array([0.1]), np.array([-0.2]), np.array([0.0]), 0.1, -0.2, CostWeights())
+    b = breakdown_from_forces(
+        np.array([0.1]), np.array([-0.2]), np.array([0.0]), 0.1, -0.2, CostWeights()
+    )
     assert float(b.total[0]) == 0.0
     np.testing.assert_array_equal(b.fractions, 0.0)
 

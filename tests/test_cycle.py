@@ -9,12 +9,12 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from reference_flapcost import flapcost_histories
 
 import birdsim
 from birdsim import Bird, evaluate_cycle, get_model
 from birdsim.physics.cycle import DEFAULT_SAMPLES
 from birdsim.physics.examples import EXAMPLES, example
-from reference_flapcost import flapcost_histories
 
 PI = math.pi
 
@@ -28,7 +28,9 @@ def ev(eq: int, **kw):
 # ---- an independent path: the appendix flapcost, transcribed as a loop ---------------
 
 
-@pytest.mark.parametrize("ex", [e for e in EXAMPLES if e.model != "m4"], ids=lambda e: f"eq{e.equation}")
+@pytest.mark.parametrize(
+    "ex", [e for e in EXAMPLES if e.model != "m4"], ids=lambda e: f"eq{e.equation}"
+)
 def test_matches_appendix_transcription(ex):
     # Same physics written twice (explicit Table 2 matrices in a loop vs the batched
     # chain): they may differ by round-off only, ~1e-15; 1e-12 leaves room for it.
@@ -186,7 +188,9 @@ def test_body_drag_formula():
 
 def test_joint_powers_add_up_to_total():
     c = evaluate_cycle("m4", random_params("m4", 8), rng.random(8))
-    np.testing.assert_allclose(c.joint_power["shoulder"] + c.joint_power["wrist"], c.power, atol=1e-13)
+    np.testing.assert_allclose(
+        c.joint_power["shoulder"] + c.joint_power["wrist"], c.power, atol=1e-13
+    )
 
 
 # ---- sec. 3.5.1: strip integration and the control-point location ------------------------
@@ -198,7 +202,9 @@ def test_strip_integration_converges_to_cp_at_s_over_sqrt3():
     p = dict(pitch=0.7, flap_amp=1.2, twist_amp=0.5)
     cp = evaluate_cycle("m1", p, 0.0).force_earth
     strips = evaluate_cycle("m1", p, 0.0, bird=Bird(strips=200)).force_earth
-    at_root3 = evaluate_cycle("m1", p, 0.0, bird=Bird(cp_span_fraction=1 / math.sqrt(3))).force_earth
+    at_root3 = evaluate_cycle(
+        "m1", p, 0.0, bird=Bird(cp_span_fraction=1 / math.sqrt(3))
+    ).force_earth
     # midpoint rule on r^2: relative error exactly 1/(4 N^2) = 6.25e-6 at N = 200
     np.testing.assert_allclose(strips, at_root3 * (1 - 1 / (4 * 200**2)), rtol=1e-12, atol=1e-14)
     np.testing.assert_allclose(strips, 4 / 3 * cp, rtol=1e-5, atol=1e-12)
@@ -239,11 +245,15 @@ def test_batched_equals_one_at_a_time(name, count, seed):
     x = lo + (hi - lo) * r.random((count, len(lo)))
     v = 1.5 * r.random(count)
     names = get_model(name).param_names
-    batch = evaluate_cycle(name, {n: x[:, i] for i, n in enumerate(names)}, v, n=64)  # layout, not resolution
+    batch = evaluate_cycle(
+        name, {n: x[:, i] for i, n in enumerate(names)}, v, n=64
+    )  # layout, not resolution
     for j in sorted({0, count // 2, count - 1}):
         one = evaluate_cycle(name, {n: x[j, i] for i, n in enumerate(names)}, v[j], n=64)
         # same arithmetic in a different array layout: round-off only
-        np.testing.assert_allclose(batch.panel_force_earth[j], one.panel_force_earth, rtol=0, atol=1e-14)
+        np.testing.assert_allclose(
+            batch.panel_force_earth[j], one.panel_force_earth, rtol=0, atol=1e-14
+        )
         np.testing.assert_allclose(batch.mean.P[j], one.mean.P, rtol=0, atol=1e-14)
 
 
@@ -251,7 +261,11 @@ def test_batch_shape_broadcasts():
     p = dict(pitch=np.array([[0.1], [0.2]]), flap_amp=np.array([0.3, 0.4, 0.5]), twist_amp=0.2)
     c = evaluate_cycle("m1", p, 0.5)
     n = DEFAULT_SAMPLES  # the default sample count
-    assert c.mean.Fz.shape == (2, 3) and c.Fz.shape == (2, 3, n) and c.panel_force_earth.shape == (2, 3, 1, n, 3)
+    assert (
+        c.mean.Fz.shape == (2, 3)
+        and c.Fz.shape == (2, 3, n)
+        and c.panel_force_earth.shape == (2, 3, 1, n, 3)
+    )
 
 
 def test_shapes_that_do_not_broadcast_are_one_line():
@@ -276,12 +290,18 @@ def test_induced_velocity_is_the_fixed_point(speed):
     from birdsim.physics.cycle import _histories, sample_phases
 
     bird = Bird(induced_velocity=True)
-    p = dict(pitch=1.4, flap_amp=1.5, twist_amp=0.7) if speed == 0 else dict(pitch=0.2, flap_amp=1.0, twist_amp=0.3)
+    p = (
+        dict(pitch=1.4, flap_amp=1.5, twist_amp=0.7)
+        if speed == 0
+        else dict(pitch=0.2, flap_amp=1.0, twist_amp=0.3)
+    )
     c = evaluate_cycle("m1", p, speed, bird=bird, n=64)
     f = 2.0 * c.force_earth.mean(axis=-2)[None]
     f[:, 1] = 0.0
     vi = induced_velocity(f, np.array([speed]), bird.rho, bird.disc_area)
     air = -vi[:, None] * f / np.linalg.norm(f, axis=-1, keepdims=True)
     flat = {k: np.atleast_1d(v) for k, v in c.params.items()}
-    again = _histories(get_model("m1"), flat, np.array([float(speed)]), bird, sample_phases(64, False), air)
+    again = _histories(
+        get_model("m1"), flat, np.array([float(speed)]), bird, sample_phases(64, False), air
+    )
     np.testing.assert_allclose(again.force_earth[0, 0], c.force_earth, rtol=0, atol=1e-8)

@@ -18,9 +18,17 @@ def _cycle(drag_x: float, drag_z: float) -> Cycle:
         joint_power={"shoulder": np.array(0.45), "wrist": np.array(0.05)},
     )
     return Cycle(
-        model="m4", speed=np.array(0.5), params={}, time=np.zeros(4), endpoint=False,
-        panel_names=("arm", "hand"), body_drag_x=np.array(drag_x), climb=np.array(0.3),
-        body_drag_z=np.array(drag_z), histories=no_histories, panel_means=means,
+        model="m4",
+        speed=np.array(0.5),
+        params={},
+        time=np.zeros(4),
+        endpoint=False,
+        panel_names=("arm", "hand"),
+        body_drag_x=np.array(drag_x),
+        climb=np.array(0.3),
+        body_drag_z=np.array(drag_z),
+        histories=no_histories,
+        panel_means=means,
     )
 
 

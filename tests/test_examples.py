@@ -21,7 +21,12 @@ EXAMPLES = ROOT / "examples"
 
 def test_every_example_is_covered():
     files = {p.name for p in EXAMPLES.iterdir() if p.suffix in (".toml", ".py")}
-    assert files == {"climb-and-level.toml", "perch-climb-level.toml", "zebra-finch.toml", "build_and_export.py"}
+    assert files == {
+        "climb-and-level.toml",
+        "perch-climb-level.toml",
+        "zebra-finch.toml",
+        "build_and_export.py",
+    }
 
 
 def _fly_json(capsys, name):
@@ -38,10 +43,24 @@ def test_path_manoeuvre_flies_without_saturation(tmp_path, capsys):
     assert info["max_error"] < 0.15 and info["rms_error"] < 0.06
     assert info["final_position"][1] == pytest.approx(6.0, abs=0.05)  # level at 6 semispans
     out = tmp_path / "perch.csv"
-    assert main(["export", str(EXAMPLES / "perch-climb-level.toml"), "--format", "csv", "--out", str(out)]) == 0
+    assert (
+        main(
+            [
+                "export",
+                str(EXAMPLES / "perch-climb-level.toml"),
+                "--format",
+                "csv",
+                "--out",
+                str(out),
+            ]
+        )
+        == 0
+    )
     rows = np.genfromtxt(out, delimiter=",", names=True)
     assert len(rows) == 16 * 30 + 1  # 32 wingbeats at 2 per second, 30 fps, both ends
-    assert rows["x"][0] == pytest.approx(6.0, abs=0.02) and rows["z"][0] == pytest.approx(1.67, abs=0.02)  # on the perch
+    assert rows["x"][0] == pytest.approx(6.0, abs=0.02) and rows["z"][0] == pytest.approx(
+        1.67, abs=0.02
+    )  # on the perch
     assert rows["z"][-1] == pytest.approx(6.0, abs=0.05)
 
 
@@ -49,7 +68,12 @@ def test_force_keyframe_manoeuvre_flies_and_exports(tmp_path, capsys):
     info = _fly_json(capsys, "climb-and-level.toml")
     assert info["open_loop"] and info["saturated_samples"] == 0
     out = tmp_path / "climb.csv"
-    assert main(["export", str(EXAMPLES / "climb-and-level.toml"), "--format", "csv", "--out", str(out)]) == 0
+    assert (
+        main(
+            ["export", str(EXAMPLES / "climb-and-level.toml"), "--format", "csv", "--out", str(out)]
+        )
+        == 0
+    )
     rows = np.genfromtxt(out, delimiter=",", names=True)
     assert len(rows) == 1 + 5 * 30  # 10 wingbeats at 2 per second, 30 fps, both ends
     assert rows["z"][-1] - rows["z"][0] > 0.9  # it climbs (one semispan) ...
@@ -58,17 +82,38 @@ def test_force_keyframe_manoeuvre_flies_and_exports(tmp_path, capsys):
 
 def test_zebra_finch_is_its_measurements(capsys):
     b = Bird.from_toml(EXAMPLES / "zebra-finch.toml")
-    assert b == bird_from_measurements("zebra-finch", mass=0.0133, span=0.161, mean_chord=0.039, frequency=27.0)
+    assert b == bird_from_measurements(
+        "zebra-finch", mass=0.0133, span=0.161, mean_chord=0.039, frequency=27.0
+    )
     text = (EXAMPLES / "zebra-finch.toml").read_text()
     assert "Journal of Experimental Biology 208, 2895-2901" in text
     assert "ASSUMPTION" in text and "unverified" in text  # the frequency is not a cited value
-    assert main(["forces", "--model", "m4", "--speed", "0.5", "--bird", str(EXAMPLES / "zebra-finch.toml")]) == 0
+    assert (
+        main(
+            [
+                "forces",
+                "--model",
+                "m4",
+                "--speed",
+                "0.5",
+                "--bird",
+                str(EXAMPLES / "zebra-finch.toml"),
+            ]
+        )
+        == 0
+    )
     assert "filled from the model's cruise defaults" in capsys.readouterr().out
 
 
 @pytest.mark.skipif(sys.platform == "win32", reason="POSIX paths")
 def test_build_and_export_script(tmp_path):
-    r = subprocess.run([sys.executable, str(EXAMPLES / "build_and_export.py"), str(tmp_path)], cwd=ROOT, capture_output=True, text=True, timeout=120)
+    r = subprocess.run(
+        [sys.executable, str(EXAMPLES / "build_and_export.py"), str(tmp_path)],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert r.returncode == 0, r.stderr
     assert "free flight step-up" in r.stdout and "saturated in 0 wingbeat(s)" in r.stdout
     for suffix in ("npz", "csv", "bvh"):

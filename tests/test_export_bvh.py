@@ -11,11 +11,18 @@ import pytest
 bvh = pytest.importorskip("bvh")
 pytest.importorskip("pybvh")
 
+from export_helpers import (
+    CHECK_FRAMES,
+    FPS,
+    FRAMES_PER_BEAT,
+    cruise_frames,
+    one_beat_per_period,
+    reference_body_position,
+)  # noqa: E402
+
 from birdsim.errors import BirdsimError  # noqa: E402
 from birdsim.export.bvh import build_bvh, write_bvh  # noqa: E402
 from birdsim.mujoco.model import build_model  # noqa: E402
-
-from export_helpers import CHECK_FRAMES, FPS, FRAMES_PER_BEAT, cruise_frames, one_beat_per_period, reference_body_position  # noqa: E402
 
 SCALE = 0.3
 FROM_BVH = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])  # MuJoCo = FROM_BVH @ BVH
@@ -31,7 +38,11 @@ def parsed(tmp_path_factory):
 def _rot(axis, deg):
     a = math.radians(deg)
     c, s = math.cos(a), math.sin(a)
-    return {"X": np.array([[1, 0, 0], [0, c, -s], [0, s, c]]), "Y": np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]]), "Z": np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])}[axis]
+    return {
+        "X": np.array([[1, 0, 0], [0, c, -s], [0, s, c]]),
+        "Y": np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]]),
+        "Z": np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]]),
+    }[axis]
 
 
 def _local(parsed, frame, joint):
@@ -64,7 +75,15 @@ def test_frames_and_rate(parsed):
 
 def test_skeleton_is_named_after_the_mjcf_joints(parsed):
     names = parsed.get_joints_names()
-    assert names == ["root", "r_shoulder", "r_wrist_flap", "r_wrist_twist", "l_shoulder", "l_wrist_flap", "l_wrist_twist"]
+    assert names == [
+        "root",
+        "r_shoulder",
+        "r_wrist_flap",
+        "r_wrist_twist",
+        "l_shoulder",
+        "l_wrist_flap",
+        "l_wrist_twist",
+    ]
     assert len(parsed.joint_channels("root")) == 6
     assert all(len(parsed.joint_channels(j)) == 3 for j in names[1:])
     m = build_model("m4")
@@ -75,7 +94,9 @@ def test_skeleton_is_named_after_the_mjcf_joints(parsed):
 def test_body_position_at_three_frames(parsed):
     ref = reference_body_position()
     for k in CHECK_FRAMES:
-        p = np.array(parsed.frame_joint_channels(k, "root", ["Xposition", "Yposition", "Zposition"]))
+        p = np.array(
+            parsed.frame_joint_channels(k, "root", ["Xposition", "Yposition", "Zposition"])
+        )
         assert np.allclose(FROM_BVH @ p / SCALE, ref[k], atol=1e-4)
 
 
@@ -97,10 +118,14 @@ def test_forward_kinematics_matches_mujoco(parsed):
             chain = ["root", f"{side}_shoulder", f"{side}_wrist_flap", f"{side}_wrist_twist"]
             wrist = FROM_BVH @ _world(parsed, k, chain) / SCALE
             assert np.allclose(wrist, d.xpos[m.body(f"{side}_hand").id], atol=1e-4)
-            tip_bvh = np.array([0.0, 0.0, -sign * fr.bird.semispan * fr.bird.hand_span_fraction]) * SCALE
+            tip_bvh = (
+                np.array([0.0, 0.0, -sign * fr.bird.semispan * fr.bird.hand_span_fraction]) * SCALE
+            )
             tip = FROM_BVH @ _world(parsed, k, chain, tip_bvh) / SCALE
             hand = m.body(f"{side}_hand").id
-            tip_mj = d.xpos[hand] + d.xmat[hand].reshape(3, 3) @ np.array([0.0, sign * fr.bird.semispan * fr.bird.hand_span_fraction, 0.0])
+            tip_mj = d.xpos[hand] + d.xmat[hand].reshape(3, 3) @ np.array(
+                [0.0, sign * fr.bird.semispan * fr.bird.hand_span_fraction, 0.0]
+            )
             assert np.allclose(tip, tip_mj, atol=1e-4)
 
 

@@ -1,10 +1,9 @@
 import csv
 
 import numpy as np
+from export_helpers import cruise_frames, reference_body_position
 
 from birdsim.export.csv import write_csv
-
-from export_helpers import cruise_frames, reference_body_position
 
 
 def test_csv_rows_and_columns(tmp_path):
@@ -13,8 +12,28 @@ def test_csv_rows_and_columns(tmp_path):
     rows = list(csv.DictReader(path.open()))
     assert len(rows) == fr.frames
     names = rows[0].keys()
-    for col in ("time", "x", "y", "z", "qw", "qx", "qy", "qz", "r_shoulder_qw", "r_wrist_flap", "l_wrist_twist", "r_heave",
-                "pitch", "flap_amp", "wrist_lag", "Fx_demand", "Fz_demand", "Fx_achieved", "Fz_achieved", "V_air"):
+    for col in (
+        "time",
+        "x",
+        "y",
+        "z",
+        "qw",
+        "qx",
+        "qy",
+        "qz",
+        "r_shoulder_qw",
+        "r_wrist_flap",
+        "l_wrist_twist",
+        "r_heave",
+        "pitch",
+        "flap_amp",
+        "wrist_lag",
+        "Fx_demand",
+        "Fz_demand",
+        "Fx_achieved",
+        "Fz_achieved",
+        "V_air",
+    ):
         assert col in names
     ref = reference_body_position()
     for k in (0, 30, 60):

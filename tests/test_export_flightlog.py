@@ -32,7 +32,7 @@ def logs(tmp_path_factory):
 
 
 def _export(logs, tmp_path, bird, fmt, *extra):
-    out = tmp_path / f"{bird}.{ 'usdc' if fmt == 'usd' else fmt}"
+    out = tmp_path / f"{bird}.{'usdc' if fmt == 'usd' else fmt}"
     assert main(["export", str(logs[bird]), "--format", fmt, "--out", str(out), *extra]) == 0
     return out
 
@@ -60,7 +60,7 @@ def _once_per_beat(series, frames_per_beat):
     swing = np.ptp(s)
     assert swing > 0.05
     assert np.max(np.abs(s[k:] - s[:-k])) < 0.05 * swing
-    assert np.max(np.abs(s[k // 2:] - s[: -(k // 2)])) > 0.3 * swing
+    assert np.max(np.abs(s[k // 2 :] - s[: -(k // 2)])) > 0.3 * swing
 
 
 @pytest.mark.parametrize("bird", ["seed", "pigeon"])
@@ -88,7 +88,11 @@ def test_usd_of_a_real_log(logs, tmp_path, bird):
         k = k % n
         p = np.array(body.ComputeLocalToWorldTransform(k).ExtractTranslation()) * mpu
         assert np.max(np.abs(p - pos[k])) < 1e-4 * b.semispan, (k, p, pos[k])
-    arm = next(UsdGeom.Xformable(p) for p in stage.Traverse() if p.GetName().startswith("Mesh_Xform_r_arm_panel_id"))
+    arm = next(
+        UsdGeom.Xformable(p)
+        for p in stage.Traverse()
+        if p.GetName().startswith("Mesh_Xform_r_arm_panel_id")
+    )
     angle = []
     for k in range(n):
         m = np.array(arm.ComputeLocalToWorldTransform(k).ExtractRotationMatrix())
@@ -110,7 +114,9 @@ def test_bvh_of_a_real_log(logs, tmp_path, bird):
     assert parsed.nframes == len(time) == 150 and parsed.frame_time == pytest.approx(1 / 30)
     for k in CHECK:
         k = k % len(time)
-        p = FROM_BVH @ np.array(parsed.frame_joint_channels(k, "root", ["Xposition", "Yposition", "Zposition"]))
+        p = FROM_BVH @ np.array(
+            parsed.frame_joint_channels(k, "root", ["Xposition", "Yposition", "Zposition"])
+        )
         assert np.max(np.abs(p - pos[k])) < 1e-4 * b.semispan, (k, p, pos[k])
     flap = [parsed.frame_joint_channel(k, "r_shoulder", "Xrotation") for k in range(parsed.nframes)]
     _once_per_beat(np.radians(flap), 15)
@@ -119,7 +125,10 @@ def test_bvh_of_a_real_log(logs, tmp_path, bird):
 def test_manoeuvre_export_is_the_free_flight_of_its_log(logs, tmp_path):
     """`birdsim export cruise` flies as `birdsim fly cruise` (and render) does: same frames."""
     out = tmp_path / "cruise.csv"
-    assert main(["export", "cruise", "--bird", BIRDS["pigeon"], "--format", "csv", "--out", str(out)]) == 0
+    assert (
+        main(["export", "cruise", "--bird", BIRDS["pigeon"], "--format", "csv", "--out", str(out)])
+        == 0
+    )
     direct = frames_from_log(read_flight_log(logs["pigeon"]), fps=30)
     rows = np.genfromtxt(out, delimiter=",", names=True)
     assert len(rows) == direct.frames

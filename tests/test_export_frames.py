@@ -1,11 +1,10 @@
 import numpy as np
 import pytest
+from export_helpers import CHECK_FRAMES, FPS, SECONDS, cruise_frames, reference_body_position
 
 from birdsim.errors import BirdsimError
 from birdsim.export.frames import FrameSequence, check_fps, is_non_dimensional, time_per_second
 from birdsim.physics.bird import Bird
-
-from export_helpers import CHECK_FRAMES, FPS, SECONDS, cruise_frames, reference_body_position
 
 
 def test_playback_frames_follow_the_playback():
@@ -20,7 +19,15 @@ def test_playback_frames_follow_the_playback():
     # cruise: the body moves forward at the table's V in bird units per bird time
     v = np.diff(fr.body_position[:, 0]) / np.diff(fr.time)
     assert np.allclose(v, 0.9, rtol=1e-6)
-    assert set(fr.params) == {"pitch", "flap_amp", "twist_amp", "stroke_plane", "wrist_amp", "wrist_bias", "wrist_lag"}
+    assert set(fr.params) == {
+        "pitch",
+        "flap_amp",
+        "twist_amp",
+        "stroke_plane",
+        "wrist_amp",
+        "wrist_bias",
+        "wrist_lag",
+    }
 
 
 def test_achieved_force_is_the_demand_in_cruise():

@@ -5,11 +5,17 @@ import numpy as np
 import pytest
 
 pxr = pytest.importorskip("pxr")
+from export_helpers import (
+    CHECK_FRAMES,
+    FPS,
+    FRAMES_PER_BEAT,
+    cruise_frames,
+    one_beat_per_period,
+    reference_body_position,
+)  # noqa: E402
 from pxr import Usd, UsdGeom  # noqa: E402
 
 from birdsim.export.usd import BODY_PRIM, write_usd  # noqa: E402
-
-from export_helpers import CHECK_FRAMES, FPS, FRAMES_PER_BEAT, cruise_frames, one_beat_per_period, reference_body_position  # noqa: E402
 
 SCALE = 0.3  # metres per unit: positions read back are divided by it
 
@@ -59,7 +65,9 @@ def test_wing_flaps_once_per_wingbeat(stage):
     n = cruise_frames(SCALE).frames
     angle = []
     for k in range(n):
-        m = np.array(arm.ComputeLocalToWorldTransform(k).ExtractRotationMatrix())  # rows = images of the axes
+        m = np.array(
+            arm.ComputeLocalToWorldTransform(k).ExtractRotationMatrix()
+        )  # rows = images of the axes
         tipward = -m[1]  # the right panel spans along its -y axis
         angle.append(np.arctan2(tipward[2], -tipward[1]))  # elevation of the right wing's span
     one_beat_per_period(np.array(angle), FRAMES_PER_BEAT)

@@ -19,13 +19,21 @@ def _out(capsys, *argv):
 def test_every_command_names_its_force(capsys):
     text = _out(capsys, "forces", "--model", "m3", "--speed", "0.5")
     assert TABLE in text and f"whole bird: {WHOLE}" in text
-    assert TABLE in json.loads(_out(capsys, "forces", "--model", "m3", "--speed", "0.5", "--json"))["force"]
-    assert TABLE in _out(capsys, "tables", "lookup", "tables/seed-m3.npz", "--Fx", "0", "--Fz", "-0.18", "--V", "0.5")
+    assert (
+        TABLE
+        in json.loads(_out(capsys, "forces", "--model", "m3", "--speed", "0.5", "--json"))["force"]
+    )
+    assert TABLE in _out(
+        capsys, "tables", "lookup", "tables/seed-m3.npz", "--Fx", "0", "--Fz", "-0.18", "--V", "0.5"
+    )
     assert TABLE in _out(capsys, "tables", "info", "tables/seed-m3.npz")
     env = json.loads(_out(capsys, "envelope", "--json"))
     assert f"whole bird ({WHOLE})" in env["force"] and "right wing + body drag" in env["force"]
     text = _out(capsys, "envelope")
-    assert f"whole bird ({WHOLE})" in text and "best lift at Fx = 0 per table speed (whole bird)" in text
+    assert (
+        f"whole bird ({WHOLE})" in text
+        and "best lift at Fx = 0 per table speed (whole bird)" in text
+    )
     fly = json.loads(_out(capsys, "fly", "hover", "--seconds", "1", "--json"))
     assert TABLE in fly["force"] and WHOLE in fly["force"]
 
@@ -49,11 +57,23 @@ def test_a_bird_that_does_not_fit_the_table_is_one_line(tmp_path, capsys):
         ["render", "cruise", "--kinematic", "--still", str(tmp_path / "a.png")],
         ["render", "cruise", "--table", "tables/seed-m3.npz", "--out", str(tmp_path / "b.mp4")],
         ["fly", "cruise", "--table", "tables/seed-m3.npz"],
-        ["export", "cruise", "--table", "tables/seed-m3.npz", "--format", "csv", "--out", str(tmp_path / "c.csv")],
+        [
+            "export",
+            "cruise",
+            "--table",
+            "tables/seed-m3.npz",
+            "--format",
+            "csv",
+            "--out",
+            str(tmp_path / "c.csv"),
+        ],
         ["export", "cruise", "--kinematic", "--format", "csv", "--out", str(tmp_path / "d.csv")],
     ]
     for argv in cases:
         assert main([*argv, "--bird", "models/pigeon.toml"]) == 2, argv
         err = capsys.readouterr().err
-        assert err.count("\n") == 1 and "whose reduced bird differs from bird 'pigeon''s" in err, (argv, err)
+        assert err.count("\n") == 1 and "whose reduced bird differs from bird 'pigeon''s" in err, (
+            argv,
+            err,
+        )
     assert list(tmp_path.iterdir()) == []

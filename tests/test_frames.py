@@ -18,7 +18,9 @@ def test_rotate_equals_table2_matrix(axis):
         np.testing.assert_allclose(got, r @ v, atol=1e-15)
         back = frames.rotate(axis, np.cos(a), -np.sin(a), tuple(r @ v))
         np.testing.assert_allclose(back, v, atol=1e-15)
-        np.testing.assert_allclose(frames.cross_axis(axis, tuple(v)), np.cross(frames.AXIS_VECTORS[axis], v))
+        np.testing.assert_allclose(
+            frames.cross_axis(axis, tuple(v)), np.cross(frames.AXIS_VECTORS[axis], v)
+        )
 
 
 def test_signs_of_table2():
@@ -38,7 +40,11 @@ def test_earth_body_round_trip_and_mujoco():
     back = frames.body_to_earth(0.7, frames.earth_to_body(0.7, v))
     np.testing.assert_allclose(back, v, atol=1e-15)
     np.testing.assert_allclose(frames.seed_to_mujoco([1.0, 2.0, 3.0]), [1.0, -2.0, -3.0])
-    np.testing.assert_allclose(frames.mujoco_to_seed(frames.seed_to_mujoco([1.0, 2.0, 3.0])), [1.0, 2.0, 3.0])
+    np.testing.assert_allclose(
+        frames.mujoco_to_seed(frames.seed_to_mujoco([1.0, 2.0, 3.0])), [1.0, 2.0, 3.0]
+    )
     r = frames.pitch_matrix(0.4)
     m = frames.rotation_seed_to_mujoco(r)
-    np.testing.assert_allclose(m @ frames.seed_to_mujoco([1, 2, 3]), frames.seed_to_mujoco(r @ [1, 2, 3]))
+    np.testing.assert_allclose(
+        m @ frames.seed_to_mujoco([1, 2, 3]), frames.seed_to_mujoco(r @ [1, 2, 3])
+    )

@@ -17,8 +17,17 @@ from birdsim.physics.aero import RoboflyPolar
 from birdsim.physics.cycle import sample_phases
 
 # a bird with every geometric and air property off the seed values (SI-like numbers)
-OTHER = Bird(semispan=0.35, chord=0.09, hand_chord=0.07, hand_span_fraction=0.4, rho=1.2, omega=40.0,
-             body_drag_area=0.004, cp_span_fraction=0.6, wrist_twist_ratio=0.3)
+OTHER = Bird(
+    semispan=0.35,
+    chord=0.09,
+    hand_chord=0.07,
+    hand_span_fraction=0.4,
+    rho=1.2,
+    omega=40.0,
+    body_drag_area=0.004,
+    cp_span_fraction=0.6,
+    wrist_twist_ratio=0.3,
+)
 OPTIONS = {
     "plain": (Bird(), 0.0),
     "strips": (Bird(strips=4), 0.0),
@@ -56,10 +65,19 @@ def test_kernel_means_equal_numpy(model, option):
     scale = bird.rho * bird.omega**2 * bird.semispan**3 * bird.chord
     for k in ("Fx", "Fy", "Fz", "P"):
         unit = scale * (bird.omega * bird.semispan if k == "P" else 1.0)
-        np.testing.assert_allclose(getattr(a.mean, k) / unit, getattr(b.mean, k) / unit, rtol=0, atol=1e-12)
-        np.testing.assert_allclose(getattr(a.whole_bird_mean, k) / unit, getattr(b.whole_bird_mean, k) / unit, rtol=0, atol=1e-12)
+        np.testing.assert_allclose(
+            getattr(a.mean, k) / unit, getattr(b.mean, k) / unit, rtol=0, atol=1e-12
+        )
+        np.testing.assert_allclose(
+            getattr(a.whole_bird_mean, k) / unit,
+            getattr(b.whole_bird_mean, k) / unit,
+            rtol=0,
+            atol=1e-12,
+        )
     for name in b.panel_names:
-        np.testing.assert_allclose(a.panel_mean[name].Fz / scale, b.panel_mean[name].Fz / scale, rtol=0, atol=1e-12)
+        np.testing.assert_allclose(
+            a.panel_mean[name].Fz / scale, b.panel_mean[name].Fz / scale, rtol=0, atol=1e-12
+        )
     for g, v in b.joint_power_mean.items():
         np.testing.assert_allclose(a.joint_power_mean[g] / scale, v / scale, rtol=0, atol=1e-12)
     # histories, when read, come from the numpy path
@@ -80,10 +98,20 @@ def test_nan_in_gives_nan_out():
     flat = {k: np.full(3, v) for k, v in m.guess().items()}
     flat["flap_amp"] = np.array([np.nan, 0.5, 0.5])
     flat["pitch"] = np.array([0.3, np.nan, 0.3])
-    F, P, JP = kernel.means(m, flat, np.array([0.3, 0.3, np.nan]), np.zeros(3), np.zeros((3, 3)), Bird(), sample_phases(16, False))
+    F, P, JP = kernel.means(
+        m,
+        flat,
+        np.array([0.3, 0.3, np.nan]),
+        np.zeros(3),
+        np.zeros((3, 3)),
+        Bird(),
+        sample_phases(16, False),
+    )
     for row in range(3):
         assert np.all(np.isnan(F[row, :, [0, 2]])) and np.all(np.isnan(P[row])), row
-    vals, grads = kernel.means_and_gradients(m, flat, np.array([0.3, 0.3, np.nan]), np.zeros(3), Bird(), sample_phases(16, False))
+    vals, grads = kernel.means_and_gradients(
+        m, flat, np.array([0.3, 0.3, np.nan]), np.zeros(3), Bird(), sample_phases(16, False)
+    )
     assert np.all(np.isnan(vals[:, [0, 2, 3]])) and np.all(np.isnan(grads[:, [0, 2, 3]]))
 
 
@@ -100,7 +128,9 @@ def test_a_failing_jit_falls_back_to_numpy_with_one_warning(monkeypatch):
         a = evaluate_cycle("m2", p, 0.5)
         b = evaluate_cycle("m2", p, 0.5)
     msgs = [str(w.message) for w in caught]
-    assert len(msgs) == 1 and "LLVM says no" in msgs[0] and "\n" not in msgs[0] and "numpy" in msgs[0]
+    assert (
+        len(msgs) == 1 and "LLVM says no" in msgs[0] and "\n" not in msgs[0] and "numpy" in msgs[0]
+    )
     ref = evaluate_cycle("m2", p, 0.5, backend="numpy")
     assert a.panel_means is None and b.panel_means is None
     assert float(a.mean.Fz) == float(ref.mean.Fz)

@@ -6,12 +6,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from test_kernel import OPTIONS, _random
 
 import birdsim
 from birdsim import Bird, evaluate_cycle, get_model
 from birdsim.physics import kernel
 from birdsim.physics.cycle import sample_phases
-from test_kernel import OPTIONS, _random
 
 
 def _fd(m, X, V, climb, bird, h=1e-6):
@@ -21,8 +21,12 @@ def _fd(m, X, V, climb, bird, h=1e-6):
         Xp, Xm = X.copy(), X.copy()
         Xp[:, i] += h
         Xm[:, i] -= h
-        fp = kernel.means_and_gradients(m, {k: Xp[:, j] for j, k in enumerate(m.param_names)}, V, climb, bird, n)[0]
-        fm = kernel.means_and_gradients(m, {k: Xm[:, j] for j, k in enumerate(m.param_names)}, V, climb, bird, n)[0]
+        fp = kernel.means_and_gradients(
+            m, {k: Xp[:, j] for j, k in enumerate(m.param_names)}, V, climb, bird, n
+        )[0]
+        fm = kernel.means_and_gradients(
+            m, {k: Xm[:, j] for j, k in enumerate(m.param_names)}, V, climb, bird, n
+        )[0]
         out[..., i] = (fp - fm) / (2 * h)
     return out
 
@@ -40,7 +44,9 @@ def test_gradients_equal_central_differences(model, option):
     flat = {k: X[:, j] for j, k in enumerate(m.param_names)}
     vals, grads = kernel.means_and_gradients(m, flat, V, C, bird, sample_phases(64, False))
     ref = evaluate_cycle(model, flat, V, climb=C, bird=bird, n=64, backend="numpy")
-    np.testing.assert_allclose(vals[:, 2], ref.force_earth[..., 2].mean(-1), rtol=0, atol=1e-12 * np.abs(vals).max())
+    np.testing.assert_allclose(
+        vals[:, 2], ref.force_earth[..., 2].mean(-1), rtol=0, atol=1e-12 * np.abs(vals).max()
+    )
     fd = _fd(m, X, V, C, bird)
     for r in (0, 2, 3):
         err = np.linalg.norm(grads[:, r] - fd[:, r], axis=-1)
@@ -55,7 +61,9 @@ def test_gradients_near_flow_reversal():
     X = np.array([[1.4, 1.5, 0.7], [np.pi / 2, 1.2, 0.0], [1.2, 0.4, 0.05]])
     V = np.array([0.0, 0.0, 1e-3])
     C = np.zeros(3)
-    vals, grads = kernel.means_and_gradients(m, {k: X[:, j] for j, k in enumerate(m.param_names)}, V, C, Bird(), sample_phases(64, False))
+    vals, grads = kernel.means_and_gradients(
+        m, {k: X[:, j] for j, k in enumerate(m.param_names)}, V, C, Bird(), sample_phases(64, False)
+    )
     fd = _fd(m, X, V, C, Bird())
     for r in (0, 2, 3):
         err = np.linalg.norm(grads[:, r] - fd[:, r], axis=-1)

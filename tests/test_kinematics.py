@@ -10,7 +10,13 @@ import pytest
 import birdsim
 from birdsim import Bird, get_model
 from birdsim.errors import ParameterError, UnknownModelError
-from birdsim.physics.kinematics import JointState, Offset, joint_states, points_in_body, validate_params
+from birdsim.physics.kinematics import (
+    JointState,
+    Offset,
+    joint_states,
+    points_in_body,
+    validate_params,
+)
 
 rng = np.random.default_rng(3)
 
@@ -28,7 +34,9 @@ def _points(model: str, params, bird: Bird, phases: np.ndarray):
     for chain, span, _ in m.chain_with_geometry(bird):
         pos, vel = points_in_body(chain, states, np.array([0.3 * span, span]))
         total = [sum(v[i] for v in vel.values()) for i in range(3)]
-        out.append((np.stack(np.broadcast_arrays(*pos), -1), np.stack(np.broadcast_arrays(*total), -1)))
+        out.append(
+            (np.stack(np.broadcast_arrays(*pos), -1), np.stack(np.broadcast_arrays(*total), -1))
+        )
     return out
 
 
@@ -89,20 +97,36 @@ def test_base_model_translates_the_wing():
 
 def test_m3_velocity_is_eq73():
     th_sp, amp = 0.3, 1.1
-    c = birdsim.evaluate_cycle("m3", dict(pitch=0.3, flap_amp=amp, twist_amp=0.2, stroke_plane=th_sp), 0.0, n=16)
+    c = birdsim.evaluate_cycle(
+        "m3", dict(pitch=0.3, flap_amp=amp, twist_amp=0.2, stroke_plane=th_sp), 0.0, n=16
+    )
     t = c.time
     phi = amp * np.sin(t)
     w = 0.5 * amp * np.cos(t)
-    expected = np.stack([w * np.cos(phi) * np.sin(th_sp), -w * np.sin(phi), w * np.cos(phi) * np.cos(th_sp)], -1)
+    expected = np.stack(
+        [w * np.cos(phi) * np.sin(th_sp), -w * np.sin(phi), w * np.cos(phi) * np.cos(th_sp)], -1
+    )
     np.testing.assert_allclose(c.cp_velocity_body[0], expected, atol=1e-15)
 
 
 def test_m4_geometry_hand_is_a_third():
     b = Bird()
     arm, hand = b.panels("m4")
-    assert arm.span == pytest.approx(2 / 3) and hand.span == pytest.approx(1 / 3) and hand.root_offset == pytest.approx(2 / 3)
+    assert (
+        arm.span == pytest.approx(2 / 3)
+        and hand.span == pytest.approx(1 / 3)
+        and hand.root_offset == pytest.approx(2 / 3)
+    )
     # with the wing still and flat the hand CP sits at the arm span plus half the hand
-    p = dict(pitch=0.0, flap_amp=0.0, twist_amp=0.0, stroke_plane=0.0, wrist_amp=0.0, wrist_bias=0.0, wrist_lag=0.0)
+    p = dict(
+        pitch=0.0,
+        flap_amp=0.0,
+        twist_amp=0.0,
+        stroke_plane=0.0,
+        wrist_amp=0.0,
+        wrist_bias=0.0,
+        wrist_lag=0.0,
+    )
     c = birdsim.evaluate_cycle("m4", p, 0.0, n=4)
     np.testing.assert_allclose(c.cp_position_body[1, 0], [0.0, 2 / 3 + 1 / 6, 0.0], atol=1e-15)
 

@@ -6,7 +6,14 @@ import numpy as np
 import pytest
 
 from birdsim.errors import BirdsimError
-from birdsim.flight.manoeuvre import CRUISE_HEIGHT, PERCH_HEIGHT, PRESETS, ManoeuvreError, get_manoeuvre, load_manoeuvre
+from birdsim.flight.manoeuvre import (
+    CRUISE_HEIGHT,
+    PERCH_HEIGHT,
+    PRESETS,
+    ManoeuvreError,
+    get_manoeuvre,
+    load_manoeuvre,
+)
 
 
 def test_presets_are_the_four_regimes():
@@ -29,7 +36,11 @@ def test_take_off_starts_from_rest_with_full_forces_then_eases_to_cruise():
     d = m.demands(t)
     assert d["V"][0] == 0 and d["Fx"][0] == 0.5 and d["Fz"][0] == -0.5
     assert np.all(np.diff(d["V"]) >= -1e-12)  # V only rises (PCHIP keeps monotone data monotone)
-    assert d["V"][-1] == pytest.approx(0.9) and d["Fx"][-1] == pytest.approx(0.0) and d["Fz"][-1] == pytest.approx(-0.2)
+    assert (
+        d["V"][-1] == pytest.approx(0.9)
+        and d["Fx"][-1] == pytest.approx(0.0)
+        and d["Fz"][-1] == pytest.approx(-0.2)
+    )
     assert np.all(np.diff(d["z"]) >= -1e-12) and d["z"][0] == PERCH_HEIGHT and m.perch == "start"
 
 
@@ -41,7 +52,11 @@ def test_landing_has_rising_negative_forces_and_falling_speed():
     assert np.all(np.diff(d["V"]) <= 1e-12)
     assert np.all(np.diff(d["Fx"]) <= 1e-12) and d["Fx"][-1] == -0.5  # more and more negative
     assert np.all(np.diff(d["Fz"]) <= 1e-12) and d["Fz"][-1] == -0.5
-    assert d["z"][0] == CRUISE_HEIGHT and d["z"][-1] == pytest.approx(PERCH_HEIGHT, abs=1e-12) and m.perch == "end"
+    assert (
+        d["z"][0] == CRUISE_HEIGHT
+        and d["z"][-1] == pytest.approx(PERCH_HEIGHT, abs=1e-12)
+        and m.perch == "end"
+    )
     assert m.regime(0.0) == "cruise" and m.regime(m.duration) == "perched"
 
 
@@ -102,18 +117,27 @@ def test_user_file_both_forms_agree(tmp_path):
     [
         ("[[keyframe]]\nt = 0\nFx = 0\nFz = -0.2\n", "V is missing"),
         ("[[keyframe]]\nt = 0\nFx = 0\nFz = -0.2\nV = -1\n", "negative"),
-        ("[[keyframe]]\nt = 1\nFx = 0\nFz = 0\nV = 0\n[[keyframe]]\nt = 1\nFx = 0\nFz = 0\nV = 0\n", "not increasing"),
+        (
+            "[[keyframe]]\nt = 1\nFx = 0\nFz = 0\nV = 0\n[[keyframe]]\nt = 1\nFx = 0\nFz = 0\nV = 0\n",
+            "not increasing",
+        ),
         ("[[keyframe]]\nt = 0\nFx = 'a'\nFz = 0\nV = 0\n", "not a finite number"),
         ("speed = 3\n[[keyframe]]\nt = 0\nFx = 0\nFz = 0\nV = 0\n", "'speed' is unknown"),
         ("[[keyframe]]\nt = 0\nFx = 0\nFz = 0\nV = 0\nwing = 1\n", "'wing' is unknown"),
         ("name = 'x'\n", "neither"),
         ("[demands]\nt = [0, 1]\nFx = [0]\nFz = [0, 0]\nV = [0, 0]\n", "one length"),
         # a scalar column used to be left out of the message, which listed only t, Fx, Fz
-        ("[demands]\nt = [0, 1]\nFx = [0, 0]\nFz = [0, 0]\nV = 0.9\n", "[demands] V=0.9 is not an array"),
+        (
+            "[demands]\nt = [0, 1]\nFx = [0, 0]\nFz = [0, 0]\nV = 0.9\n",
+            "[demands] V=0.9 is not an array",
+        ),
         ("[[keyframe\n", "not valid TOML"),
         # a huge time would make playback sample ~1e11 instants (MemoryError traceback before the fix)
         ("[[keyframe]]\nt = 1e9\nFx = 0\nFz = 0\nV = 0\n", "t <= 10000 wingbeats"),
-        ("duration = 2e4\n[[keyframe]]\nt = 0\nFx = 0\nFz = 0\nV = 0\n", "duration=20000.0; allowed"),
+        (
+            "duration = 2e4\n[[keyframe]]\nt = 0\nFx = 0\nFz = 0\nV = 0\n",
+            "duration=20000.0; allowed",
+        ),
     ],
 )
 def test_bad_files_give_one_clear_line(tmp_path, text, words):
@@ -126,7 +150,9 @@ def test_bad_files_give_one_clear_line(tmp_path, text, words):
 
 
 def test_unknown_preset_and_missing_file():
-    with pytest.raises(BirdsimError, match="'hovr' is unknown; allowed: hover, cruise, take-off, landing"):
+    with pytest.raises(
+        BirdsimError, match="'hovr' is unknown; allowed: hover, cruise, take-off, landing"
+    ):
         get_manoeuvre("hovr")
     with pytest.raises(BirdsimError, match="does not exist"):
         get_manoeuvre("/nonexistent/x.toml")

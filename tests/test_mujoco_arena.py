@@ -17,7 +17,9 @@ def test_ground_checker_has_squares_of_the_known_spacing(semispan):
     mat = m.material("ground").id
     assert m.mat_texuniform[mat]
     # a checker texture holds 2 x 2 squares; texuniform repeats it texrepeat times per unit length
-    np.testing.assert_allclose(1.0 / (2.0 * m.mat_texrepeat[mat]), GROUND_SPACING * semispan, rtol=1e-6)
+    np.testing.assert_allclose(
+        1.0 / (2.0 * m.mat_texrepeat[mat]), GROUND_SPACING * semispan, rtol=1e-6
+    )
     assert m.geom_matid[m.geom("floor").id] == mat
 
 

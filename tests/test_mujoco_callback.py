@@ -18,7 +18,14 @@ PARAMS = {"pitch": 0.3, "flap_amp": 0.8, "twist_amp": 0.3, "stroke_plane": 0.2}
 
 def _posed(m):
     d = mujoco.MjData(m)
-    set_pose(m, d, {"stroke": 0.2, "flap": 0.4, "twist": -0.1}, {"flap": 0.9, "twist": 0.2}, pitch=0.3, position_seed=(0, 0, -2))
+    set_pose(
+        m,
+        d,
+        {"stroke": 0.2, "flap": 0.4, "twist": -0.1},
+        {"flap": 0.9, "twist": 0.2},
+        pitch=0.3,
+        position_seed=(0, 0, -2),
+    )
     return d
 
 
@@ -98,7 +105,10 @@ def test_body_drag_alone_is_the_core_formula():
     with aero_forces(m, "m1"):
         mujoco.mj_inverse(m, d)
     aero_x = -d.qfrc_inverse[0]
-    expected = -0.5 * v * v * np.sin(theta) * bird.body_drag_area - 2 * bird.polar.cd0 * 0.5 * v * v * bird.semispan * bird.chord
+    expected = (
+        -0.5 * v * v * np.sin(theta) * bird.body_drag_area
+        - 2 * bird.polar.cd0 * 0.5 * v * v * bird.semispan * bird.chord
+    )
     assert aero_x == pytest.approx(expected, rel=1e-12)
     assert d.qfrc_inverse[2] == pytest.approx(0.0, abs=1e-14)
 
@@ -113,7 +123,9 @@ def test_strips_are_applied_along_the_span():
     np.testing.assert_allclose(cb.areas.sum(axis=1), bird.semispan * bird.chord)
 
 
-@pytest.mark.parametrize("theta, v, climb", [(0.4, 0.7, 0.3), (0.2, 0.5, -0.4), (1.2, 0.0, 0.6), (0.4, 0.7, 0.0)])
+@pytest.mark.parametrize(
+    "theta, v, climb", [(0.4, 0.7, 0.3), (0.2, 0.5, -0.4), (1.2, 0.0, 0.6), (0.4, 0.7, 0.0)]
+)
 def test_body_drag_of_a_climbing_body_is_the_cores(theta, v, climb):
     # The held body meets the air at (V, 0, climb) in the MuJoCo world (z up): the callback's
     # body drag (from the true air-relative velocity) must be evaluate_cycle's (Dx, Dz) for

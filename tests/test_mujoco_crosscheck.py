@@ -16,8 +16,8 @@ import pytest
 
 from birdsim import Bird, get_model
 from birdsim.cli import main
-from birdsim.physics.examples import EXAMPLES
 from birdsim.mujoco.crosscheck import crosscheck
+from birdsim.physics.examples import EXAMPLES
 
 INVERSE_TOL = 1e-6
 FORWARD_TOL = 1e-3
@@ -31,7 +31,9 @@ def test_dissertation_examples(ex):
     assert r.power_rel_error < INVERSE_TOL
     # per sample, not only on average: the callback's force IS the core's element force
     scale = np.abs(r.analytic_history_seed).max()
-    np.testing.assert_allclose(r.inverse_history_seed, r.analytic_history_seed, atol=1e-12 * max(scale, 1.0))
+    np.testing.assert_allclose(
+        r.inverse_history_seed, r.analytic_history_seed, atol=1e-12 * max(scale, 1.0)
+    )
     # the wings' inertial forces, measured alone, average to ~0 over the samples
     assert np.abs(r.inertial_residual_seed).max() < 1e-12
     if ex.regime == "hover":
@@ -43,7 +45,11 @@ def _random_cases(per_model: int = 2):
     for name in ("base", "m1", "m2", "m3", "m4"):
         lo, hi = get_model(name).bounds
         for _ in range(per_model):
-            yield name, dict(zip(get_model(name).param_names, map(float, rng.uniform(lo, hi)))), float(rng.uniform(0, 1))
+            yield (
+                name,
+                dict(zip(get_model(name).param_names, map(float, rng.uniform(lo, hi)))),
+                float(rng.uniform(0, 1)),
+            )
 
 
 @pytest.mark.parametrize("case", list(_random_cases()), ids=lambda c: c[0])
@@ -55,8 +61,18 @@ def test_seeded_random_parameter_sets(case):
 
 
 def test_other_bird_and_strips():
-    bird = Bird(semispan=1.4, chord=0.6, hand_chord=0.4, hand_span_fraction=0.4, cp_span_fraction=0.45,
-                strips=3, rho=1.2, omega=1.8, mass=3.0, body_drag_area=0.5)
+    bird = Bird(
+        semispan=1.4,
+        chord=0.6,
+        hand_chord=0.4,
+        hand_span_fraction=0.4,
+        cp_span_fraction=0.45,
+        strips=3,
+        rho=1.2,
+        omega=1.8,
+        mass=3.0,
+        body_drag_area=0.5,
+    )
     ex = EXAMPLES[-1]  # m4 cruise
     r = crosscheck(ex.model, ex.params, ex.speed, bird, samples=32)
     assert r.inverse_rel_error < INVERSE_TOL
@@ -79,12 +95,15 @@ def test_cli_json_and_errors(capsys):
     assert err.count("\n") == 1 and "model 'm9' is unknown" in err
 
 
-
 def test_cli_figure_with_an_unknown_suffix_is_refused_before_work(tmp_path, capsys):
     # matplotlib's ValueError used to end the command with a traceback after the whole cross-check
     assert main(["crosscheck", "--model", "m1", "--figure", str(tmp_path / "f.txt")]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "--figure" in err and "allowed: a path ending in .png, .pdf, .svg" in err
+    assert (
+        err.count("\n") == 1
+        and "--figure" in err
+        and "allowed: a path ending in .png, .pdf, .svg" in err
+    )
     assert not list(tmp_path.iterdir())
 
 
@@ -128,6 +147,14 @@ def test_free_torso_every_example(ex):
 @pytest.mark.parametrize("fraction", [0.0, 1.0])
 def test_zero_span_hand_or_arm(fraction):
     # the Bird allows a zero-span panel; MuJoCo's bird must still compile and agree
-    p = dict(pitch=0.3, flap_amp=0.6, twist_amp=0.3, stroke_plane=0.1, wrist_amp=0.3, wrist_bias=0.2, wrist_lag=1.0)
+    p = dict(
+        pitch=0.3,
+        flap_amp=0.6,
+        twist_amp=0.3,
+        stroke_plane=0.1,
+        wrist_amp=0.3,
+        wrist_bias=0.2,
+        wrist_lag=1.0,
+    )
     r = crosscheck("m4", p, 0.5, Bird(hand_span_fraction=fraction), samples=32, forward=None)
     assert r.inverse_rel_error < INVERSE_TOL and r.power_rel_error < INVERSE_TOL

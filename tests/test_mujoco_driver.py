@@ -9,9 +9,9 @@ import pytest
 
 from birdsim import Bird, evaluate_cycle, get_model
 from birdsim.errors import BirdsimError
-from birdsim.physics.examples import EXAMPLES
 from birdsim.mujoco.driver import set_pose, trajectory
 from birdsim.mujoco.model import aero_sites, build_model
+from birdsim.physics.examples import EXAMPLES
 
 C = np.diag([1.0, -1.0, -1.0])
 
@@ -71,11 +71,20 @@ def test_qvel_and_qacc_are_the_time_derivatives(name):
 def test_set_pose_pitch_position_and_velocity():
     m = build_model("m1")
     d = mujoco.MjData(m)
-    set_pose(m, d, {"flap": 0.2}, pitch=0.4, position_seed=(1.0, 2.0, -3.0), velocity_seed=(0.5, 0.0, -0.1))
+    set_pose(
+        m,
+        d,
+        {"flap": 0.2},
+        pitch=0.4,
+        position_seed=(1.0, 2.0, -3.0),
+        velocity_seed=(0.5, 0.0, -0.1),
+    )
     torso = m.body("torso").id
     np.testing.assert_allclose(d.xpos[torso], [1.0, -2.0, 3.0])
     # nose up: the torso's x axis tilts towards +z by the pitch
-    np.testing.assert_allclose(d.xmat[torso].reshape(3, 3)[:, 0], [np.cos(0.4), 0.0, np.sin(0.4)], atol=1e-15)
+    np.testing.assert_allclose(
+        d.xmat[torso].reshape(3, 3)[:, 0], [np.cos(0.4), 0.0, np.sin(0.4)], atol=1e-15
+    )
     np.testing.assert_allclose(d.qvel[:3], [0.5, 0.0, 0.1])
     set_pose(m, d, {}, pitch=0.0)  # position None keeps the torso where it is
     np.testing.assert_allclose(d.xpos[torso], [1.0, -2.0, 3.0])

@@ -21,7 +21,9 @@ MODEL_NAMES = ("base", "m1", "m2", "m3", "m4")
 def test_committed_mjcf_is_what_the_code_builds():
     # one source of truth: models/*.xml are regenerated from the Bird, byte for byte
     for name, text in mjcf_texts().items():
-        assert (MODELS_DIR / name).read_text() == text, f"run: python -m birdsim.mujoco.model models ({name})"
+        assert (MODELS_DIR / name).read_text() == text, (
+            f"run: python -m birdsim.mujoco.model models ({name})"
+        )
 
 
 def test_scene_file_matches_built_model():
@@ -31,7 +33,9 @@ def test_scene_file_matches_built_model():
         assert getattr(from_file, attr) == getattr(built, attr), attr
     # to_xml writes 6 significant digits: positions and sizes agree to ~1e-6
     for attr in ("body_pos", "geom_size", "geom_pos", "site_pos", "body_mass", "jnt_axis"):
-        np.testing.assert_allclose(getattr(from_file, attr), getattr(built, attr), atol=1e-5, err_msg=attr)
+        np.testing.assert_allclose(
+            getattr(from_file, attr), getattr(built, attr), atol=1e-5, err_msg=attr
+        )
     assert from_file.vis.global_.offwidth == 1280 and from_file.vis.global_.offheight == 720
     assert from_file.opt.density == 0.0 and from_file.opt.viscosity == 0.0
 
@@ -41,7 +45,13 @@ def test_loads_and_steps_one_second_without_warnings(name):
     m = build_model(name)
     d = mujoco.MjData(m)
     mujoco.mj_resetDataKeyframe(m, d, m.key("rest").id)
-    set_pose(m, d, {"flap": 0.3, "twist": -0.2, "heave": 0.05, "wrist_flap": 0.1}, {"flap": 1.0}, pitch=0.2)
+    set_pose(
+        m,
+        d,
+        {"flap": 0.3, "twist": -0.2, "heave": 0.05, "wrist_flap": 0.1},
+        {"flap": 1.0},
+        pitch=0.2,
+    )
     while d.time < 1.0:
         mujoco.mj_step(m, d)
     assert np.all(d.warning.number == 0), d.warning.number
@@ -76,7 +86,12 @@ def test_left_wing_mirrors_right(name):
     mirror = np.diag([1.0, -1.0, 1.0])
     torso = m.body("torso").id
     for _ in range(5):
-        angles = dict(zip(("heave", "sweep", "stroke", "flap", "twist", "wrist_flap", "wrist_twist"), rng.uniform(-1, 1, 7)))
+        angles = dict(
+            zip(
+                ("heave", "sweep", "stroke", "flap", "twist", "wrist_flap", "wrist_twist"),
+                rng.uniform(-1, 1, 7),
+            )
+        )
         set_pose(m, d, angles, pitch=float(rng.uniform(-1, 1)))
         r_torso = d.xmat[torso].reshape(3, 3)
         for part in ("arm", "hand"):
@@ -88,11 +103,22 @@ def test_left_wing_mirrors_right(name):
             np.testing.assert_allclose(rot(lb), mirror @ rot(rb) @ mirror, atol=1e-12)
         for site in ("cp_wing", "cp_arm", "cp_hand"):
             rs, ls = d.site_xpos[m.site(f"r_{site}").id], d.site_xpos[m.site(f"l_{site}").id]
-            np.testing.assert_allclose(r_torso.T @ (ls - d.xpos[torso]), mirror @ r_torso.T @ (rs - d.xpos[torso]), atol=1e-12)
+            np.testing.assert_allclose(
+                r_torso.T @ (ls - d.xpos[torso]),
+                mirror @ r_torso.T @ (rs - d.xpos[torso]),
+                atol=1e-12,
+            )
 
 
 def test_geometry_follows_the_bird():
-    bird = Bird(semispan=1.6, chord=0.5, hand_chord=0.3, hand_span_fraction=0.4, cp_span_fraction=0.3, mass=2.5)
+    bird = Bird(
+        semispan=1.6,
+        chord=0.5,
+        hand_chord=0.3,
+        hand_span_fraction=0.4,
+        cp_span_fraction=0.3,
+        mass=2.5,
+    )
     m = build_model("m4", bird)
     arm, hand = bird.panels("m4")
     np.testing.assert_allclose(m.geom("r_arm_panel").size[:2], [arm.chord / 2, arm.span / 2])
@@ -138,23 +164,43 @@ def test_visual_geoms_change_no_dynamics(name):
     with_vis, without = build_model(name, bird), build_model(name, bird, visuals=False)
     assert with_vis.ngeom > without.ngeom + 20  # the visual bird is there
     torso = with_vis.body("torso").id
-    vis = np.flatnonzero((with_vis.geom_group == VISUAL_GROUP) & (with_vis.body_rootid[with_vis.geom_bodyid] == torso))
+    vis = np.flatnonzero(
+        (with_vis.geom_group == VISUAL_GROUP)
+        & (with_vis.body_rootid[with_vis.geom_bodyid] == torso)
+    )
     assert len(vis) == with_vis.ngeom - without.ngeom
     assert np.all(with_vis.geom_contype[vis] == 0) and np.all(with_vis.geom_conaffinity[vis] == 0)
-    for attr in ("body_mass", "body_inertia", "body_ipos", "body_iquat", "body_pos", "jnt_axis", "dof_armature", "site_pos"):
+    for attr in (
+        "body_mass",
+        "body_inertia",
+        "body_ipos",
+        "body_iquat",
+        "body_pos",
+        "jnt_axis",
+        "dof_armature",
+        "site_pos",
+    ):
         np.testing.assert_array_equal(getattr(with_vis, attr), getattr(without, attr), err_msg=attr)
     results = []
     for m in (with_vis, without):
         m.opt.wind[:] = (-0.7, 0.0, 0.0)
         d = mujoco.MjData(m)
         mujoco.mj_resetDataKeyframe(m, d, m.key("rest").id)
-        set_pose(m, d, {"flap": 0.3, "twist": -0.2, "heave": 0.05, "wrist_flap": 0.1}, {"flap": 1.0, "twist": 0.5}, pitch=0.2)
+        set_pose(
+            m,
+            d,
+            {"flap": 0.3, "twist": -0.2, "heave": 0.05, "wrist_flap": 0.1},
+            {"flap": 1.0, "twist": 0.5},
+            pitch=0.2,
+        )
         with aero_forces(m, name, bird):
             mujoco.mj_inverse(m, d)
             inverse = d.qfrc_inverse.copy()
             for _ in range(200):
                 mujoco.mj_step(m, d)
-            results.append((inverse, d.qpos.copy(), d.qvel.copy(), d.qacc.copy(), d.qfrc_passive.copy()))
+            results.append(
+                (inverse, d.qpos.copy(), d.qvel.copy(), d.qacc.copy(), d.qfrc_passive.copy())
+            )
     for a, b in zip(*results):
         np.testing.assert_allclose(a, b, rtol=0, atol=1e-12)
     assert np.abs(results[0][4]).max() > 1e-3  # the aero forces were really on
@@ -166,10 +212,26 @@ def test_visual_geoms_change_no_crosscheck_figure(monkeypatch):
 
     from birdsim.mujoco import crosscheck as cc
 
-    params = {"pitch": 0.1, "flap_amp": 0.6, "twist_amp": 0.3, "stroke_plane": 0.2, "wrist_amp": 0.3, "wrist_bias": 0.0, "wrist_lag": 0.2}
+    params = {
+        "pitch": 0.1,
+        "flap_amp": 0.6,
+        "twist_amp": 0.3,
+        "stroke_plane": 0.2,
+        "wrist_amp": 0.3,
+        "wrist_bias": 0.0,
+        "wrist_lag": 0.2,
+    }
     a = cc.crosscheck("m4", params, 0.8, samples=32)
     monkeypatch.setattr(cc, "build_model", functools.partial(build_model, visuals=False))
     b = cc.crosscheck("m4", params, 0.8, samples=32)
-    for field in ("analytic_seed", "inverse_seed", "inertial_residual_seed", "forward_seed", "inverse_history_seed"):
-        np.testing.assert_allclose(getattr(a, field), getattr(b, field), rtol=0, atol=1e-12, err_msg=field)
+    for field in (
+        "analytic_seed",
+        "inverse_seed",
+        "inertial_residual_seed",
+        "forward_seed",
+        "inverse_history_seed",
+    ):
+        np.testing.assert_allclose(
+            getattr(a, field), getattr(b, field), rtol=0, atol=1e-12, err_msg=field
+        )
     assert abs(a.inverse_power - b.inverse_power) <= 1e-12

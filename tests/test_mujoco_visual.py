@@ -13,7 +13,15 @@ from birdsim.mujoco.plumage import NEUTRAL, PIGEON, plumage_for
 from birdsim.mujoco.visual import VISUAL_GROUP, extrude, panel_planform, polygon_area
 
 
-@pytest.mark.parametrize("kind, span, chord, bars", [("arm", 2 / 3, 1.0, 0), ("arm", 0.2, 0.11, 2), ("hand", 1 / 3, 1.0, 0), ("hand", 0.13, 0.09, 2)])
+@pytest.mark.parametrize(
+    "kind, span, chord, bars",
+    [
+        ("arm", 2 / 3, 1.0, 0),
+        ("arm", 0.2, 0.11, 2),
+        ("hand", 1 / 3, 1.0, 0),
+        ("hand", 0.13, 0.09, 2),
+    ],
+)
 def test_planform_has_the_panels_span_and_area(kind, span, chord, bars):
     pieces = panel_planform(kind, span, chord, bars)
     area = sum(polygon_area(p.polygon) for p in pieces)
@@ -24,7 +32,13 @@ def test_planform_has_the_panels_span_and_area(kind, span, chord, bars):
     for p in pieces:
         x, y = p.polygon[:, 0], p.polygon[:, 1]
         cross = x * np.roll(y, -1) - np.roll(x, -1) * y
-        moments.append([((x + np.roll(x, -1)) * cross).sum() / 6, ((y + np.roll(y, -1)) * cross).sum() / 6, cross.sum() / 2])
+        moments.append(
+            [
+                ((x + np.roll(x, -1)) * cross).sum() / 6,
+                ((y + np.roll(y, -1)) * cross).sum() / 6,
+                cross.sum() / 2,
+            ]
+        )
     mu, mx, a = np.abs(np.sum(moments, axis=0)) * np.sign(np.sum(moments, axis=0)[2])
     assert abs(mx / a) < 0.05 * chord
     if kind == "arm":
@@ -35,7 +49,10 @@ def test_planform_has_the_panels_span_and_area(kind, span, chord, bars):
     Path = pytest.importorskip("matplotlib.path").Path  # the plots extra (make setup installs it)
 
     xs = np.vstack([p.polygon for p in pieces])
-    gu, gx = np.meshgrid(np.linspace(xs[:, 0].min(), xs[:, 0].max(), 300), np.linspace(xs[:, 1].min(), xs[:, 1].max(), 300))
+    gu, gx = np.meshgrid(
+        np.linspace(xs[:, 0].min(), xs[:, 0].max(), 300),
+        np.linspace(xs[:, 1].min(), xs[:, 1].max(), 300),
+    )
     pts = np.column_stack([gu.ravel(), gx.ravel()])
     counts = sum(Path(p.polygon).contains_points(pts).astype(int) for p in pieces)
     assert (counts > 1).mean() < 0.002  # only boundary pixels are shared
@@ -62,7 +79,16 @@ def test_visual_geoms_are_massless_contact_free_and_mirrored(name):
     assert len(vis) > 20
     assert np.all(m.geom_contype[vis] == 0) and np.all(m.geom_conaffinity[vis] == 0)
     names = [m.geom(int(g)).name for g in vis]
-    for part in ("vis_torso", "vis_head", "vis_beak", "vis_l_eye", "vis_r_eye", "vis_tail", "vis_r_arm_coverts", "vis_r_hand_primaries"):
+    for part in (
+        "vis_torso",
+        "vis_head",
+        "vis_beak",
+        "vis_l_eye",
+        "vis_r_eye",
+        "vis_tail",
+        "vis_r_arm_coverts",
+        "vis_r_hand_primaries",
+    ):
         assert part in names, part
     d = mujoco.MjData(m)
     mujoco.mj_resetDataKeyframe(m, d, m.key("rest").id)
@@ -76,12 +102,20 @@ def test_visual_geoms_are_massless_contact_free_and_mirrored(name):
 
 
 def test_plumage_by_bird_name():
-    assert plumage_for("pigeon") is PIGEON and plumage_for("seed") is NEUTRAL and plumage_for("albatross") is NEUTRAL
-    assert PIGEON.wing_bars == 2 and PIGEON.neck_specular > NEUTRAL.neck_specular  # dark bars, glossy neck
+    assert (
+        plumage_for("pigeon") is PIGEON
+        and plumage_for("seed") is NEUTRAL
+        and plumage_for("albatross") is NEUTRAL
+    )
+    assert (
+        PIGEON.wing_bars == 2 and PIGEON.neck_specular > NEUTRAL.neck_specular
+    )  # dark bars, glossy neck
     m = build_model("m4", Bird(name="pigeon"))
     np.testing.assert_allclose(m.mat_rgba[m.material("plumage_body").id], PIGEON.body)
     assert "vis_r_arm_bars" in [m.geom(i).name for i in range(m.ngeom)]
-    assert "vis_r_arm_bars" not in [build_model("m4").geom(i).name for i in range(build_model("m4").ngeom)]
+    assert "vis_r_arm_bars" not in [
+        build_model("m4").geom(i).name for i in range(build_model("m4").ngeom)
+    ]
 
 
 def test_zero_span_panel_has_no_dress():

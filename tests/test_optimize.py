@@ -8,9 +8,9 @@ import math
 import numpy as np
 import pytest
 
-from birdsim.tables.cost import evaluate_cost
 from birdsim.errors import BirdsimError
 from birdsim.physics.kinematics import get_model
+from birdsim.tables.cost import evaluate_cost
 from birdsim.tables.optimize import (
     ForceProblem,
     FunctionProblem,

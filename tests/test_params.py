@@ -16,7 +16,9 @@ def test_every_parameter_of_every_model_is_listed_with_its_examples():
         for spec in km.params:
             row = rows[spec.name]
             assert (row["lower"], row["upper"], row["unit"]) == (spec.lower, spec.upper, "rad")
-            assert row["meaning"] == spec.doc and row["lower"] <= row["default_cruise"] <= row["upper"]
+            assert (
+                row["meaning"] == spec.doc and row["lower"] <= row["default_cruise"] <= row["upper"]
+            )
         for ex in (e for e in EXAMPLES if e.model == name):
             for p, v in ex.params.items():
                 assert rows[p]["examples"][f"eq{ex.equation} {ex.regime} (V={ex.speed:g})"] == v

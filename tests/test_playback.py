@@ -7,9 +7,9 @@ import pytest
 from scipy.interpolate import RegularGridInterpolator
 
 from birdsim import Bird, get_model
-from birdsim.physics.kinematics import joint_states
 from birdsim.flight.manoeuvre import PRESETS, Keyframe, Manoeuvre
 from birdsim.flight.playback import PlaybackConfig, TableMismatchError, frame_times, play
+from birdsim.physics.kinematics import joint_states
 
 
 class SmallTable:
@@ -21,13 +21,23 @@ class SmallTable:
         self.model = model
         km = get_model(model)
         self.param_names = km.param_names
-        self.axes = {"Fx": np.linspace(-0.5, 0.5, 5), "Fz": np.linspace(-0.5, 0.0, 3), "V": np.linspace(0.0, 1.0, 5)}
+        self.axes = {
+            "Fx": np.linspace(-0.5, 0.5, 5),
+            "Fz": np.linspace(-0.5, 0.0, 3),
+            "V": np.linspace(0.0, 1.0, 5),
+        }
         grids = np.meshgrid(*self.axes.values(), indexing="ij")
         lo, hi = km.bounds
         self._f = {}
         for i, p in enumerate(km.params):
-            frac = np.clip(0.5 + 0.3 * np.sin(1 + i) * grids[0] - 0.6 * np.cos(i) * grids[1] - 0.3 * grids[2], 0.0, 1.0)
-            self._f[p.name] = RegularGridInterpolator(tuple(self.axes.values()), lo[i] + frac * (hi[i] - lo[i]))
+            frac = np.clip(
+                0.5 + 0.3 * np.sin(1 + i) * grids[0] - 0.6 * np.cos(i) * grids[1] - 0.3 * grids[2],
+                0.0,
+                1.0,
+            )
+            self._f[p.name] = RegularGridInterpolator(
+                tuple(self.axes.values()), lo[i] + frac * (hi[i] - lo[i])
+            )
 
     def lookup_many(self, Fx, Fz, V, clip=False):
         pts = np.stack(np.broadcast_arrays(Fx, Fz, V), axis=-1)
@@ -42,7 +52,11 @@ def step(before, after, t_step=2.0, width=1e-3, beats=6.0):
     """A step change of demand at ``t_step`` (a ramp ``width`` wingbeats wide)."""
     return Manoeuvre(
         "step",
-        (Keyframe(0.0, *before, 6.0), Keyframe(t_step, *before, 6.0), Keyframe(t_step + width, *after, 6.0)),
+        (
+            Keyframe(0.0, *before, 6.0),
+            Keyframe(t_step, *before, 6.0),
+            Keyframe(t_step + width, *after, 6.0),
+        ),
         beats,
     )
 
@@ -58,8 +72,16 @@ def test_constant_demands_reproduce_the_analytic_wingbeat(model):
     states = joint_states(get_model(model), params, bird, bird.omega * pb.time, trailing=0)
     for name, st in states.items():
         # 1e-10: filter started in steady state and splines of a constant are exact; only rounding remains
-        np.testing.assert_allclose(pb.angles[name], np.broadcast_to(st.angle, pb.time.shape), rtol=0, atol=1e-10, err_msg=name)
-        np.testing.assert_allclose(pb.rates[name], np.broadcast_to(st.rate, pb.time.shape), rtol=0, atol=1e-8, err_msg=name)
+        np.testing.assert_allclose(
+            pb.angles[name],
+            np.broadcast_to(st.angle, pb.time.shape),
+            rtol=0,
+            atol=1e-10,
+            err_msg=name,
+        )
+        np.testing.assert_allclose(
+            pb.rates[name], np.broadcast_to(st.rate, pb.time.shape), rtol=0, atol=1e-8, err_msg=name
+        )
     np.testing.assert_allclose(pb.pitch, params["pitch"], rtol=0, atol=1e-10)
     np.testing.assert_allclose(pb.phase, bird.omega * pb.time, rtol=0, atol=0)
 
@@ -67,7 +89,12 @@ def test_constant_demands_reproduce_the_analytic_wingbeat(model):
 def _step_response(smoothing, model="m4"):
     dt_beats = 1.0 / 1000
     t = np.arange(0.0, 5.0, dt_beats)
-    pb = play(step((0.0, -0.2, 0.9), (-0.5, -0.5, 0.1)), SmallTable(model), t, config=PlaybackConfig(smoothing_beats=smoothing))
+    pb = play(
+        step((0.0, -0.2, 0.9), (-0.5, -0.5, 0.1)),
+        SmallTable(model),
+        t,
+        config=PlaybackConfig(smoothing_beats=smoothing),
+    )
     return pb, dt_beats * pb.bird.period
 
 
@@ -93,7 +120,10 @@ def test_step_in_demand_keeps_angles_and_rates_continuous_and_consistent():
 def test_without_smoothing_the_same_step_makes_the_rates_jump():
     """The continuity test above can fail: unsmoothed, the step shows as a rate spike."""
     pb, dt = _step_response(0.0)
-    jumps = [np.max(np.abs(np.diff(pb.rates[n]))) / (max(np.ptp(q), 1e-9) * dt) for n, q in pb.angles.items()]
+    jumps = [
+        np.max(np.abs(np.diff(pb.rates[n]))) / (max(np.ptp(q), 1e-9) * dt)
+        for n, q in pb.angles.items()
+    ]
     assert max(jumps) > 3.0
 
 
@@ -127,7 +157,9 @@ def test_landing_ends_on_the_perch():
 def test_demands_beyond_the_grid_are_clipped_and_reported():
     m = steady(V=1.4)
     pb = play(m, SmallTable(), [0.0, 1.0])
-    assert np.all(pb.clipped) and np.all(pb.demand_used["V"] == 1.0) and np.all(pb.demand["V"] == 1.4)
+    assert (
+        np.all(pb.clipped) and np.all(pb.demand_used["V"] == 1.0) and np.all(pb.demand["V"] == 1.4)
+    )
     assert "V=1.4 outside [0, 1]" in pb.clip_note
     assert play(steady(), SmallTable(), [0.0]).clip_note == ""
 

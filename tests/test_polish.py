@@ -22,13 +22,19 @@ OFF = replace(CFG, settings=replace(CFG.settings, polish_rule=False))
 
 def _screen(S: np.ndarray, v: float):
     S = np.atleast_2d(S)
-    return S, forces(MODEL, S, v, CFG.bird, CFG.settings.n_search), other_cost(MODEL, S, v, CFG.weights)
+    return (
+        S,
+        forces(MODEL, S, v, CFG.bird, CFG.settings.n_search),
+        other_cost(MODEL, S, v, CFG.weights),
+    )
 
 
 def _both(fx, fz, v, warm, S):
     """(rule on, rule off) answers of _solve_cell: (x, cost, evaluations, converged)."""
     screen = _screen(S, v)
-    return _solve_cell(CFG, MODEL, fx, fz, v, warm, screen), _solve_cell(OFF, MODEL, fx, fz, v, warm, screen)
+    return _solve_cell(CFG, MODEL, fx, fz, v, warm, screen), _solve_cell(
+        OFF, MODEL, fx, fz, v, warm, screen
+    )
 
 
 @pytest.fixture(scope="module")
@@ -47,12 +53,16 @@ def test_near_candidate_is_not_polished(optimum):
     assert cw < cc <= (1 + CFG.settings.polish_excess) * cw  # the rule's premise holds here
     on, off = _both(fx, fz, v, x, cand)
     assert on[2] < off[2]  # the polish was skipped: fewer wingbeats (warm run only)
-    assert np.array_equal(on[0], off[0]) and on[1] == off[1]  # the skipped polish would not have won
+    assert (
+        np.array_equal(on[0], off[0]) and on[1] == off[1]
+    )  # the skipped polish would not have won
 
 
 def test_far_candidate_is_still_polished(optimum):
     (fx, fz, v), x, prob = optimum
-    cand = np.clip(x + 0.5 * (prob.upper - prob.lower) * np.array([1.0, -1.0, 1.0]), prob.lower, prob.upper)
+    cand = np.clip(
+        x + 0.5 * (prob.upper - prob.lower) * np.array([1.0, -1.0, 1.0]), prob.lower, prob.upper
+    )
     on, off = _both(fx, fz, v, x, cand)
     assert on[2] == off[2] > 2  # polished as without the rule
     assert np.array_equal(on[0], off[0])
@@ -76,8 +86,15 @@ def test_cold_cells_are_always_polished():
 
 @pytest.mark.parametrize(
     "name, value",
-    [("polish_near", float("nan")), ("polish_near", -0.1), ("polish_excess", float("nan")), ("polish_excess", -1.0),
-     ("polish_rule", "yes"), ("polish_rule", 1), ("v_passes", "no")],
+    [
+        ("polish_near", float("nan")),
+        ("polish_near", -0.1),
+        ("polish_excess", float("nan")),
+        ("polish_excess", -1.0),
+        ("polish_rule", "yes"),
+        ("polish_rule", 1),
+        ("v_passes", "no"),
+    ],
 )
 def test_bad_polish_settings(name, value):
     with pytest.raises(BirdsimError, match=f"{name}=.* is invalid"):

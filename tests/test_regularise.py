@@ -51,6 +51,8 @@ def test_local_score_counts_the_zigzags_a_cell_takes_part_in():
     ok = np.ones((5, 1, 1), bool)
     assert local_score(names, X, ok, (2, 0, 0), np.array([0.0, 0.0])) == (0, 0.0)
     count, steps = local_score(names, X, ok, (2, 0, 0), np.array([0.0, 0.5]))
-    assert count == 1 and steps == pytest.approx(2 * 0.25)  # the middle of one triple; two neighbours
+    assert count == 1 and steps == pytest.approx(
+        2 * 0.25
+    )  # the middle of one triple; two neighbours
     X[2, 0, 0, 1] = 0.5
     assert len(zigzag_cells(names, X, ok)) == 3 and len(zigzag_cells(names, X, ok, ends=False)) == 1

@@ -12,8 +12,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from birdsim.render import gl
 from birdsim.errors import BirdsimError
+from birdsim.render import gl
 
 try:  # the default back-end here; every test that renders needs one of the two
     BACKEND = gl.select_gl("auto")
@@ -22,9 +22,16 @@ except gl.GLError:  # pragma: no cover - a machine without OSMesa and EGL
 
 from birdsim import Bird, get_model  # noqa: E402
 from birdsim.cli import main  # noqa: E402
-from birdsim.tables.cost import FRACTION_NAMES  # noqa: E402
 from birdsim.flight.manoeuvre import PRESETS  # noqa: E402
-from birdsim.render.renderer import RenderOptions, Scene, parse_size, play_for_video, render_manoeuvre, video_info  # noqa: E402
+from birdsim.render.renderer import (
+    RenderOptions,
+    Scene,
+    parse_size,
+    play_for_video,
+    render_manoeuvre,
+    video_info,
+)  # noqa: E402
+from birdsim.tables.cost import FRACTION_NAMES  # noqa: E402
 from birdsim.tables.lookup import LookupTable  # noqa: E402
 
 needs_gl = pytest.mark.skipif(BACKEND is None, reason="no headless OpenGL (libOSMesa or libEGL)")
@@ -35,10 +42,16 @@ def small_table(model: str = "m4") -> LookupTable:
     """A 5x3x5 table whose parameters vary smoothly with the demands inside the bounds
     (hover-like large amplitudes at low V and strong lift, cruise-like small ones at V=1)."""
     km = get_model(model)
-    axes = {"Fx": np.linspace(-0.5, 0.5, 5), "Fz": np.linspace(-0.5, 0.0, 3), "V": np.linspace(0.0, 1.0, 5)}
+    axes = {
+        "Fx": np.linspace(-0.5, 0.5, 5),
+        "Fz": np.linspace(-0.5, 0.0, 3),
+        "V": np.linspace(0.0, 1.0, 5),
+    }
     FX, FZ, V = np.meshgrid(*axes.values(), indexing="ij")
     lo, hi = km.bounds
-    frac = np.clip(0.45 + 0.1 * FX[..., None] - 0.8 * FZ[..., None] - 0.35 * V[..., None], 0.05, 0.95)
+    frac = np.clip(
+        0.45 + 0.1 * FX[..., None] - 0.8 * FZ[..., None] - 0.35 * V[..., None], 0.05, 0.95
+    )
     params = lo + frac * (hi - lo)
     shape = FX.shape
     return LookupTable(
@@ -56,7 +69,15 @@ def small_table(model: str = "m4") -> LookupTable:
 
 
 def options(**kw) -> RenderOptions:
-    base = dict(width=W, height=H, fps=FPS, seconds=SECONDS, beats_per_second=2.0, progress=False, quality="draft")
+    base = dict(
+        width=W,
+        height=H,
+        fps=FPS,
+        seconds=SECONDS,
+        beats_per_second=2.0,
+        progress=False,
+        quality="draft",
+    )
     base.update(kw)
     return RenderOptions(**base)
 
@@ -124,8 +145,16 @@ def test_scene_pose_equals_the_drivers_set_pose(model):
         for k in (0, pb.frames // 2, pb.frames - 1):
             scene.pose_instant(k)
             f = pb.frame(k)
-            set_pose(scene.m, d2, f["angles"], f["rates"], pitch=f["pitch"], position_seed=f["position_seed"],
-                     velocity_seed=f["velocity_seed"], pitch_rate=f["pitch_rate"])
+            set_pose(
+                scene.m,
+                d2,
+                f["angles"],
+                f["rates"],
+                pitch=f["pitch"],
+                position_seed=f["position_seed"],
+                velocity_seed=f["velocity_seed"],
+                pitch_rate=f["pitch_rate"],
+            )
             # same arithmetic on both paths, only the order of floating-point operations differs
             np.testing.assert_allclose(scene.d.xpos, d2.xpos, rtol=0, atol=1e-12)
             np.testing.assert_allclose(scene.d.site_xpos, d2.site_xpos, rtol=0, atol=1e-12)
@@ -158,12 +187,32 @@ def test_cli_renders_and_refuses_to_overwrite(tmp_path, capsys):
     table.save(tmp_path / "t")
     out = tmp_path / "clip.mp4"
     sheet = tmp_path / "clip.png"
-    argv = ["render", "cruise", "--kinematic", "--table", str(tmp_path / "t.npz"), "--out", str(out), "--size", "128x96", "--fps", "10", "--seconds", "0.5", "--quiet", "--sheet", str(sheet)]
+    argv = [
+        "render",
+        "cruise",
+        "--kinematic",
+        "--table",
+        str(tmp_path / "t.npz"),
+        "--out",
+        str(out),
+        "--size",
+        "128x96",
+        "--fps",
+        "10",
+        "--seconds",
+        "0.5",
+        "--quiet",
+        "--sheet",
+        str(sheet),
+    ]
     assert main(argv) == 0
     assert video_info(out)["frames"] == 5
     from PIL import Image
 
-    assert Image.open(sheet).size == (4 * 320, 2 * 240)  # 5 frames -> 2 rows of 4 thumbnails, 320 wide
+    assert Image.open(sheet).size == (
+        4 * 320,
+        2 * 240,
+    )  # 5 frames -> 2 rows of 4 thumbnails, 320 wide
     before = out.stat().st_mtime_ns
     assert main(argv) == 2
     err = capsys.readouterr().err.strip().splitlines()
@@ -182,19 +231,34 @@ def test_cli_renders_and_refuses_to_overwrite(tmp_path, capsys):
         (["hover", "--fps", "ten"], "not an integer"),
         (["hover", "--gl", "vulkan"], "--gl 'vulkan' is unknown"),
         (["hover", "--camera", "sky"], "--camera 'sky' is unknown"),
-        (["hover", "--out", "/proc/x.mp4"], "not writable"),  # /proc refuses new files, even to root
+        (
+            ["hover", "--out", "/proc/x.mp4"],
+            "not writable",
+        ),  # /proc refuses new files, even to root
         (["hover", "--out", "/proc/birdsim/x.mp4"], "cannot be created"),
         (["hover", "--out", "x.avi"], "does not end in .mp4"),
         (["hover", "--table", "/nonexistent/t.npz"], "does not exist"),
         (["hover", "--seconds", "3601"], "--seconds 3601.0 is invalid"),
-        (["hover", "--beat-rate", "0.001"], "= 8000 s of video at --beat-rate 0.001; allowed: at most 3600 s"),  # the hover path: 8 wingbeats
-        (["hover", "--quality", "ultra"], "--quality 'ultra' is unknown; allowed: draft, good, best"),
-        (["hover", "--camera", "drone"], "--camera 'drone' is unknown; allowed: track, chase, side, top, overview"),
+        (
+            ["hover", "--beat-rate", "0.001"],
+            "= 8000 s of video at --beat-rate 0.001; allowed: at most 3600 s",
+        ),  # the hover path: 8 wingbeats
+        (
+            ["hover", "--quality", "ultra"],
+            "--quality 'ultra' is unknown; allowed: draft, good, best",
+        ),
+        (
+            ["hover", "--camera", "drone"],
+            "--camera 'drone' is unknown; allowed: track, chase, side, top, overview",
+        ),
         (["hover", "--forces", "0"], "--forces '0' is not a positive number"),
         (["hover", "--forces", "-2"], "--forces '-2' is not a positive number"),
         (["hover", "--forces", "big"], "--forces 'big' is not a positive number"),
         (["hover", "--forces", "inf"], "--forces 'inf' is not a positive number"),
-        (["hover", "--still", "s.png", "--at", "8.5"], "--at '8.5' is outside the clip; allowed: a time in wingbeats in [0, 8]"),
+        (
+            ["hover", "--still", "s.png", "--at", "8.5"],
+            "--at '8.5' is outside the clip; allowed: a time in wingbeats in [0, 8]",
+        ),
         (["hover", "--still", "s.png", "--at", "-0.1"], "--at '-0.1' is outside the clip"),
         (["hover", "--still", "s.png", "--at", "nan"], "--at 'nan' is outside the clip"),
         (["hover", "--at", "1"], "--at '1' needs --still"),
@@ -211,7 +275,22 @@ def test_bad_input_one_line(tmp_path, capsys, monkeypatch, args, words):
 
 def test_table_for_another_model(tmp_path, capsys):
     small_table("m3").save(tmp_path / "m3")
-    assert main(["render", "hover", "--kinematic", "--model", "m4", "--table", str(tmp_path / "m3.npz"), "--out", str(tmp_path / "x.mp4")]) == 2
+    assert (
+        main(
+            [
+                "render",
+                "hover",
+                "--kinematic",
+                "--model",
+                "m4",
+                "--table",
+                str(tmp_path / "m3.npz"),
+                "--out",
+                str(tmp_path / "x.mp4"),
+            ]
+        )
+        == 2
+    )
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "built for model 'm3', not 'm4'" in err[0]
     assert not (tmp_path / "x.mp4").exists()
@@ -227,7 +306,19 @@ def test_missing_gl_library_is_named(monkeypatch, capsys, tmp_path):
     with pytest.raises(gl.GLError, match=r"neither libOSMesa\.so .* nor libEGL\.so"):
         gl.resolve_gl("auto")
     small_table().save(tmp_path / "t")
-    assert main(["render", "hover", "--table", str(tmp_path / "t.npz"), "--out", str(tmp_path / "x.mp4")]) == 2
+    assert (
+        main(
+            [
+                "render",
+                "hover",
+                "--table",
+                str(tmp_path / "t.npz"),
+                "--out",
+                str(tmp_path / "x.mp4"),
+            ]
+        )
+        == 2
+    )
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "libOSMesa.so" in err[0] and "libEGL.so" in err[0]
     assert list(tmp_path.glob("*.mp4")) == []
@@ -251,7 +342,9 @@ def test_parse_size():
             parse_size(bad)
 
 
-@pytest.mark.skipif(not gl.library_available("osmesa"), reason="OSMesa not installed: the script would install it")
+@pytest.mark.skipif(
+    not gl.library_available("osmesa"), reason="OSMesa not installed: the script would install it"
+)
 def test_setup_gl_is_quiet_and_idempotent_when_osmesa_is_installed():
     import subprocess
 
@@ -272,8 +365,27 @@ def test_still_writes_one_png_and_nothing_else(tmp_path, capsys):
     table = small_table()
     table.save(tmp_path / "t")
     still = tmp_path / "s.png"
-    argv = ["render", "cruise", "--kinematic", "--table", str(tmp_path / "t.npz"), "--still", str(still), "--at", "1.25", "--size", "160x128",
-            "--seconds", "1", "--quality", "draft", "--forces", "2", "--camera", "chase"]
+    argv = [
+        "render",
+        "cruise",
+        "--kinematic",
+        "--table",
+        str(tmp_path / "t.npz"),
+        "--still",
+        str(still),
+        "--at",
+        "1.25",
+        "--size",
+        "160x128",
+        "--seconds",
+        "1",
+        "--quality",
+        "draft",
+        "--forces",
+        "2",
+        "--camera",
+        "chase",
+    ]
     assert main(argv) == 0
     from PIL import Image
 
@@ -299,8 +411,16 @@ def test_quality_levels_switch_the_effects():
         with Scene(pb, o) as scene:
             flags = scene.renderer.scene.flags
             look = QUALITIES[q]
-            assert flags[rnd.mjRND_SHADOW] == (look.shadowsize > 0) and flags[rnd.mjRND_SKYBOX] == look.skybox
-            assert scene.m.vis.quality.offsamples == look.samples and scene.m.vis.quality.shadowsize == look.shadowsize
+            assert (
+                flags[rnd.mjRND_SHADOW] == (look.shadowsize > 0)
+                and flags[rnd.mjRND_SKYBOX] == look.skybox
+            )
+            assert (
+                scene.m.vis.quality.offsamples == look.samples
+                and scene.m.vis.quality.shadowsize == look.shadowsize
+            )
             seen[q] = scene.rgb(1)
     assert seen["draft"].std() > 10 and seen["best"].std() > 10
-    assert np.abs(seen["draft"].astype(int) - seen["good"].astype(int)).mean() > 1  # the sky and shadows show
+    assert (
+        np.abs(seen["draft"].astype(int) - seen["good"].astype(int)).mean() > 1
+    )  # the sky and shadows show

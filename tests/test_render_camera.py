@@ -42,7 +42,9 @@ def test_smoothing_has_no_lag_and_no_wingbeat_jitter():
 def test_projection_centres_the_lookat_and_scales_with_the_field_of_view():
     pose = CameraPose.from_offset(np.array([1.0, 2.0, 3.0]), np.array([-2.0, -2.0, 1.0]))
     np.testing.assert_allclose(pose.position(), [-1.0, 0.0, 4.0], atol=1e-9)
-    np.testing.assert_allclose(project(np.array([[1.0, 2.0, 3.0]]), pose, 45.0, 4 / 3), [[0.0, 0.0]], atol=1e-9)
+    np.testing.assert_allclose(
+        project(np.array([[1.0, 2.0, 3.0]]), pose, 45.0, 4 / 3), [[0.0, 0.0]], atol=1e-9
+    )
     # a sphere of the size fit_distance was asked for spans the asked fraction of the frame
     d = fit_distance(2.0, 45.0, 0.5, 0.45)  # portrait: the width is the narrower side
     side = CameraPose.from_offset(np.zeros(3), np.array([0.0, -d, 0.0]))
@@ -61,18 +63,35 @@ def _bird_mask(scene, i):
 @pytest.mark.render
 @pytest.mark.parametrize("preset", ["hover", "cruise", "take-off", "landing"])
 def test_overview_keeps_the_bird_in_every_frame(preset):
-    o = RenderOptions(width=160, height=96, fps=4, beats_per_second=2.0, camera="overview", quality="draft", progress=False, trails=False)
+    o = RenderOptions(
+        width=160,
+        height=96,
+        fps=4,
+        beats_per_second=2.0,
+        camera="overview",
+        quality="draft",
+        progress=False,
+        trails=False,
+    )
     pb = play_for_video(PRESETS[preset], small_table(), o)
     with Scene(pb, o) as scene:
         fovy = float(scene.m.vis.global_.fovy)
         for i in range(scene.frames):
             k = scene.instant(i)
             uv = project(scene.torso_path[k][None, :], scene.poses[i], fovy, o.width / o.height)[0]
-            assert np.all(np.abs(uv) < 0.9), (i, uv)  # the bird's centre inside the frame, off the edges
+            assert np.all(np.abs(uv) < 0.9), (
+                i,
+                uv,
+            )  # the bird's centre inside the frame, off the edges
             assert uv[1] < 0.4, (i, uv)  # below the overlay text (the top 27 % of a 640x480 frame)
         # the projection is MuJoCo's: the projected centre lies on the bird in the image
         for i in (0, scene.frames // 2, scene.frames - 1):
-            uv = project(scene.torso_path[scene.instant(i)][None, :], scene.poses[i], fovy, o.width / o.height)[0]
+            uv = project(
+                scene.torso_path[scene.instant(i)][None, :],
+                scene.poses[i],
+                fovy,
+                o.width / o.height,
+            )[0]
             col, row = int((uv[0] + 1) / 2 * o.width), int((1 - uv[1]) / 2 * o.height)
             mask = _bird_mask(scene, i)
             assert mask[max(0, row - 1) : row + 2, max(0, col - 1) : col + 2].any(), (i, row, col)
@@ -84,7 +103,17 @@ def test_overview_keeps_the_bird_in_every_frame(preset):
 @pytest.mark.parametrize("size", [(160, 128), (96, 192), (256, 64)])
 def test_the_bird_fills_a_sensible_part_of_the_frame(camera, size):
     w, h = size
-    o = RenderOptions(width=w, height=h, fps=6, seconds=1.0, camera=camera, quality="draft", progress=False, trails=False, overlay=False)
+    o = RenderOptions(
+        width=w,
+        height=h,
+        fps=6,
+        seconds=1.0,
+        camera=camera,
+        quality="draft",
+        progress=False,
+        trails=False,
+        overlay=False,
+    )
     pb = play_for_video(PRESETS["cruise"], small_table(), o)
     with Scene(pb, o) as scene:
         for i in range(0, scene.frames, 2):
@@ -103,20 +132,44 @@ def test_shadows_only_where_the_shadow_is_in_view():
     from birdsim.render.camera import project
 
     table = small_table()
-    for preset, camera, expect in (("cruise", "track", "none"), ("cruise", "overview", "all"), ("take-off", "track", "some")):
-        o = RenderOptions(width=64, height=48, fps=4, camera=camera, quality="good", progress=False, trails=False, overlay=False)
+    for preset, camera, expect in (
+        ("cruise", "track", "none"),
+        ("cruise", "overview", "all"),
+        ("take-off", "track", "some"),
+    ):
+        o = RenderOptions(
+            width=64,
+            height=48,
+            fps=4,
+            camera=camera,
+            quality="good",
+            progress=False,
+            trails=False,
+            overlay=False,
+        )
         with Scene(play_for_video(PRESETS[preset], table, o), o) as scene:
             on = scene.shadows
-            assert {"none": not on.any(), "all": on.all(), "some": on.any()}[expect], (preset, camera, on)
+            assert {"none": not on.any(), "all": on.all(), "some": on.any()}[expect], (
+                preset,
+                camera,
+                on,
+            )
             d = scene.m.light_dir[0] / np.linalg.norm(scene.m.light_dir[0])
             for i in range(scene.frames):  # off-frame shadow points really are outside the frame
                 p = scene.torso_path[scene.instant(i)]
-                uv = project((p + d * (p[2] / -d[2]))[None, :], scene.poses[i], float(scene.m.vis.global_.fovy), o.width / o.height)[0]
+                uv = project(
+                    (p + d * (p[2] / -d[2]))[None, :],
+                    scene.poses[i],
+                    float(scene.m.vis.global_.fovy),
+                    o.width / o.height,
+                )[0]
                 if np.all(np.abs(uv) < 1.0):
                     assert on[i]
             scene.update(0)
             assert scene.renderer.scene.flags[__import__("mujoco").mjtRndFlag.mjRND_SHADOW] == on[0]
-    o = RenderOptions(width=64, height=48, fps=4, camera="overview", quality="draft", progress=False)
+    o = RenderOptions(
+        width=64, height=48, fps=4, camera="overview", quality="draft", progress=False
+    )
     with Scene(play_for_video(PRESETS["cruise"], table, o), o) as scene:
         assert not scene.shadows.any()
 
@@ -139,13 +192,27 @@ def test_overview_keeps_the_free_flight_in_every_frame(preset):
     bird = Bird.from_toml("models/seed-bird.toml")
     path = PATH_PRESETS[preset]
     log = log_arrays(fly(path, load_table_for(bird, DEMO_MODEL, None), bird, DEMO_MODEL), preset)
-    o = RenderOptions(width=160, height=96, fps=4, beats_per_second=2.0, camera="overview", quality="draft", progress=False, trails=False)
+    o = RenderOptions(
+        width=160,
+        height=96,
+        fps=4,
+        beats_per_second=2.0,
+        camera="overview",
+        quality="draft",
+        progress=False,
+        trails=False,
+    )
     states = flight_states(log, dataclasses.replace(o, seconds=None), title=preset)
     with Scene(states, o) as scene:
         fovy = float(scene.m.vis.global_.fovy)
         assert scene.frames >= 2 * path.duration_beats - 1
         for i in range(scene.frames):
-            uv = project(scene.torso_path[scene.instant(i)][None, :], scene.poses[i], fovy, o.width / o.height)[0]
+            uv = project(
+                scene.torso_path[scene.instant(i)][None, :],
+                scene.poses[i],
+                fovy,
+                o.width / o.height,
+            )[0]
             assert np.all(np.abs(uv) < 0.9), (i, uv)
             # and below the overlay text, which covers the top 27 % of a 640x480 frame
             assert uv[1] < 0.4, (i, uv)

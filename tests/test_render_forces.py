@@ -20,7 +20,13 @@ def test_site_forces_are_the_callbacks(name, strips):
     m = build_model(name, bird)
     m.opt.wind[:] = (-0.8, 0.1, 0.05)
     d = mujoco.MjData(m)
-    set_pose(m, d, {"flap": 0.3, "twist": -0.2, "wrist_flap": 0.1, "stroke": 0.2}, {"flap": 1.0, "twist": 0.7, "wrist_flap": -0.4}, pitch=0.15)
+    set_pose(
+        m,
+        d,
+        {"flap": 0.3, "twist": -0.2, "wrist_flap": 0.1, "stroke": 0.2},
+        {"flap": 1.0, "twist": 0.7, "wrist_flap": -0.4},
+        pitch=0.15,
+    )
     mujoco.mj_kinematics(m, d)
     mujoco.mj_comPos(m, d)
     sites = aero_sites(name, bird)
@@ -46,7 +52,15 @@ def test_achieved_force_is_the_cycles_dissertation_force():
     from birdsim.mujoco.crosscheck import HOLD_POSITION_SEED, held_model
     from birdsim.mujoco.driver import trajectory
 
-    params = {"pitch": 0.1, "flap_amp": 0.6, "twist_amp": 0.3, "stroke_plane": 0.2, "wrist_amp": 0.3, "wrist_bias": 0.0, "wrist_lag": 0.2}
+    params = {
+        "pitch": 0.1,
+        "flap_amp": 0.6,
+        "twist_amp": 0.3,
+        "stroke_plane": 0.2,
+        "wrist_amp": 0.3,
+        "wrist_bias": 0.0,
+        "wrist_lag": 0.2,
+    }
     bird = Bird()
     cyc = evaluate_cycle("m4", params, 0.8, bird=bird, n=64)
     m = held_model("m4", params, 0.8, bird)
@@ -62,12 +76,18 @@ def test_achieved_force_is_the_cycles_dissertation_force():
         f, drag = site_forces(mujoco, m, d, sites, ids, m.site("torso_cp").id, bird)
         hist.append(dissertation_force(f, drag, [s.side for s in sites], bird))
     mean = np.mean(hist, axis=0)
-    np.testing.assert_allclose(mean[[0, 2]], [float(cyc.mean.Fx), float(cyc.mean.Fz)], rtol=1e-9, atol=1e-12)  # mean.Fx includes the body drag
+    np.testing.assert_allclose(
+        mean[[0, 2]], [float(cyc.mean.Fx), float(cyc.mean.Fz)], rtol=1e-9, atol=1e-12
+    )  # mean.Fx includes the body drag
 
 
 def test_wingbeat_mean():
     t = np.arange(400) / 40.0  # 40 samples per beat
     x = 2.0 + np.sin(2 * np.pi * t)
-    np.testing.assert_allclose(wingbeat_mean(x, t), 2.0, atol=1e-12)  # whole beats only, also at the ends
+    np.testing.assert_allclose(
+        wingbeat_mean(x, t), 2.0, atol=1e-12
+    )  # whole beats only, also at the ends
     y = wingbeat_mean(np.column_stack([x, 3 * t]), t)
-    np.testing.assert_allclose(y[20:-20, 1], 3 * t[20:-20], atol=1e-12)  # a ramp passes unchanged (centred)
+    np.testing.assert_allclose(
+        y[20:-20, 1], 3 * t[20:-20], atol=1e-12
+    )  # a ramp passes unchanged (centred)

@@ -6,8 +6,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from birdsim.render import gl
 from birdsim.errors import BirdsimError
+from birdsim.render import gl
 
 try:
     BACKEND = gl.select_gl("auto")
@@ -16,7 +16,15 @@ except gl.GLError:  # pragma: no cover
 
 from birdsim import Bird  # noqa: E402
 from birdsim.flight.manoeuvre import PRESETS  # noqa: E402
-from birdsim.render.renderer import RenderOptions, Scene, StateSequence, play_for_video, render_states, states_from_playback, video_info  # noqa: E402
+from birdsim.render.renderer import (
+    RenderOptions,
+    Scene,
+    StateSequence,
+    play_for_video,
+    render_states,
+    states_from_playback,
+    video_info,
+)  # noqa: E402
 
 needs_gl = pytest.mark.skipif(BACKEND is None, reason="no headless OpenGL (libOSMesa or libEGL)")
 
@@ -70,12 +78,19 @@ def test_overlay_from_list_or_callable():
 @pytest.mark.render
 def test_reference_path_is_drawn_as_thin_lines():
     path = np.array([[-2.0, 0.0, 1.0], [0.0, 0.0, 2.0], [2.0, 0.0, 3.0]])
-    with Scene(glide_states(), opts(trails=False, overlay=False, camera="side")) as plain, Scene(glide_states(reference_path=path), opts(trails=False, overlay=False, camera="side")) as with_path:
+    with (
+        Scene(glide_states(), opts(trails=False, overlay=False, camera="side")) as plain,
+        Scene(
+            glide_states(reference_path=path), opts(trails=False, overlay=False, camera="side")
+        ) as with_path,
+    ):
         plain.update(0)
         with_path.update(0)
         assert with_path.renderer.scene.ngeom == plain.renderer.scene.ngeom + len(path) - 1
         drawn = [with_path.renderer.scene.geoms[plain.renderer.scene.ngeom + k] for k in range(2)]
-        assert all(g.type == int(__import__("mujoco").mjtGeom.mjGEOM_LINE) and g.segid == -1 for g in drawn)
+        assert all(
+            g.type == int(__import__("mujoco").mjtGeom.mjGEOM_LINE) and g.segid == -1 for g in drawn
+        )
         # the segments start at the path's points (mjv_connector: a line's pos is its start)
         np.testing.assert_allclose([drawn[0].pos, drawn[1].pos], path[:2], atol=1e-6)
         assert np.abs(with_path.rgb(0).astype(int) - plain.rgb(0).astype(int)).sum() > 0

@@ -13,9 +13,9 @@ import numpy as np
 import pytest
 
 from birdsim import Bird, evaluate_cycle
-from birdsim.report import figdata as fd
 from birdsim.errors import BirdsimError
 from birdsim.physics.frames import body_to_earth, rotate
+from birdsim.report import figdata as fd
 
 pytest.importorskip("matplotlib")
 
@@ -67,7 +67,9 @@ def test_quick_report_every_figure_is_a_real_plot(tmp_path: Path) -> None:
         report.build_report(out, quick=True, progress=False, only=["thrust"])
 
 
-def test_cli_report_one_family_and_bad_family(tmp_path: Path, capsys: pytest.CaptureFixture) -> None:
+def test_cli_report_one_family_and_bad_family(
+    tmp_path: Path, capsys: pytest.CaptureFixture
+) -> None:
     from birdsim.cli import main
 
     assert main(["report", "--out", str(tmp_path / "r"), "--quick", "--only", "thrust"]) == 0
@@ -90,7 +92,9 @@ def test_missing_matplotlib_is_one_clear_line(monkeypatch: pytest.MonkeyPatch) -
 # ---- the numbers behind the figures --------------------------------------------------
 
 
-@pytest.mark.parametrize("zeta,twist", [(0.3, 0.0), (0.9, 0.4), (PI / 2 - 1e-9, PI / 4), (0.5, 0.7)])
+@pytest.mark.parametrize(
+    "zeta,twist", [(0.3, 0.0), (0.9, 0.4), (PI / 2 - 1e-9, PI / 4), (0.5, 0.7)]
+)
 def test_thrust_coefficient_equals_the_blade_element_force(zeta: float, twist: float) -> None:
     """Eq. 23 (closed form) against the core's element force on a twisted section moving
     forward at V and down at w = V tan(zeta), rotated into panel axes and back."""
@@ -125,7 +129,9 @@ def test_landscape_profile_matches_brute_force() -> None:
     def cost(means, params, speed):
         return np.abs(means.Fx - 0.1) + np.abs(means.Fz + 0.1) + 0.5 * np.abs(means.P)
 
-    land = fd.landscape("base", 0.5, cost, ("flap_amp", flap), ("twist_amp", twist), profile={"pitch": pitch}, n=16)
+    land = fd.landscape(
+        "base", 0.5, cost, ("flap_amp", flap), ("twist_amp", twist), profile={"pitch": pitch}, n=16
+    )
     for i, f in enumerate(flap):
         for j, t in enumerate(twist):
             vals = []
@@ -165,7 +171,15 @@ def test_wrist_study_optimum_is_the_dissertation_s() -> None:
 def test_control_point_paths_agree_with_the_cycle() -> None:
     """figdata's chain walk and the cycle's CP positions are two paths to the same
     points; chord lines have the chord's length."""
-    params = dict(pitch=0.3, flap_amp=0.6, twist_amp=0.4, stroke_plane=0.2, wrist_amp=0.3, wrist_bias=0.25, wrist_lag=1.2)
+    params = dict(
+        pitch=0.3,
+        flap_amp=0.6,
+        twist_amp=0.4,
+        stroke_plane=0.2,
+        wrist_amp=0.3,
+        wrist_bias=0.25,
+        wrist_lag=1.2,
+    )
     bird = Bird()
     p = fd.control_point_paths("m4", params, bird=bird, n=16)
     cyc = evaluate_cycle("m4", params, 0.0, bird=bird, n=16)
@@ -191,4 +205,6 @@ def test_full_report_builds(tmp_path: Path) -> None:
     sections = report.build_report(tmp_path / "report", quick=False, progress=False)
     assert not [s.error for s in sections if s.error]
     files = [e.file for s in sections for e in s.entries]
-    assert len(files) == 42 and all((tmp_path / "report" / f).stat().st_size > 20_000 for f in files)  # 41 + smoothness
+    assert len(files) == 42 and all(
+        (tmp_path / "report" / f).stat().st_size > 20_000 for f in files
+    )  # 41 + smoothness

@@ -31,12 +31,18 @@ def test_one_zigzag_along_one_axis_is_counted_once_and_located():
     assert (s.triples, s.zigzag_triples) == (12, 1) and s.zigzag_share == pytest.approx(1 / 12)
     assert s.per_axis == {"Fx": pytest.approx(1 / 12), "Fz": 0.0, "V": 0.0}
     assert s.largest_jump == {"pitch": 0.0, "flap_amp": pytest.approx(0.2)}
-    assert s.worst[0] | {} == {"size_rad": 0.2, "axis": "Fx", "param": "flap_amp", "cell": [2, 1, 0], "Fx": 2.0, "Fz": 1.0, "V": 0.0}
+    assert s.worst[0] | {} == {
+        "size_rad": 0.2,
+        "axis": "Fx",
+        "param": "flap_amp",
+        "cell": [2, 1, 0],
+        "Fx": 2.0,
+        "Fz": 1.0,
+        "V": 0.0,
+    }
 
 
-@pytest.mark.parametrize(
-    "middle, zig", [(0.2, True), (0.15, False), (-0.2, True), (0.1, False)]
-)
+@pytest.mark.parametrize("middle, zig", [(0.2, True), (0.15, False), (-0.2, True), (0.1, False)])
 def test_the_threshold_and_the_sign(middle, zig):
     X = np.zeros((3, 1, 1, 2))
     X[1, 0, 0, 0] = middle
@@ -67,7 +73,11 @@ def test_the_lag_of_an_idle_wrist_is_skipped():
     assert s.worst[0]["param"] == "wrist_amp" and s.largest_jump["wrist_lag"] == 0.0
     X[:, 0, 0, 4] = [0.3, 0.3, 0.3]  # an active wrist: the lag counts
     s = measure(M4, axes(3, 1, 1), X, ok)
-    assert s.zigzag_triples == 1 and s.worst[0]["param"] == "wrist_lag" and s.largest_jump["wrist_lag"] == 1.5
+    assert (
+        s.zigzag_triples == 1
+        and s.worst[0]["param"] == "wrist_lag"
+        and s.largest_jump["wrist_lag"] == 1.5
+    )
 
 
 # ---- the shipped tables (issue: smooth tables) -------------------------------------------------

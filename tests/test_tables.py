@@ -9,19 +9,25 @@ import numpy as np
 import pytest
 
 import birdsim
-from birdsim.physics.bird import Bird
 from birdsim.cli import main
 from birdsim.errors import BirdsimError
+from birdsim.physics.bird import Bird
 from birdsim.tables.lookup import AXES, LookupTable, TableError, load_table, table_paths
 
 
 def synthetic(model="base", shape=(3, 4, 5)) -> LookupTable:
     """A table whose parameters are affine in (Fx, Fz, V): multilinear interpolation
     must reproduce them exactly everywhere (an independent check of the lookup)."""
-    axes = {"Fx": np.linspace(-0.5, 0.5, shape[0]), "Fz": np.linspace(-0.5, 0.0, shape[1]), "V": np.linspace(0, 1, shape[2])}
+    axes = {
+        "Fx": np.linspace(-0.5, 0.5, shape[0]),
+        "Fz": np.linspace(-0.5, 0.0, shape[1]),
+        "V": np.linspace(0, 1, shape[2]),
+    }
     D = np.stack(np.meshgrid(*(axes[a] for a in AXES), indexing="ij"), axis=-1)
     names = birdsim.get_model(model).param_names
-    coef = np.resize(np.array([[1.0, 0.2, -0.3], [0.5, -1.0, 0.1], [0.0, 0.3, 0.7]]), (len(names), 3))
+    coef = np.resize(
+        np.array([[1.0, 0.2, -0.3], [0.5, -1.0, 0.1], [0.0, 0.3, 0.7]]), (len(names), 3)
+    )
     params = D @ coef.T + np.resize(np.array([0.8, 0.9, 0.3]), len(names))
     status = np.zeros(shape, dtype=np.uint8)
     status[0, 0, 0] = 1
@@ -58,7 +64,9 @@ def test_lookup_many_keeps_the_shape_of_its_inputs():
     t, _ = synthetic()
     out = t.lookup_many(np.zeros((4, 2)), -0.25, np.linspace(0, 1, 2))
     assert out["pitch"].shape == (4, 2) and out["achieved_Fz"].shape == (4, 2)
-    np.testing.assert_allclose(out["achieved_Fz"], -0.25, atol=1e-15)  # achieved was the demand here
+    np.testing.assert_allclose(
+        out["achieved_Fz"], -0.25, atol=1e-15
+    )  # achieved was the demand here
 
 
 def test_nodes_are_reproduced():
@@ -68,7 +76,14 @@ def test_nodes_are_reproduced():
     np.testing.assert_allclose(list(out.values()), t.params[i, j, k], atol=1e-14)
 
 
-@pytest.mark.parametrize("axis, kwargs", [("Fx", dict(Fx=0.7, Fz=-0.1, V=0.5)), ("Fz", dict(Fx=0, Fz=0.1, V=0.5)), ("V", dict(Fx=0, Fz=-0.1, V=-0.2))])
+@pytest.mark.parametrize(
+    "axis, kwargs",
+    [
+        ("Fx", dict(Fx=0.7, Fz=-0.1, V=0.5)),
+        ("Fz", dict(Fx=0, Fz=0.1, V=0.5)),
+        ("V", dict(Fx=0, Fz=-0.1, V=-0.2)),
+    ],
+)
 def test_outside_the_grid_names_axis_value_and_range(axis, kwargs):
     t, _ = synthetic()
     with pytest.raises(BirdsimError, match=rf"^{axis}=.* is outside the table grid; allowed: \["):
@@ -141,13 +156,59 @@ def test_mismatched_version_and_unreadable_files(tmp_path):
 def test_inconsistent_arrays_are_refused():
     t, _ = synthetic()
     with pytest.raises(BirdsimError, match="table array cost has shape"):
-        LookupTable(t.model, t.bird, t.param_names, t.axes, t.params, t.cost[:1], t.cost_fractions, t.achieved, t.status_code, t.evaluations)
-    with pytest.raises(BirdsimError, match="status_code holds uint8 values in .0, 7.; allowed: integers 0..2"):
-        LookupTable(t.model, t.bird, t.param_names, t.axes, t.params, t.cost, t.cost_fractions, t.achieved, t.status_code * 7, t.evaluations)
+        LookupTable(
+            t.model,
+            t.bird,
+            t.param_names,
+            t.axes,
+            t.params,
+            t.cost[:1],
+            t.cost_fractions,
+            t.achieved,
+            t.status_code,
+            t.evaluations,
+        )
+    with pytest.raises(
+        BirdsimError, match="status_code holds uint8 values in .0, 7.; allowed: integers 0..2"
+    ):
+        LookupTable(
+            t.model,
+            t.bird,
+            t.param_names,
+            t.axes,
+            t.params,
+            t.cost,
+            t.cost_fractions,
+            t.achieved,
+            t.status_code * 7,
+            t.evaluations,
+        )
     with pytest.raises(BirdsimError, match="param_names=.* do not match model base"):
-        LookupTable(t.model, t.bird, ("a", "b", "c"), t.axes, t.params, t.cost, t.cost_fractions, t.achieved, t.status_code, t.evaluations)
+        LookupTable(
+            t.model,
+            t.bird,
+            ("a", "b", "c"),
+            t.axes,
+            t.params,
+            t.cost,
+            t.cost_fractions,
+            t.achieved,
+            t.status_code,
+            t.evaluations,
+        )
     with pytest.raises(BirdsimError, match="table model 'm9' is unknown"):
-        LookupTable("m9", t.bird, t.param_names, t.axes, t.params, t.cost, t.cost_fractions, t.achieved, t.status_code, t.evaluations)
+        LookupTable(
+            "m9",
+            t.bird,
+            t.param_names,
+            t.axes,
+            t.params,
+            t.cost,
+            t.cost_fractions,
+            t.achieved,
+            t.status_code,
+            t.evaluations,
+        )
 
 
 def _rewrite_npz(npz, js, edit):
@@ -186,7 +247,24 @@ GRID = "Fx=0|0.2,Fz=-0.5|-0.2,V=0|0.9"
 
 def test_cli_build_info_lookup(tmp_path, capsys):
     out = tmp_path / "t" / "base.npz"
-    assert main(["tables", "build", "--model", "base", "--grid", GRID, "--out", str(out), "--jobs", "1", "--quiet"]) == 0
+    assert (
+        main(
+            [
+                "tables",
+                "build",
+                "--model",
+                "base",
+                "--grid",
+                GRID,
+                "--out",
+                str(out),
+                "--jobs",
+                "1",
+                "--quiet",
+            ]
+        )
+        == 0
+    )
     assert "2x2x2" in capsys.readouterr().out
     assert out.is_file() and out.with_suffix(".json").is_file()
     assert not (tmp_path / "t" / ".base.build").exists()  # checkpoints removed after success
@@ -195,7 +273,10 @@ def test_cli_build_info_lookup(tmp_path, capsys):
     assert info["cells"] == 8 and info["model"] == "base"
     # hover at Fz = -0.5 is beyond the base wing (eq. 57: about -0.29): flagged, not hidden
     assert info["status"]["unreachable"] >= 2 and info["unreachable_per_V"]["0"] >= 2
-    assert main(["tables", "lookup", str(out), "--Fx", "0", "--Fz", "-0.2", "--V", "0.9", "--json"]) == 0
+    assert (
+        main(["tables", "lookup", str(out), "--Fx", "0", "--Fz", "-0.2", "--V", "0.9", "--json"])
+        == 0
+    )
     res = json.loads(capsys.readouterr().out)
     assert res["status"] == "ok" and abs(res["achieved_interpolated"]["Fz"] + 0.2) < 1e-6
     assert main(["tables", "info", str(out)]) == 0
@@ -206,14 +287,29 @@ def test_cli_build_info_lookup(tmp_path, capsys):
     "argv, message",
     [
         (["tables", "build", "--model", "m9"], "model 'm9' is unknown"),
-        (["tables", "build", "--model", "base", "--grid", "Fx=0:1"], "--grid 'Fx=0:1' is malformed"),
-        (["tables", "build", "--model", "base", "--grid", "V=1|0"], "--grid V=[1.0, 0.0] is invalid"),
+        (
+            ["tables", "build", "--model", "base", "--grid", "Fx=0:1"],
+            "--grid 'Fx=0:1' is malformed",
+        ),
+        (
+            ["tables", "build", "--model", "base", "--grid", "V=1|0"],
+            "--grid V=[1.0, 0.0] is invalid",
+        ),
         (["tables", "build", "--model", "base", "--grid", "Q=1"], "--grid 'Q=1' is malformed"),
         (["tables", "build", "--model", "base", "--jobs", "0"], "--jobs 0 is invalid"),
         # a count of 1e9 used to exhaust memory (the process was killed) before any check
-        (["tables", "build", "--model", "base", "--grid", "Fx=0:1:1000000000"], "(2 <= COUNT <= 1000)"),
-        (["tables", "build", "--model", "base", "--size", "100000000"], "--size 100000000 is invalid"),
-        (["tables", "build", "--model", "base", "--grid", "Fx=0:1:1000,Fz=-1:0:1000"], "--grid 1000x1000x11 has too many cells"),
+        (
+            ["tables", "build", "--model", "base", "--grid", "Fx=0:1:1000000000"],
+            "(2 <= COUNT <= 1000)",
+        ),
+        (
+            ["tables", "build", "--model", "base", "--size", "100000000"],
+            "--size 100000000 is invalid",
+        ),
+        (
+            ["tables", "build", "--model", "base", "--grid", "Fx=0:1:1000,Fz=-1:0:1000"],
+            "--grid 1000x1000x11 has too many cells",
+        ),
         (["tables", "info", "nowhere.npz"], "does not exist"),
     ],
 )
@@ -227,13 +323,32 @@ def test_cli_lookup_bad_demands(tmp_path, capsys):
     t, _ = synthetic()
     t.save(tmp_path / "s")
     for argv, message in (
-        (["--Fx", "0", "--Fz", "-0.1", "--V", "3"], "V=3 is outside the table grid; allowed: [0, 1]"),
+        (
+            ["--Fx", "0", "--Fz", "-0.1", "--V", "3"],
+            "V=3 is outside the table grid; allowed: [0, 1]",
+        ),
         (["--Fx", "nan", "--Fz", "-0.1", "--V", "0.5"], "--Fx='nan' is not finite"),
     ):
         assert main(["tables", "lookup", str(tmp_path / "s.npz"), *argv]) == 2
         err = capsys.readouterr().err
         assert message in err and err.count("\n") == 1
-    assert main(["tables", "lookup", str(tmp_path / "s.npz"), "--Fx", "0", "--Fz", "-0.1", "--V", "3", "--clip"]) == 0
+    assert (
+        main(
+            [
+                "tables",
+                "lookup",
+                str(tmp_path / "s.npz"),
+                "--Fx",
+                "0",
+                "--Fz",
+                "-0.1",
+                "--V",
+                "3",
+                "--clip",
+            ]
+        )
+        == 0
+    )
     (tmp_path / "s.json").write_text("[]")
     assert main(["tables", "info", str(tmp_path / "s.npz")]) == 2
     assert "is unreadable" in capsys.readouterr().err
@@ -251,14 +366,27 @@ def test_cli_refuses_to_overwrite(tmp_path, capsys):
 
 def synthetic_climb(shape=(3, 3, 3, 4)) -> tuple[LookupTable, np.ndarray]:
     """A 4-axis table affine in (Fx, Fz, V, climb): reproduced exactly by the lookup."""
-    axes = {"Fx": np.linspace(-0.5, 0.5, shape[0]), "Fz": np.linspace(-0.5, 0.0, shape[1]),
-            "V": np.linspace(0, 1, shape[2]), "climb": np.linspace(-0.5, 0.5, shape[3])}
+    axes = {
+        "Fx": np.linspace(-0.5, 0.5, shape[0]),
+        "Fz": np.linspace(-0.5, 0.0, shape[1]),
+        "V": np.linspace(0, 1, shape[2]),
+        "climb": np.linspace(-0.5, 0.5, shape[3]),
+    }
     D = np.stack(np.meshgrid(*axes.values(), indexing="ij"), axis=-1)
     coef = np.array([[1.0, 0.2, -0.3, 0.4], [0.5, -1.0, 0.1, -0.2], [0.0, 0.3, 0.7, 0.1]])
     params = D @ coef.T + np.array([0.8, 0.9, 0.3])
-    return LookupTable("base", Bird(), birdsim.get_model("base").param_names, axes, params, D[..., 2] ** 2,
-                       np.full(shape + (4,), 0.25), D[..., :3].copy(), np.zeros(shape, np.uint8),
-                       np.ones(shape, np.int64)), coef
+    return LookupTable(
+        "base",
+        Bird(),
+        birdsim.get_model("base").param_names,
+        axes,
+        params,
+        D[..., 2] ** 2,
+        np.full(shape + (4,), 0.25),
+        D[..., :3].copy(),
+        np.zeros(shape, np.uint8),
+        np.ones(shape, np.int64),
+    ), coef
 
 
 def test_a_climb_axis_is_interpolated_saved_and_loaded(tmp_path):
@@ -266,17 +394,28 @@ def test_a_climb_axis_is_interpolated_saved_and_loaded(tmp_path):
     assert t.axis_names == ("Fx", "Fz", "V", "climb") and t.has_climb and t.shape == (3, 3, 3, 4)
     rng = np.random.default_rng(1)
     for _ in range(20):
-        d = np.array([rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0), rng.uniform(0, 1), rng.uniform(-0.5, 0.5)])
+        d = np.array(
+            [
+                rng.uniform(-0.5, 0.5),
+                rng.uniform(-0.5, 0),
+                rng.uniform(0, 1),
+                rng.uniform(-0.5, 0.5),
+            ]
+        )
         out = t.lookup(Fx=d[0], Fz=d[1], V=d[2], climb=d[3])
         np.testing.assert_allclose(list(out.values()), coef @ d + [0.8, 0.9, 0.3], atol=1e-12)
-    with pytest.raises(TableError, match=r"climb=0.7 is outside the table grid; allowed: \[-0.5, 0.5\]"):
+    with pytest.raises(
+        TableError, match=r"climb=0.7 is outside the table grid; allowed: \[-0.5, 0.5\]"
+    ):
         t.lookup(Fx=0, Fz=-0.2, V=0.5, climb=0.7)
     with pytest.raises(TableError, match="climb=nan is not finite"):
         t.lookup(Fx=0, Fz=-0.2, V=0.5, climb=float("nan"))
     npz, js = t.save(tmp_path / "c.npz")
     back = load_table(npz)
     assert back.axis_names == t.axis_names
-    np.testing.assert_allclose(json.loads(js.read_text())["axes"]["climb"], [-0.5, -1 / 6, 1 / 6, 0.5], atol=1e-15)
+    np.testing.assert_allclose(
+        json.loads(js.read_text())["axes"]["climb"], [-0.5, -1 / 6, 1 / 6, 0.5], atol=1e-15
+    )
     np.testing.assert_array_equal(back.params, t.params)
     assert t.status_at(0, -0.25, 0.5, climb=0.1) == "ok"
 
@@ -285,7 +424,10 @@ def test_a_level_flight_table_answers_climb_zero_only():
     t, _ = synthetic()
     assert not t.has_climb and t.axis_names == AXES
     assert t.lookup(Fx=0.1, Fz=-0.2, V=0.3, climb=0.0) == t.lookup(0.1, -0.2, 0.3)
-    with pytest.raises(TableError, match=r"climb=0.1 is outside the table grid; allowed: 0 \(a table without a climb axis"):
+    with pytest.raises(
+        TableError,
+        match=r"climb=0.1 is outside the table grid; allowed: 0 \(a table without a climb axis",
+    ):
         t.lookup(Fx=0.1, Fz=-0.2, V=0.3, climb=0.1)
     assert t.lookup(Fx=0.1, Fz=-0.2, V=0.3, climb=0.1, clip=True) == t.lookup(0.1, -0.2, 0.3)
     with pytest.raises(TableError, match="climb=inf is not finite"):

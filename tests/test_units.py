@@ -6,10 +6,26 @@ import numpy as np
 import pytest
 
 from birdsim import Bird, evaluate_cycle
-from birdsim.physics.units import mass_ratio, reduced_bird, same_reduced_bird, scales, weight_in_table_units
+from birdsim.physics.units import (
+    mass_ratio,
+    reduced_bird,
+    same_reduced_bird,
+    scales,
+    weight_in_table_units,
+)
 
-PIGEONISH = Bird(name="p", semispan=0.33, chord=0.1, hand_chord=0.08, rho=1.225, omega=2 * math.pi * 7,
-                 body_drag_area=0.003, disc_area=math.pi * 0.33**2, mass=0.45, gravity=9.81)
+PIGEONISH = Bird(
+    name="p",
+    semispan=0.33,
+    chord=0.1,
+    hand_chord=0.08,
+    rho=1.225,
+    omega=2 * math.pi * 7,
+    body_drag_area=0.003,
+    disc_area=math.pi * 0.33**2,
+    mass=0.45,
+    gravity=9.81,
+)
 
 
 @pytest.mark.parametrize("model", ["base", "m1", "m3", "m4"])
@@ -27,7 +43,9 @@ def test_forces_scale_exactly_with_the_reduced_bird(model):
     si = evaluate_cycle(model, params, speed=v_red * sc.speed, bird=PIGEONISH).mean
     red = evaluate_cycle(model, params, speed=v_red, bird=reduced_bird(PIGEONISH)).mean
     for k in ("Fx", "Fz"):
-        np.testing.assert_allclose(getattr(si, k) / sc.force, getattr(red, k), rtol=1e-12, atol=1e-14)
+        np.testing.assert_allclose(
+            getattr(si, k) / sc.force, getattr(red, k), rtol=1e-12, atol=1e-14
+        )
     np.testing.assert_allclose(si.P / sc.power, red.P, rtol=1e-12, atol=1e-14)
 
 

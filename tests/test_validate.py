@@ -20,7 +20,13 @@ from birdsim.cli import main
 from birdsim.errors import BirdsimError
 from birdsim.physics.bird import Bird
 from birdsim.physics.cycle import evaluate_cycle
-from birdsim.validation.measurements import COLUMNS, Measurement, MeasurementsError, default_path, load_measurements
+from birdsim.validation.measurements import (
+    COLUMNS,
+    Measurement,
+    MeasurementsError,
+    default_path,
+    load_measurements,
+)
 from birdsim.validation.run import DEFAULT_BIRD, load_flying_bird, validate
 from birdsim.validation.scorecard import score, verdict_for
 from birdsim.validation.trim import trim_sweep
@@ -80,9 +86,25 @@ def _write_csv(tmp_path: Path, rows: list[dict[str, str]]) -> Path:
 
 
 GOOD = dict(
-    id="X1", quantity="minimum-power speed", compare="min_power_speed", kind="value", speed_m_s="", speed_to_m_s="",
-    value="8.5", uncertainty="0.5", uncertainty_kind="SD", unit="m/s", n_birds="", author="A", year="1968",
-    journal="J", volume="1", pages="1-2", where="Table 1", url="", note="",
+    id="X1",
+    quantity="minimum-power speed",
+    compare="min_power_speed",
+    kind="value",
+    speed_m_s="",
+    speed_to_m_s="",
+    value="8.5",
+    uncertainty="0.5",
+    uncertainty_kind="SD",
+    unit="m/s",
+    n_birds="",
+    author="A",
+    year="1968",
+    journal="J",
+    volume="1",
+    pages="1-2",
+    where="Table 1",
+    url="",
+    note="",
 )
 
 
@@ -94,7 +116,10 @@ GOOD = dict(
         ({"compare": "joy"}, ["row 'X1'", "compare='joy'"]),
         ({"author": ""}, ["row 'X1'", "author=''"]),
         ({"value": "nan"}, ["row 'X1'", "value='nan'"]),
-        ({"kind": "trend", "value": "-1", "speed_m_s": "6", "speed_to_m_s": "4"}, ["row 'X1'", "speed_to_m_s"]),
+        (
+            {"kind": "trend", "value": "-1", "speed_m_s": "6", "speed_to_m_s": "4"},
+            ["row 'X1'", "speed_to_m_s"],
+        ),
         ({"compare": "power"}, ["row 'X1'", "speed_m_s"]),
         ({"id": ""}, ["line 2", "id=''"]),
     ],
@@ -120,13 +145,35 @@ def test_extra_field_and_duplicate_id_are_named(tmp_path: Path) -> None:
 
 
 def _m(kind: str = "value", value: float = 10.0, unc: float | None = None) -> Measurement:
-    return Measurement("r", "q", "power", kind, value, "W", "A", 2000, "J", "1", "1", "T", uncertainty=unc, speed_m_s=1.0, speed_to_m_s=2.0)
+    return Measurement(
+        "r",
+        "q",
+        "power",
+        kind,
+        value,
+        "W",
+        "A",
+        2000,
+        "J",
+        "1",
+        "1",
+        "T",
+        uncertainty=unc,
+        speed_m_s=1.0,
+        speed_to_m_s=2.0,
+    )
 
 
 def test_verdict_tolerances() -> None:
-    assert verdict_for(_m(), 14.9)[1].startswith("agrees") and verdict_for(_m(), 6.7)[1].startswith("agrees")
-    assert verdict_for(_m(), 15.1)[1].startswith("rough") and verdict_for(_m(), 5.1)[1].startswith("rough")
-    assert verdict_for(_m(), 20.1)[1].startswith("off") and verdict_for(_m(), 4.9)[1].startswith("off")
+    assert verdict_for(_m(), 14.9)[1].startswith("agrees") and verdict_for(_m(), 6.7)[1].startswith(
+        "agrees"
+    )
+    assert verdict_for(_m(), 15.1)[1].startswith("rough") and verdict_for(_m(), 5.1)[1].startswith(
+        "rough"
+    )
+    assert verdict_for(_m(), 20.1)[1].startswith("off") and verdict_for(_m(), 4.9)[1].startswith(
+        "off"
+    )
     assert verdict_for(_m(unc=11.0), 20.5)[1].startswith("agrees (within ±")
     assert verdict_for(_m("at_least"), 10.0)[1] == "agrees (bound met)"
     assert verdict_for(_m("at_most"), 25.0)[1].startswith("off")
@@ -147,7 +194,9 @@ def test_trimmed_wingbeat_carries_the_weight_with_zero_net_fx(pigeon: Path) -> N
     weight = bird.mass * bird.gravity
     for p in sweep.points:
         assert p.trimmed
-        whole = evaluate_cycle("m3", p.params, p.speed, bird=bird, n=64, check_bounds=False).whole_bird_mean
+        whole = evaluate_cycle(
+            "m3", p.params, p.speed, bird=bird, n=64, check_bounds=False
+        ).whole_bird_mean
         assert abs(float(whole.Fx)) <= 1e-3 * weight
         assert abs(float(whole.Fz) + weight) <= 1e-3 * weight
         assert p.power == pytest.approx(float(whole.P), rel=1e-9)
@@ -180,8 +229,12 @@ PINNED = {
     "PA15_hover": (1.0, 0),
 }
 VERDICTS = {
-    "U05_wing_power": "rough", "CT11_aoa_up": "off", "TD96_strokeplane_trend": "opposite", "U05_strokeplane": "not",
-    "B10_amplitude_trend": "same", "TD96_body_angle_trend": "same",
+    "U05_wing_power": "rough",
+    "CT11_aoa_up": "off",
+    "TD96_strokeplane_trend": "opposite",
+    "U05_strokeplane": "not",
+    "B10_amplitude_trend": "same",
+    "TD96_body_angle_trend": "same",
 }
 
 
@@ -190,7 +243,10 @@ def test_pinned_scorecard(result) -> None:  # noqa: ANN001
     assert set(rows) == set(PINNED)
     for rid, (value, tol) in PINNED.items():
         assert rows[rid].birdsim == pytest.approx(value, rel=tol, abs=1e-9), rid
-        assert rows[rid].verdict.split(" ")[0] == VERDICTS.get(rid, "agrees"), (rid, rows[rid].verdict)
+        assert rows[rid].verdict.split(" ")[0] == VERDICTS.get(rid, "agrees"), (
+            rid,
+            rows[rid].verdict,
+        )
     assert result.obj["hover"] is True and result.obj["trim_range"] == [0.0, 22.0]
 
 
@@ -200,7 +256,9 @@ def test_json_object_lets_a_reader_recompute_a_point(result) -> None:  # noqa: A
     assert {"quantity", "measured", "source", "birdsim", "ratio", "verdict"} <= set(obj["rows"][0])
     pt = next(p for p in obj["power_curve"] if p["speed"] == 4.46)
     bird = load_flying_bird(None)
-    whole = evaluate_cycle(obj["model"], pt["params"], pt["speed"], bird=bird, n=64, check_bounds=False).whole_bird_mean
+    whole = evaluate_cycle(
+        obj["model"], pt["params"], pt["speed"], bird=bird, n=64, check_bounds=False
+    ).whole_bird_mean
     assert float(whole.P) == pytest.approx(pt["power"], rel=1e-9)
     assert min(p["power"] for p in obj["power_curve"] if p["trimmed"]) <= obj["min_power"] + 0.5
 
@@ -210,7 +268,11 @@ def test_shipped_table_agrees_with_the_direct_solve(result) -> None:  # noqa: AN
     its grid reaches (1.8 % at the branch change near 8 m/s is the worst), and the direct
     solve is never worse than the table by more than 2 % (it starts from the table's answer)."""
     assert result.obj["table"] == "pigeon-m3.npz"
-    pairs = [(p["power"], p["table_power"]) for p in result.obj["power_curve"] if p["table_power"] is not None]
+    pairs = [
+        (p["power"], p["table_power"])
+        for p in result.obj["power_curve"]
+        if p["table_power"] is not None
+    ]
     assert len(pairs) >= 15
     for direct, table in pairs:
         assert abs(table - direct) <= 0.05 * direct
@@ -224,7 +286,10 @@ def test_off_row_gets_the_other_physics(pigeon: Path) -> None:
     rows, vsweeps = score(ms, sweep, bird)
     assert rows[0].verdict.startswith("off")
     assert set(rows[0].variants) == {"robofly polar", "induced velocity on"} == set(vsweeps)
-    assert all(v is not None and v != pytest.approx(rows[0].birdsim, rel=1e-3) for v in rows[0].variants.values())
+    assert all(
+        v is not None and v != pytest.approx(rows[0].birdsim, rel=1e-3)
+        for v in rows[0].variants.values()
+    )
 
 
 # ---- command line -------------------------------------------------------------------
@@ -232,24 +297,42 @@ def test_off_row_gets_the_other_physics(pigeon: Path) -> None:
 
 def _small_data(tmp_path: Path) -> Path:
     src = default_path().read_text().splitlines()
-    keep = [src[0]] + [line for line in src[1:] if line.startswith(("P68b_vmp", "U05_wing_power", "TD96_speed_max"))]
+    keep = [src[0]] + [
+        line
+        for line in src[1:]
+        if line.startswith(("P68b_vmp", "U05_wing_power", "TD96_speed_max"))
+    ]
     p = tmp_path / "small.csv"
     p.write_text("\n".join(keep) + "\n")
     return p
 
 
-def test_cli_json_and_page(tmp_path: Path, pigeon: Path, capsys: pytest.CaptureFixture[str]) -> None:
+def test_cli_json_and_page(
+    tmp_path: Path, pigeon: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     data = _small_data(tmp_path)
     out = tmp_path / "page"
-    assert main(["validate", "--bird", str(pigeon), "--data", str(data), "--json", "--out", str(out)]) == 0
+    assert (
+        main(["validate", "--bird", str(pigeon), "--data", str(data), "--json", "--out", str(out)])
+        == 0
+    )
     obj = json.loads(capsys.readouterr().out)
     assert [r["id"] for r in obj["rows"]] == ["P68b_vmp", "U05_wing_power", "TD96_speed_max"]
-    assert obj["min_power_speed"] == pytest.approx(9.42, rel=0.02)  # the inline pigeon (chord 0.13, drag area s c)
-    assert {f.name for f in out.iterdir()} == {"index.html", "power_curve.png", "kinematics.png", "scorecard.json"}
+    assert obj["min_power_speed"] == pytest.approx(
+        9.42, rel=0.02
+    )  # the inline pigeon (chord 0.13, drag area s c)
+    assert {f.name for f in out.iterdir()} == {
+        "index.html",
+        "power_curve.png",
+        "kinematics.png",
+        "scorecard.json",
+    }
     assert "Usherwood" in (out / "index.html").read_text()
     before = (out / "index.html").stat().st_mtime_ns
     assert main(["validate", "--bird", str(pigeon), "--data", str(data), "--out", str(out)]) == 2
-    assert "--force" in capsys.readouterr().err and (out / "index.html").stat().st_mtime_ns == before
+    assert (
+        "--force" in capsys.readouterr().err and (out / "index.html").stat().st_mtime_ns == before
+    )
 
 
 @pytest.mark.parametrize(
@@ -263,7 +346,11 @@ def test_cli_json_and_page(tmp_path: Path, pigeon: Path, capsys: pytest.CaptureF
     ],
 )
 def test_cli_bad_input_is_one_line_and_writes_nothing(
-    tmp_path: Path, capsys: pytest.CaptureFixture[str], args: list[str], toml: str | None, words: list[str]
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+    args: list[str],
+    toml: str | None,
+    words: list[str],
 ) -> None:
     bird = tmp_path / "b.toml"
     bird.write_text(toml or PIGEON_TOML)
@@ -276,7 +363,9 @@ def test_cli_bad_input_is_one_line_and_writes_nothing(
     assert not out.exists()
 
 
-def test_cli_malformed_data_row_is_named(tmp_path: Path, pigeon: Path, capsys: pytest.CaptureFixture[str]) -> None:
+def test_cli_malformed_data_row_is_named(
+    tmp_path: Path, pigeon: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     src = default_path().read_text().replace(",5.9,", ",five point nine,", 1)
     data = tmp_path / "bad.csv"
     data.write_text(src)
@@ -310,7 +399,9 @@ def test_angle_of_attack_is_the_analytic_one_for_the_base_model() -> None:
 
     bird = Bird(semispan=0.33, chord=0.12, omega=50.0, gravity=9.81)
     th, phi, tw, v = 0.2, 0.6, 0.3, 7.0
-    pt = TrimPoint(v, 0.0, {"pitch": th, "flap_amp": phi, "twist_amp": tw}, True, 0.0, 0.0, 0.0, 1.0)
+    pt = TrimPoint(
+        v, 0.0, {"pitch": th, "flap_amp": phi, "twist_amp": tw}, True, 0.0, 0.0, 0.0, 1.0
+    )
     r_omega_phi = 0.5 * 0.33 * 50.0 * phi
     down = math.degrees(math.atan2(v * math.sin(th) + r_omega_phi, v * math.cos(th)) - tw)
     up = math.degrees(math.atan2(v * math.sin(th) - r_omega_phi, v * math.cos(th)) + tw)
@@ -323,9 +414,35 @@ def test_diagnosis_says_which_physics_closes_the_gap() -> None:
     from birdsim.validation.scorecard import Row
 
     ms = {m.id: m for m in load_measurements()}
-    far = diagnose(Row(ms["CT11_aoa_up"], 31.0, 0.47, "off", {"robofly polar": 24.4, "induced velocity on": 20.7}))
+    far = diagnose(
+        Row(
+            ms["CT11_aoa_up"],
+            31.0,
+            0.47,
+            "off",
+            {"robofly polar": 24.4, "induced velocity on": 20.7},
+        )
+    )
     assert far.count("(further)") == 2 and "Neither" in far
-    near = diagnose(Row(ms["U05_wing_power"], 10.0, 0.39, "off", {"robofly polar": 60.0, "induced velocity on": 20.0}))
-    assert near.endswith("induced velocity on closes the gap.") and near.count("(closer)") == 2  # 60 W: closer, still > x2
-    trend = diagnose(Row(ms["TD96_strokeplane_trend"], 3.2, None, "opposite", {"robofly polar": 5.9, "induced velocity on": -0.3}))
+    near = diagnose(
+        Row(
+            ms["U05_wing_power"],
+            10.0,
+            0.39,
+            "off",
+            {"robofly polar": 60.0, "induced velocity on": 20.0},
+        )
+    )
+    assert (
+        near.endswith("induced velocity on closes the gap.") and near.count("(closer)") == 2
+    )  # 60 W: closer, still > x2
+    trend = diagnose(
+        Row(
+            ms["TD96_strokeplane_trend"],
+            3.2,
+            None,
+            "opposite",
+            {"robofly polar": 5.9, "induced velocity on": -0.3},
+        )
+    )
     assert "still the wrong sign" in trend and "induced velocity on closes" in trend

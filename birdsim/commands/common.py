@@ -7,8 +7,8 @@ import argparse
 from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
 
-from birdsim.physics.bird import Bird
 from birdsim.errors import BirdsimError
+from birdsim.physics.bird import Bird
 
 
 def parse_pairs(pairs: list[str] | None, arg: str) -> dict[str, str]:
@@ -19,17 +19,30 @@ def parse_pairs(pairs: list[str] | None, arg: str) -> dict[str, str]:
         if not sep or not name.strip():
             raise BirdsimError(f"{arg} {pair!r} is malformed; allowed: NAME=VALUE")
         if name.strip() in out:
-            raise BirdsimError(f"{arg} {name.strip()} is given twice ({out[name.strip()]!r}, {value.strip()!r}); allowed: once")
+            raise BirdsimError(
+                f"{arg} {name.strip()} is given twice ({out[name.strip()]!r}, {value.strip()!r}); allowed: once"
+            )
         out[name.strip()] = value.strip()
     return out
 
 
 def add_bird_arguments(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--bird", metavar="FILE.toml", help="bird geometry and coefficients (default: the seed bird)")
-    p.add_argument("--set", action="append", metavar="NAME=VALUE", help="override one bird field, e.g. strips=20")
+    p.add_argument(
+        "--bird",
+        metavar="FILE.toml",
+        help="bird geometry and coefficients (default: the seed bird)",
+    )
+    p.add_argument(
+        "--set",
+        action="append",
+        metavar="NAME=VALUE",
+        help="override one bird field, e.g. strips=20",
+    )
 
 
-def translate(message: str, starts: Mapping[str, str], hints: Mapping[str, str] | None = None) -> str:
+def translate(
+    message: str, starts: Mapping[str, str], hints: Mapping[str, str] | None = None
+) -> str:
     """The library's one-line ``message`` as the command line says it.
 
     The library names Python arguments and starts its messages with them
@@ -39,7 +52,7 @@ def translate(message: str, starts: Mapping[str, str], hints: Mapping[str, str] 
     """
     for python, flag in starts.items():
         if message.startswith(python):
-            message = flag + message[len(python):]
+            message = flag + message[len(python) :]
             break
     for python, flag in (hints or {}).items():
         message = message.replace(python, flag)

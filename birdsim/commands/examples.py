@@ -9,13 +9,19 @@ from birdsim.physics.examples import EXAMPLES
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser("examples", help="mean forces of the dissertation's example wingbeats", description=__doc__)
+    p = sub.add_parser(
+        "examples", help="mean forces of the dissertation's example wingbeats", description=__doc__
+    )
     p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
-    print("Dissertation examples (sec. 3.5); force = right wing + body drag, seed axes (Fz < 0 is up)")
-    print(f"{'eq':>3s} {'model':5s} {'regime':6s} {'V':>4s} {'Fx':>8s} {'Fy':>8s} {'Fz':>8s} {'P':>8s} {'Fz range':>17s}")
+    print(
+        "Dissertation examples (sec. 3.5); force = right wing + body drag, seed axes (Fz < 0 is up)"
+    )
+    print(
+        f"{'eq':>3s} {'model':5s} {'regime':6s} {'V':>4s} {'Fx':>8s} {'Fy':>8s} {'Fz':>8s} {'P':>8s} {'Fz range':>17s}"
+    )
     for ex in EXAMPLES:
         c = evaluate_cycle(ex.model, ex.params, ex.speed, check_bounds=False)
         m = c.mean

@@ -10,24 +10,59 @@ import argparse
 import time
 from pathlib import Path
 
-from birdsim.errors import BirdsimError
 from birdsim.commands.common import add_bird_arguments, bird_from_args
 from birdsim.commands.render_flight import add_flight_arguments
+from birdsim.errors import BirdsimError
 
 
 def register(sub: argparse._SubParsersAction) -> None:
     from birdsim.flight.manoeuvre import PRESETS
 
-    p = sub.add_parser("export", help="export a flight to USD, BVH or CSV (for Blender, Maya, Houdini...)", description=__doc__)
-    p.add_argument("source", metavar="SOURCE", help=f"a preset ({', '.join(PRESETS)}), a manoeuvre .toml or a flight log .npz")
-    p.add_argument("--format", required=True, metavar="FMT", help="usd (needs birdsim[usd]), bvh or csv")
-    p.add_argument("--out", required=True, metavar="PATH", help="output file (.usd/.usda/.usdc, .bvh, .csv)")
-    p.add_argument("--fps", default="30", metavar="N", help="frames per second of animation (default 30)")
-    p.add_argument("--model", default=None, help="kinematic model for a manoeuvre (default: the demo model m3 in free flight, m4 with --kinematic; a log names its own)")
-    p.add_argument("--table", metavar="FILE", help="lookup table for a manoeuvre (default: the shipped table for the bird in free flight, tables/<model>.npz with --kinematic)")
-    p.add_argument("--seconds", metavar="S", help="animation length for a manoeuvre (default: the whole manoeuvre)")
-    p.add_argument("--beat-rate", metavar="HZ", help="wingbeats per second of animation (default: real time for an SI bird, 2 for the seed bird)")
-    p.add_argument("--metres-per-unit", default="1", metavar="M", help="metres per bird length unit (default 1: the pigeon in metres, the seed bird's semispan as 1 m)")
+    p = sub.add_parser(
+        "export",
+        help="export a flight to USD, BVH or CSV (for Blender, Maya, Houdini...)",
+        description=__doc__,
+    )
+    p.add_argument(
+        "source",
+        metavar="SOURCE",
+        help=f"a preset ({', '.join(PRESETS)}), a manoeuvre .toml or a flight log .npz",
+    )
+    p.add_argument(
+        "--format", required=True, metavar="FMT", help="usd (needs birdsim[usd]), bvh or csv"
+    )
+    p.add_argument(
+        "--out", required=True, metavar="PATH", help="output file (.usd/.usda/.usdc, .bvh, .csv)"
+    )
+    p.add_argument(
+        "--fps", default="30", metavar="N", help="frames per second of animation (default 30)"
+    )
+    p.add_argument(
+        "--model",
+        default=None,
+        help="kinematic model for a manoeuvre (default: the demo model m3 in free flight, m4 with --kinematic; a log names its own)",
+    )
+    p.add_argument(
+        "--table",
+        metavar="FILE",
+        help="lookup table for a manoeuvre (default: the shipped table for the bird in free flight, tables/<model>.npz with --kinematic)",
+    )
+    p.add_argument(
+        "--seconds",
+        metavar="S",
+        help="animation length for a manoeuvre (default: the whole manoeuvre)",
+    )
+    p.add_argument(
+        "--beat-rate",
+        metavar="HZ",
+        help="wingbeats per second of animation (default: real time for an SI bird, 2 for the seed bird)",
+    )
+    p.add_argument(
+        "--metres-per-unit",
+        default="1",
+        metavar="M",
+        help="metres per bird length unit (default 1: the pigeon in metres, the seed bird's semispan as 1 m)",
+    )
     p.add_argument("--force", action="store_true", help="overwrite an existing output file")
     add_bird_arguments(p)
     add_flight_arguments(p)
@@ -73,14 +108,31 @@ def run(args: argparse.Namespace) -> int:
     if args.source.lower().endswith(".npz"):
         from birdsim.export.flightlog import frames_from_log, read_flight_log
 
-        for arg, value in (("--table", args.table), ("--seconds", args.seconds), ("--bird", args.bird), ("--set", args.set),
-                           ("--gust", args.gust), ("--open-loop", args.open_loop), ("--kinematic", args.kinematic)):
+        for arg, value in (
+            ("--table", args.table),
+            ("--seconds", args.seconds),
+            ("--bird", args.bird),
+            ("--set", args.set),
+            ("--gust", args.gust),
+            ("--open-loop", args.open_loop),
+            ("--kinematic", args.kinematic),
+        ):
             if value:
-                raise BirdsimError(f"{arg} does not apply to a flight log (it records its bird, model and flight); allowed: omit {arg}")
+                raise BirdsimError(
+                    f"{arg} does not apply to a flight log (it records its bird, model and flight); allowed: omit {arg}"
+                )
         log = read_flight_log(args.source)
         if args.model and args.model != str(log["model"]):
-            raise BirdsimError(f"--model {args.model!r} differs from the log's model {str(log['model'])!r}; allowed: omit --model for a log")
-        frames = frames_from_log(log, fps=fps, beat_rate=beat_rate, metres_per_unit=metres, source=f"flight log {Path(args.source).name}")  # type: ignore[arg-type]
+            raise BirdsimError(
+                f"--model {args.model!r} differs from the log's model {str(log['model'])!r}; allowed: omit --model for a log"
+            )
+        frames = frames_from_log(
+            log,
+            fps=fps,
+            beat_rate=beat_rate,
+            metres_per_unit=metres,
+            source=f"flight log {Path(args.source).name}",
+        )  # type: ignore[arg-type]
     elif not args.kinematic:  # free flight, the default: flown as `birdsim render` flies it
         from birdsim.commands.fly import load_bird
         from birdsim.commands.render_flight import flight_reference, fly_reference
@@ -96,16 +148,27 @@ def run(args: argparse.Namespace) -> int:
         # one frame's time more than asked, so that the last frame (at `seconds`) is flown
         beats = (seconds + 1.0 / fps) * per_s / bird.period
         if not beats <= MAX_BEATS:
-            raise BirdsimError(f"--seconds {args.seconds} is {beats:g} wingbeats of flight; allowed: at most {MAX_BEATS:g} wingbeats")
+            raise BirdsimError(
+                f"--seconds {args.seconds} is {beats:g} wingbeats of flight; allowed: at most {MAX_BEATS:g} wingbeats"
+            )
         log = fly_reference(reference, model, args, beats=beats, gusts=gusts)
-        frames = frames_from_log(log, fps=fps, beat_rate=beat_rate, metres_per_unit=metres, seconds=seconds, source=f"manoeuvre {reference.name} (free flight)")  # type: ignore[arg-type]
+        frames = frames_from_log(
+            log,
+            fps=fps,
+            beat_rate=beat_rate,
+            metres_per_unit=metres,
+            seconds=seconds,
+            source=f"manoeuvre {reference.name} (free flight)",
+        )  # type: ignore[arg-type]
     else:
         from birdsim.export.frames import from_playback
         from birdsim.flight.manoeuvre import get_manoeuvre
         from birdsim.physics.kinematics import get_model
 
         if args.gust or args.open_loop:
-            raise BirdsimError("--gust/--open-loop need free flight; allowed: omit them with --kinematic")
+            raise BirdsimError(
+                "--gust/--open-loop need free flight; allowed: omit them with --kinematic"
+            )
         manoeuvre = get_manoeuvre(args.source)
         model = get_model(args.model or "m4").name
         from birdsim.tables.shipped import table_folder
@@ -115,7 +178,16 @@ def run(args: argparse.Namespace) -> int:
         bird = bird_from_args(args) if (args.bird or args.set) else None
         if bird is not None:
             require_bird(table, bird, table_path)
-        frames = from_playback(manoeuvre, table, bird=bird, model=model, fps=fps, beat_rate=beat_rate, seconds=seconds, metres_per_unit=metres)  # type: ignore[arg-type]
+        frames = from_playback(
+            manoeuvre,
+            table,
+            bird=bird,
+            model=model,
+            fps=fps,
+            beat_rate=beat_rate,
+            seconds=seconds,
+            metres_per_unit=metres,
+        )  # type: ignore[arg-type]
     path = export.write(frames, args.format, out)
     size = path.stat().st_size
     print(

@@ -6,10 +6,10 @@ import argparse
 import json
 import math
 
-from birdsim.physics.cycle import DEFAULT_SAMPLES, evaluate_cycle
-from birdsim.errors import BirdsimError
-from birdsim.physics.kinematics import get_model
 from birdsim.commands.common import add_bird_arguments, bird_from_args, parse_pairs
+from birdsim.errors import BirdsimError
+from birdsim.physics.cycle import DEFAULT_SAMPLES, evaluate_cycle
+from birdsim.physics.kinematics import get_model
 
 #: Most samples per wingbeat ``--samples`` accepts (the histories are N long per strip).
 MAX_SAMPLES = 100_000
@@ -20,12 +20,29 @@ def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("forces", help="mean Fx, Fy, Fz and P of one wingbeat", description=__doc__)
     p.add_argument("--model", required=True, help="base, m1, m2, m3 or m4")
     p.add_argument("--speed", required=True, help="flight speed V >= 0 (non-dimensional)")
-    p.add_argument("--climb", default="0", help="vertical speed relative to the air, positive up (default 0)")
-    p.add_argument("--param", action="append", metavar="NAME=VALUE", help="a wingbeat parameter (radians); any not given is filled from the model's defaults (birdsim params)")
-    p.add_argument("--samples", type=int, default=DEFAULT_SAMPLES,
-                   help=f"samples per wingbeat (default {DEFAULT_SAMPLES}: the mean within 1e-7 of the converged mean)")
-    p.add_argument("--appendix-grid", action="store_true", help="the dissertation's grid: 11 samples, t=0 and t=T")
-    p.add_argument("--json", action="store_true", help="print JSON (keys mean.Fx, mean.Fy, mean.Fz, mean.P)")
+    p.add_argument(
+        "--climb", default="0", help="vertical speed relative to the air, positive up (default 0)"
+    )
+    p.add_argument(
+        "--param",
+        action="append",
+        metavar="NAME=VALUE",
+        help="a wingbeat parameter (radians); any not given is filled from the model's defaults (birdsim params)",
+    )
+    p.add_argument(
+        "--samples",
+        type=int,
+        default=DEFAULT_SAMPLES,
+        help=f"samples per wingbeat (default {DEFAULT_SAMPLES}: the mean within 1e-7 of the converged mean)",
+    )
+    p.add_argument(
+        "--appendix-grid",
+        action="store_true",
+        help="the dissertation's grid: 11 samples, t=0 and t=T",
+    )
+    p.add_argument(
+        "--json", action="store_true", help="print JSON (keys mean.Fx, mean.Fy, mean.Fz, mean.P)"
+    )
     add_bird_arguments(p)
     p.set_defaults(func=run)
 
@@ -34,7 +51,9 @@ def _float(arg: str, raw: str) -> float:
     try:
         return float(raw)
     except ValueError:
-        raise BirdsimError(f"{arg}={raw!r} is not a number; allowed: a number (radians for angles)") from None
+        raise BirdsimError(
+            f"{arg}={raw!r} is not a number; allowed: a number (radians for angles)"
+        ) from None
 
 
 def run(args: argparse.Namespace) -> int:
@@ -52,9 +71,13 @@ def run(args: argparse.Namespace) -> int:
     params.update(filled)
     climb = _float("--climb", args.climb)
     if not math.isfinite(climb):
-        raise BirdsimError(f"--climb {args.climb} is invalid; allowed: a finite number (positive up)")
+        raise BirdsimError(
+            f"--climb {args.climb} is invalid; allowed: a finite number (positive up)"
+        )
     if not args.appendix_grid and not 2 <= args.samples <= MAX_SAMPLES:
-        raise BirdsimError(f"--samples {args.samples} is invalid; allowed: an integer >= 2 and <= {MAX_SAMPLES}")
+        raise BirdsimError(
+            f"--samples {args.samples} is invalid; allowed: an integer >= 2 and <= {MAX_SAMPLES}"
+        )
     n, endpoint = (11, True) if args.appendix_grid else (args.samples, False)
     cyc = evaluate_cycle(model, params, speed, climb=climb, bird=bird, n=n, endpoint=endpoint)
     out = {
@@ -76,9 +99,15 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         print(json.dumps(out, indent=2))
         return 0
-    print(f"model {model.name}, V = {speed:g}, climb = {climb:g}, " + ", ".join(f"{k} = {v:g}" for k, v in params.items()))
+    print(
+        f"model {model.name}, V = {speed:g}, climb = {climb:g}, "
+        + ", ".join(f"{k} = {v:g}" for k, v in params.items())
+    )
     if filled:
-        print(f"filled from the model's {regime} defaults (not given): " + ", ".join(f"{k} = {v:g}" for k, v in filled.items()))
+        print(
+            f"filled from the model's {regime} defaults (not given): "
+            + ", ".join(f"{k} = {v:g}" for k, v in filled.items())
+        )
     print(f"force: {FORCE_NOTE}")
     print(f"{'':12s}{'Fx':>10s}{'Fy':>10s}{'Fz':>10s}{'P':>10s}")
     rows = [("mean", out["mean"]), ("whole bird", out["whole_bird"])]

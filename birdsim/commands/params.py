@@ -10,8 +10,14 @@ from typing import Any
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser("params", help="the wingbeat parameters of each model (meaning, unit, bounds, examples)", description=__doc__)
-    p.add_argument("model", nargs="?", metavar="MODEL", help="base, m1, m2, m3 or m4 (default: all)")
+    p = sub.add_parser(
+        "params",
+        help="the wingbeat parameters of each model (meaning, unit, bounds, examples)",
+        description=__doc__,
+    )
+    p.add_argument(
+        "model", nargs="?", metavar="MODEL", help="base, m1, m2, m3 or m4 (default: all)"
+    )
     p.add_argument("--json", action="store_true", help="print JSON")
     p.set_defaults(func=run)
 
@@ -39,7 +45,10 @@ def reference(model_name: str | None = None) -> dict[str, Any]:
                     "upper": p.upper,
                     "default_hover": km.guess("hover")[p.name],
                     "default_cruise": km.guess("cruise")[p.name],
-                    "examples": {f"eq{e.equation} {e.regime} (V={e.speed:g})": e.params.get(p.name) for e in exs},
+                    "examples": {
+                        f"eq{e.equation} {e.regime} (V={e.speed:g})": e.params.get(p.name)
+                        for e in exs
+                    },
                 }
                 for p in km.params
             ],
@@ -64,11 +73,15 @@ def run(args: argparse.Namespace) -> int:
     for name, entry in ref.items():
         print(f"{name}: {entry['description']}")
         examples = list(entry["params"][0]["examples"])
-        head = f"  {'name':13s}{'symbol':9s}{'unit':5s}{'bounds':18s}" + "".join(f"{e.split()[0]:>8s}" for e in examples)
+        head = f"  {'name':13s}{'symbol':9s}{'unit':5s}{'bounds':18s}" + "".join(
+            f"{e.split()[0]:>8s}" for e in examples
+        )
         print(head + "   meaning")
         for p in entry["params"]:
             bounds = f"[{_fmt(p['lower'])}, {_fmt(p['upper'])}]"
             ex = "".join(f"{_fmt(v):>8s}" for v in p["examples"].values())
-            print(f"  {p['name']:13s}{p['symbol']:9s}{p['unit']:5s}{bounds:18s}{ex}   {p['meaning']}")
+            print(
+                f"  {p['name']:13s}{p['symbol']:9s}{p['unit']:5s}{bounds:18s}{ex}   {p['meaning']}"
+            )
         print("  examples: " + "; ".join(examples))
     return 0

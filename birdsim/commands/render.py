@@ -7,11 +7,11 @@ import argparse
 import re
 from pathlib import Path
 
-from birdsim.errors import BirdsimError
-from birdsim.render.gl import GL_CHOICES
-from birdsim.flight.manoeuvre import PRESETS
 from birdsim.commands.common import add_bird_arguments, bird_from_args
 from birdsim.commands.render_flight import add_flight_arguments, is_log, run_flight
+from birdsim.errors import BirdsimError
+from birdsim.flight.manoeuvre import PRESETS
+from birdsim.render.gl import GL_CHOICES
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -20,24 +20,71 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="render a manoeuvre to MP4 (hover, cruise, take-off, landing or a TOML file)",
         description=__doc__,
     )
-    p.add_argument("manoeuvre", metavar="MANOEUVRE", help=f"a preset ({', '.join(PRESETS)}), a manoeuvre .toml file or a flight log LOG.npz")
-    p.add_argument("--model", default=None, help="kinematic model: base, m1, m2, m3 or m4 (default: the demo model m3 in free flight, m4 with --kinematic)")
+    p.add_argument(
+        "manoeuvre",
+        metavar="MANOEUVRE",
+        help=f"a preset ({', '.join(PRESETS)}), a manoeuvre .toml file or a flight log LOG.npz",
+    )
+    p.add_argument(
+        "--model",
+        default=None,
+        help="kinematic model: base, m1, m2, m3 or m4 (default: the demo model m3 in free flight, m4 with --kinematic)",
+    )
     p.add_argument("--table", metavar="FILE", help="lookup table (default tables/<model>.npz)")
-    p.add_argument("--out", metavar="FILE.mp4", help="output video (default renders/<manoeuvre>-<model>.mp4)")
-    p.add_argument("--size", default="640x480", metavar="WxH", help="frame size, multiples of 16 (default 640x480)")
+    p.add_argument(
+        "--out", metavar="FILE.mp4", help="output video (default renders/<manoeuvre>-<model>.mp4)"
+    )
+    p.add_argument(
+        "--size",
+        default="640x480",
+        metavar="WxH",
+        help="frame size, multiples of 16 (default 640x480)",
+    )
     p.add_argument("--fps", default="30", metavar="N", help="frames per second (default 30)")
-    p.add_argument("--seconds", metavar="S", help="video length (default: the whole manoeuvre); longer holds the last demands")
-    p.add_argument("--beat-rate", default="2", metavar="HZ", help="wingbeats shown per second of video (default 2)")
-    p.add_argument("--camera", default="track", help="track, chase, side, top or overview (default track); `--camera list` describes them")
-    p.add_argument("--quality", default="good", help="draft, good or best (default good): shadows, sky, anti-aliasing; costs in docs/rendering.md")
-    p.add_argument("--forces", nargs="?", const="1.5", metavar="SCALE",
-                   help="draw each control point's force and the body drag as arrows; SCALE = semispans per weight (default 1.5)")
-    p.add_argument("--still", metavar="FILE.png", help="write one frame as PNG instead of the video (see --at)")
-    p.add_argument("--at", metavar="BEATS", help="time of the --still frame in wingbeats from the start (default: the middle)")
+    p.add_argument(
+        "--seconds",
+        metavar="S",
+        help="video length (default: the whole manoeuvre); longer holds the last demands",
+    )
+    p.add_argument(
+        "--beat-rate",
+        default="2",
+        metavar="HZ",
+        help="wingbeats shown per second of video (default 2)",
+    )
+    p.add_argument(
+        "--camera",
+        default="track",
+        help="track, chase, side, top or overview (default track); `--camera list` describes them",
+    )
+    p.add_argument(
+        "--quality",
+        default="good",
+        help="draft, good or best (default good): shadows, sky, anti-aliasing; costs in docs/rendering.md",
+    )
+    p.add_argument(
+        "--forces",
+        nargs="?",
+        const="1.5",
+        metavar="SCALE",
+        help="draw each control point's force and the body drag as arrows; SCALE = semispans per weight (default 1.5)",
+    )
+    p.add_argument(
+        "--still", metavar="FILE.png", help="write one frame as PNG instead of the video (see --at)"
+    )
+    p.add_argument(
+        "--at",
+        metavar="BEATS",
+        help="time of the --still frame in wingbeats from the start (default: the middle)",
+    )
     p.add_argument("--no-trails", action="store_true", help="no control-point pathlines")
     p.add_argument("--no-overlay", action="store_true", help="no text overlay")
-    p.add_argument("--gl", default="auto", help="auto (OSMesa if installed, else EGL), osmesa or egl")
-    p.add_argument("--sheet", metavar="FILE.png", help="also save a contact sheet (12 frames) of the video")
+    p.add_argument(
+        "--gl", default="auto", help="auto (OSMesa if installed, else EGL), osmesa or egl"
+    )
+    p.add_argument(
+        "--sheet", metavar="FILE.png", help="also save a contact sheet (12 frames) of the video"
+    )
     p.add_argument("--force", action="store_true", help="overwrite an existing output file")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     add_bird_arguments(p)
@@ -100,9 +147,9 @@ def check_still(args: argparse.Namespace, clip_beats: float) -> float | None:
 
 def run(args: argparse.Namespace) -> int:
     # every cheap check first, so that a mistake costs nothing and writes nothing
-    from birdsim.render.gl import resolve_gl
-    from birdsim.physics.kinematics import get_model
     from birdsim.flight.manoeuvre import get_manoeuvre
+    from birdsim.physics.kinematics import get_model
+    from birdsim.render.gl import resolve_gl
 
     if args.camera == "list":
         from birdsim.render.options import CAMERA_HELP
@@ -118,7 +165,9 @@ def run(args: argparse.Namespace) -> int:
     seconds = options.duration(manoeuvre)  # a manoeuvre longer than the longest video -> one line
     at = check_still(args, seconds * options.beats_per_second)
     if at is None:
-        out = Path(args.out) if args.out else Path("renders") / f"{_slug(manoeuvre.name)}-{model}.mp4"
+        out = (
+            Path(args.out) if args.out else Path("renders") / f"{_slug(manoeuvre.name)}-{model}.mp4"
+        )
         if out.suffix.lower() != ".mp4":
             raise BirdsimError(f"--out {str(out)!r} does not end in .mp4; allowed: a .mp4 path")
         check_writable(out, args.force)
@@ -138,12 +187,18 @@ def run(args: argparse.Namespace) -> int:
     if at is not None:
         from birdsim.render.renderer import render_still
 
-        path = render_still(manoeuvre, table, args.still, at, options, bird=bird, model=model, force=args.force)
-        print(f"wrote {path} (frame at {at:g} beats, {options.width}x{options.height}, camera {options.camera}, quality {options.quality})")
+        path = render_still(
+            manoeuvre, table, args.still, at, options, bird=bird, model=model, force=args.force
+        )
+        print(
+            f"wrote {path} (frame at {at:g} beats, {options.width}x{options.height}, camera {options.camera}, quality {options.quality})"
+        )
         return 0
     from birdsim.render.renderer import render_manoeuvre
 
-    result = render_manoeuvre(manoeuvre, table, out, options, bird=bird, model=model, force=args.force)
+    result = render_manoeuvre(
+        manoeuvre, table, out, options, bird=bird, model=model, force=args.force
+    )
     print(
         f"wrote {result.path} ({result.frames} frames, {result.width}x{result.height} @ {result.fps} fps, "
         f"{result.video_seconds:.1f} s of video in {result.wall_seconds:.1f} s wall, GL {result.backend})"
@@ -164,7 +219,9 @@ def _forces_scale(raw: str | None) -> float | None:
     except ValueError:
         value = float("nan")
     if not (value > 0 and value <= 1e6):
-        raise BirdsimError(f"--forces {raw!r} is not a positive number; allowed: semispans per weight in (0, 1e6], e.g. --forces 1.5")
+        raise BirdsimError(
+            f"--forces {raw!r} is not a positive number; allowed: semispans per weight in (0, 1e6], e.g. --forces 1.5"
+        )
     return value
 
 
@@ -177,7 +234,9 @@ def _at_beats(raw: str | None, clip_beats: float) -> float:
     except ValueError:
         value = float("nan")
     if not (0.0 <= value <= clip_beats):
-        raise BirdsimError(f"--at {raw!r} is outside the clip; allowed: a time in wingbeats in [0, {clip_beats:g}]")
+        raise BirdsimError(
+            f"--at {raw!r} is outside the clip; allowed: a time in wingbeats in [0, {clip_beats:g}]"
+        )
     return value
 
 
@@ -192,7 +251,9 @@ def check_writable(out: Path, force: bool, arg: str = "--out") -> None:
     try:
         os.unlink(temporary_sibling(out))
     except OSError as exc:
-        raise BirdsimError(f"{arg} {str(out)!r} is not writable: {exc.strerror}; allowed: a path in a writable folder") from None
+        raise BirdsimError(
+            f"{arg} {str(out)!r} is not writable: {exc.strerror}; allowed: a path in a writable folder"
+        ) from None
 
 
 def require_bird(table, bird, table_path: Path) -> None:
@@ -209,12 +270,18 @@ def _load_table(path: Path, model: str, *, explicit: bool):
     from birdsim.flight.playback import check_table_model
 
     if not path.exists():
-        hint = f"build it with `birdsim tables build --model {model}`" if not explicit else "a table file (.npz)"
+        hint = (
+            f"build it with `birdsim tables build --model {model}`"
+            if not explicit
+            else "a table file (.npz)"
+        )
         raise BirdsimError(f"--table {str(path)!r} does not exist; allowed: {hint}")
     try:
         from birdsim.tables.lookup import load_table
     except ImportError:  # pragma: no cover - tables land with issue 3
-        raise BirdsimError("--table: this birdsim has no table support (birdsim.tables.lookup is missing)") from None
+        raise BirdsimError(
+            "--table: this birdsim has no table support (birdsim.tables.lookup is missing)"
+        ) from None
     table = load_table(path)
     check_table_model(table, model)
     return table

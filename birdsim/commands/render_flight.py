@@ -58,7 +58,9 @@ def flight_reference(source: str, model_arg: str | None, gust_args: list[str]):
     return reference, model, gusts
 
 
-def fly_reference(reference, model: str, args: argparse.Namespace, *, beats: float, gusts: list) -> dict:
+def fly_reference(
+    reference, model: str, args: argparse.Namespace, *, beats: float, gusts: list
+) -> dict:
     """Fly ``reference`` in MuJoCo for ``beats`` wingbeats with the bird of ``--bird``/
     ``--set`` and the table of ``--table`` (else the shipped one for that bird), as
     ``birdsim render`` and ``birdsim export`` do; the flight log's arrays (bird units).
@@ -124,7 +126,11 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
                 f"{options.beats_per_second:g}; allowed: at most {MAX_SECONDS:g} s (give --seconds or a higher --beat-rate)"
             )
     if reference is not None:
-        clip_beats = float(reference.duration_beats) if options.seconds is None else options.seconds * options.beats_per_second
+        clip_beats = (
+            float(reference.duration_beats)
+            if options.seconds is None
+            else options.seconds * options.beats_per_second
+        )
     else:
         clip_beats = float(log["t"][-1]) * float(log["omega"]) / (2 * 3.141592653589793)
     at = check_still(args, clip_beats)
@@ -158,7 +164,9 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
         with Scene(states, options) as scene:
             frame = min(scene.frames - 1, int(round(at * options.fps / options.beats_per_second)))
             path = write_png(Path(args.still), scene.rgb(frame))
-        print(f"wrote {path} (frame at {at:g} beats of the free flight, {options.width}x{options.height}, camera {options.camera})")
+        print(
+            f"wrote {path} (frame at {at:g} beats of the free flight, {options.width}x{options.height}, camera {options.camera})"
+        )
         return 0
     from birdsim.render.renderer import render_states
 

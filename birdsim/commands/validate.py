@@ -10,13 +10,39 @@ from pathlib import Path
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser("validate", help="score the model against measured pigeons (power curve, kinematics)", description=__doc__)
-    p.add_argument("--model", default="m3", help="kinematic model (default m3: its flap reaches the pigeon's amplitudes)")
-    p.add_argument("--bird", metavar="FILE.toml", help="bird file with mass and gravity (default: models/pigeon.toml)")
-    p.add_argument("--polar", choices=("seed", "robofly"), help="replace the bird's polar (default: the bird file's)")
-    p.add_argument("--data", metavar="FILE.csv", help="measurements CSV (default: the shipped pigeon measurements)")
-    p.add_argument("--json", action="store_true", help="print one JSON object (model, rows, power_curve, min_power_speed)")
-    p.add_argument("--out", metavar="DIR", help="write index.html, figures and scorecard.json into DIR")
+    p = sub.add_parser(
+        "validate",
+        help="score the model against measured pigeons (power curve, kinematics)",
+        description=__doc__,
+    )
+    p.add_argument(
+        "--model",
+        default="m3",
+        help="kinematic model (default m3: its flap reaches the pigeon's amplitudes)",
+    )
+    p.add_argument(
+        "--bird",
+        metavar="FILE.toml",
+        help="bird file with mass and gravity (default: models/pigeon.toml)",
+    )
+    p.add_argument(
+        "--polar",
+        choices=("seed", "robofly"),
+        help="replace the bird's polar (default: the bird file's)",
+    )
+    p.add_argument(
+        "--data",
+        metavar="FILE.csv",
+        help="measurements CSV (default: the shipped pigeon measurements)",
+    )
+    p.add_argument(
+        "--json",
+        action="store_true",
+        help="print one JSON object (model, rows, power_curve, min_power_speed)",
+    )
+    p.add_argument(
+        "--out", metavar="DIR", help="write index.html, figures and scorecard.json into DIR"
+    )
     p.add_argument("--force", action="store_true", help="overwrite a page already in DIR")
     p.set_defaults(func=run)
 
@@ -32,7 +58,13 @@ def run(args: argparse.Namespace) -> int:
     ms = load_measurements(args.data)
     if args.out:
         check_page_folder(Path(args.out), args.force)
-    v = validate(bird, args.model, ms, bird_file=str(args.bird or "models/pigeon.toml"), progress=not args.json)
+    v = validate(
+        bird,
+        args.model,
+        ms,
+        bird_file=str(args.bird or "models/pigeon.toml"),
+        progress=not args.json,
+    )
     if args.out:
         index = write_page(Path(args.out), v.obj, v.rows, v.sweep, v.variants, force=args.force)
     if args.json:

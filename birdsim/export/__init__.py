@@ -18,7 +18,9 @@ def check_format(fmt: str, out: Path | None = None) -> None:
     if fmt not in FORMATS:
         raise ExportError(f"--format {fmt!r} is unknown; allowed: {', '.join(FORMATS)}")
     if out is not None and Path(out).suffix.lower() not in FORMATS[fmt]:
-        raise ExportError(f"--out {str(out)!r} does not end in {' or '.join(FORMATS[fmt])}; allowed: a {fmt} path")
+        raise ExportError(
+            f"--out {str(out)!r} does not end in {' or '.join(FORMATS[fmt])}; allowed: a {fmt} path"
+        )
 
 
 def write(frames: FrameSequence, fmt: str, out: str | Path) -> Path:

@@ -60,7 +60,9 @@ def axis_angle_matrix(axis: np.ndarray, angle: np.ndarray) -> np.ndarray:
     return np.eye(3) + s * k + (1.0 - c) * (k @ k)
 
 
-def local_transforms(frames: FrameSequence) -> tuple[list[str], dict[str, np.ndarray], dict[str, np.ndarray], np.ndarray]:
+def local_transforms(
+    frames: FrameSequence,
+) -> tuple[list[str], dict[str, np.ndarray], dict[str, np.ndarray], np.ndarray]:
     """Bone names, rest offsets (MuJoCo axes, bird units), per-frame local rotations
     (F, 3, 3) in MuJoCo axes, and the root position (F, 3), all from the MJCF and qpos."""
     from birdsim.mujoco.model import build_model
@@ -77,13 +79,17 @@ def local_transforms(frames: FrameSequence) -> tuple[list[str], dict[str, np.nda
         adr = m.jnt_qposadr[ball.id]
         names += [f"{side}_shoulder", f"{side}_wrist_flap", f"{side}_wrist_twist"]
         offsets[f"{side}_shoulder"] = np.array(arm.pos, dtype=float)
-        rots[f"{side}_shoulder"] = quat_to_matrix(np.array(arm.quat)) @ quat_to_matrix(qpos[:, adr : adr + 4])
+        rots[f"{side}_shoulder"] = quat_to_matrix(np.array(arm.quat)) @ quat_to_matrix(
+            qpos[:, adr : adr + 4]
+        )
         offsets[f"{side}_wrist_flap"] = np.array(hand.pos, dtype=float)
         offsets[f"{side}_wrist_twist"] = np.zeros(3)
         for j in ("wrist_flap", "wrist_twist"):
             jnt = m.joint(f"{side}_{j}")
             r = axis_angle_matrix(np.array(m.jnt_axis[jnt.id]), qpos[:, m.jnt_qposadr[jnt.id]])
-            rots[f"{side}_{j}"] = (quat_to_matrix(np.array(hand.quat)) @ r) if j == "wrist_flap" else r
+            rots[f"{side}_{j}"] = (
+                (quat_to_matrix(np.array(hand.quat)) @ r) if j == "wrist_flap" else r
+            )
         hand_span = frames.bird.semispan * frames.bird.hand_span_fraction
         offsets[f"{side}_tip"] = np.array([0.0, (-1.0 if side == "r" else 1.0) * hand_span, 0.0])
     assert all(r.shape == (n, 3, 3) for r in rots.values())
@@ -97,7 +103,9 @@ def require_bvh() -> None:
     try:
         importlib.import_module("pybvh")
     except ImportError:
-        raise ExportError("--format bvh needs pybvh, which is not installed; allowed: pip install 'birdsim[bvh]' (or --format usd/csv)") from None
+        raise ExportError(
+            "--format bvh needs pybvh, which is not installed; allowed: pip install 'birdsim[bvh]' (or --format usd/csv)"
+        ) from None
 
 
 def build_bvh(frames: FrameSequence):  # -> pybvh.Bvh
@@ -111,7 +119,9 @@ def build_bvh(frames: FrameSequence):  # -> pybvh.Bvh
     from pybvh.bvhnode import BvhEndSite, BvhJoint, BvhRoot
 
     if frames.model == "base":
-        raise ExportError("--format bvh cannot carry the base model's heave slide (BVH moves only the root); allowed: --model m1..m4, or --format usd/csv")
+        raise ExportError(
+            "--format bvh cannot carry the base model's heave slide (BVH moves only the root); allowed: --model m1..m4, or --format usd/csv"
+        )
     names, offsets, rots, root_pos = local_transforms(frames)
     scale = frames.metres_per_unit
     root = BvhRoot("root", offset=[0.0, 0.0, 0.0], pos_channels="XYZ", rot_channels=ORDERS["root"])
@@ -120,15 +130,24 @@ def build_bvh(frames: FrameSequence):  # -> pybvh.Bvh
         parent = root
         for kind in ("shoulder", "wrist_flap", "wrist_twist"):
             name = f"{side}_{kind}"
-            j = BvhJoint(name, offset=TO_BVH @ offsets[name] * scale, rot_channels=ORDERS[kind], parent=parent)
+            j = BvhJoint(
+                name,
+                offset=TO_BVH @ offsets[name] * scale,
+                rot_channels=ORDERS[kind],
+                parent=parent,
+            )
             parent.children.append(j)
             nodes.append(j)
             parent = j
-        tip = BvhEndSite(f"{side}_tip", offset=TO_BVH @ offsets[f"{side}_tip"] * scale, parent=parent)
+        tip = BvhEndSite(
+            f"{side}_tip", offset=TO_BVH @ offsets[f"{side}_tip"] * scale, parent=parent
+        )
         parent.children.append(tip)
         nodes.append(tip)
     joint_names = [n.name for n in nodes if not n.is_end_site()]
-    mats = np.stack([TO_BVH @ rots[name] @ TO_BVH.T for name in joint_names], axis=1)  # (F, J, 3, 3)
+    mats = np.stack(
+        [TO_BVH @ rots[name] @ TO_BVH.T for name in joint_names], axis=1
+    )  # (F, J, 3, 3)
     skeleton = Bvh(nodes=nodes, frame_time=1.0 / frames.fps, world_up="+y")
     return skeleton.from_rotmat(root_pos @ TO_BVH.T * scale, mats)
 

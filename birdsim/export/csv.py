@@ -50,7 +50,11 @@ def joint_columns(frames: FrameSequence) -> dict[str, np.ndarray]:
 def columns(frames: FrameSequence) -> dict[str, np.ndarray]:
     """The CSV's columns, in order (see the module docstring)."""
     n = frames.frames
-    cols: dict[str, np.ndarray] = {"frame": np.arange(n), "time": frames.time, "anim_seconds": np.arange(n) / frames.fps}
+    cols: dict[str, np.ndarray] = {
+        "frame": np.arange(n),
+        "time": frames.time,
+        "anim_seconds": np.arange(n) / frames.fps,
+    }
     for k, c in enumerate("xyz"):
         cols[c] = frames.body_position[:, k]
     for k, c in enumerate("wxyz"):

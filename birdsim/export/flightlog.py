@@ -25,7 +25,14 @@ from typing import Any
 
 import numpy as np
 
-from birdsim.export.frames import ExportError, FrameSequence, achieved_forces, check_fps, frame_count, time_per_second
+from birdsim.export.frames import (
+    ExportError,
+    FrameSequence,
+    achieved_forces,
+    check_fps,
+    frame_count,
+    time_per_second,
+)
 
 #: Force and speed columns carried from a log into the CSV.
 LOG_COLUMNS = ("Fx_demand", "Fz_demand", "V_air")
@@ -106,7 +113,9 @@ def frames_from_log(
     sc = scales(bird)
     t_log = np.asarray(log["t"], dtype=float)
     if t_log.size < 2:
-        raise ExportError("the flight log has fewer than two samples; allowed: a log of at least one sample interval")
+        raise ExportError(
+            "the flight log has fewer than two samples; allowed: a log of at least one sample interval"
+        )
     per_s = time_per_second(bird, beat_rate)
     t0, t1 = float(t_log[0]), float(t_log[-1])
     if seconds is not None:
@@ -122,10 +131,18 @@ def frames_from_log(
         qpos[:, sl] /= np.linalg.norm(qpos[:, sl], axis=1, keepdims=True)
     for sl in _length_slices(m_red):
         qpos[:, sl] *= sc.length
-    params = {p: resample(t_log, np.asarray(log[p], dtype=float), time) for p in km.param_names if p in log}
-    forces = {k: resample(t_log, np.asarray(log[k], dtype=float), time) for k in LOG_COLUMNS if k in log}
+    params = {
+        p: resample(t_log, np.asarray(log[p], dtype=float), time)
+        for p in km.param_names
+        if p in log
+    }
+    forces = {
+        k: resample(t_log, np.asarray(log[k], dtype=float), time) for k in LOG_COLUMNS if k in log
+    }
     if "V_air" in forces:
-        forces["V_air"] = forces["V_air"] / sc.speed  # the bird's speed unit -> omega s (table units)
+        forces["V_air"] = (
+            forces["V_air"] / sc.speed
+        )  # the bird's speed unit -> omega s (table units)
         if len(params) == len(km.param_names):
             forces.update(achieved_forces(km.name, bird, params, forces["V_air"]))
     return FrameSequence(

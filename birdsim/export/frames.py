@@ -62,12 +62,18 @@ class FrameSequence:
     def __post_init__(self) -> None:
         n = len(self.time)
         if n < 1 or self.qpos.shape[0] != n:
-            raise ExportError(f"frame source: {n} times but qpos has {self.qpos.shape[0]} rows; allowed: one row per frame")
+            raise ExportError(
+                f"frame source: {n} times but qpos has {self.qpos.shape[0]} rows; allowed: one row per frame"
+            )
         if not (np.all(np.isfinite(self.time)) and np.all(np.isfinite(self.qpos))):
-            raise ExportError(f"frame source {self.source!r} holds NaN or infinite values; allowed: finite states")
+            raise ExportError(
+                f"frame source {self.source!r} holds NaN or infinite values; allowed: finite states"
+            )
         for name, col in {**self.params, **self.forces}.items():
             if np.shape(col) != (n,):
-                raise ExportError(f"frame source column {name!r} has shape {np.shape(col)}; allowed: ({n},)")
+                raise ExportError(
+                    f"frame source column {name!r} has shape {np.shape(col)}; allowed: ({n},)"
+                )
 
     @property
     def frames(self) -> int:
@@ -96,7 +102,9 @@ def check_fps(fps: object) -> float:
     try:
         v = float(fps)  # type: ignore[arg-type]
     except (TypeError, ValueError):
-        raise ExportError(f"--fps {fps!r} is not a number; allowed: frames per second in [1, {MAX_FPS}]") from None
+        raise ExportError(
+            f"--fps {fps!r} is not a number; allowed: frames per second in [1, {MAX_FPS}]"
+        ) from None
     if not (math.isfinite(v) and 1 <= v <= MAX_FPS):
         raise ExportError(f"--fps {fps!r} is invalid; allowed: frames per second in [1, {MAX_FPS}]")
     return v
@@ -115,8 +123,12 @@ def time_per_second(bird: Bird, beat_rate: float | None = None) -> float:
         if not is_non_dimensional(bird):
             return 1.0
         beat_rate = DEFAULT_BEAT_RATE
-    if not (isinstance(beat_rate, (int, float)) and math.isfinite(beat_rate) and 0 < beat_rate <= 100):
-        raise ExportError(f"--beat-rate {beat_rate!r} is invalid; allowed: wingbeats per second in (0, 100]")
+    if not (
+        isinstance(beat_rate, (int, float)) and math.isfinite(beat_rate) and 0 < beat_rate <= 100
+    ):
+        raise ExportError(
+            f"--beat-rate {beat_rate!r} is invalid; allowed: wingbeats per second in (0, 100]"
+        )
     return float(beat_rate) * bird.period
 
 
@@ -124,18 +136,27 @@ def frame_count(duration_time: float, fps: float, per_second: float) -> int:
     """Frames covering ``duration_time`` bird time units (both ends included)."""
     seconds = duration_time / per_second
     if not (math.isfinite(seconds) and 0 < seconds <= MAX_SECONDS):
-        raise ExportError(f"the export would last {seconds:g} s of animation; allowed: (0, {MAX_SECONDS:g}] s (give --seconds or --beat-rate)")
+        raise ExportError(
+            f"the export would last {seconds:g} s of animation; allowed: (0, {MAX_SECONDS:g}] s (give --seconds or --beat-rate)"
+        )
     return int(math.floor(seconds * fps + 1e-9)) + 1
 
 
-def achieved_forces(model: str, bird: Bird, params: dict[str, np.ndarray], speed: np.ndarray) -> dict[str, np.ndarray]:
+def achieved_forces(
+    model: str, bird: Bird, params: dict[str, np.ndarray], speed: np.ndarray
+) -> dict[str, np.ndarray]:
     """Wingbeat-mean force of each frame's parameters at ``speed`` (quasi-steady), in table
     units (the reduced bird): the dissertation's right wing plus body drag, Fz < 0 up."""
     from birdsim.physics.cycle import evaluate_cycle
     from birdsim.physics.units import reduced_bird
 
-    cyc = evaluate_cycle(model, params, np.clip(speed, 0.0, None), bird=reduced_bird(bird), n=32, check_bounds=False)
-    return {"Fx_achieved": np.asarray(cyc.mean.Fx, dtype=float), "Fz_achieved": np.asarray(cyc.mean.Fz, dtype=float)}
+    cyc = evaluate_cycle(
+        model, params, np.clip(speed, 0.0, None), bird=reduced_bird(bird), n=32, check_bounds=False
+    )
+    return {
+        "Fx_achieved": np.asarray(cyc.mean.Fx, dtype=float),
+        "Fz_achieved": np.asarray(cyc.mean.Fz, dtype=float),
+    }
 
 
 def from_playback(
@@ -178,8 +199,14 @@ def from_playback(
     bird = bird or getattr(table, "bird", None) or Bird()
     per_s = time_per_second(bird, beat_rate)
     if seconds is not None:
-        if not (isinstance(seconds, (int, float)) and math.isfinite(seconds) and 0 < seconds <= MAX_SECONDS):
-            raise ExportError(f"--seconds {seconds!r} is invalid; allowed: a number in (0, {MAX_SECONDS:g}]")
+        if not (
+            isinstance(seconds, (int, float))
+            and math.isfinite(seconds)
+            and 0 < seconds <= MAX_SECONDS
+        ):
+            raise ExportError(
+                f"--seconds {seconds!r} is invalid; allowed: a number in (0, {MAX_SECONDS:g}]"
+            )
         duration = seconds * per_s
     else:
         duration = float(manoeuvre.duration) * bird.period  # type: ignore[attr-defined]
@@ -187,10 +214,25 @@ def from_playback(
     time = np.arange(n) * (per_s / fps)
     t_beats = time / bird.period
     kin = play(manoeuvre, table, t_beats[:1], bird=bird, model=model).model  # type: ignore[arg-type]
-    pb = play(manoeuvre, table, t_beats, bird=bird, model=model, perch_seed=perch_seed_position(kin.name, bird))  # type: ignore[arg-type]
+    pb = play(
+        manoeuvre,
+        table,
+        t_beats,
+        bird=bird,
+        model=model,
+        perch_seed=perch_seed_position(kin.name, bird),
+    )  # type: ignore[arg-type]
     m = build_model(kin.name, bird)
     qpos, qvel, _ = wing_arrays(m, pb.angles, pb.rates, samples=n)
-    set_root(m, qpos, qvel, pitch=pb.pitch, position_seed=pb.position_seed, velocity_seed=pb.velocity_seed, pitch_rate=pb.pitch_rate)
+    set_root(
+        m,
+        qpos,
+        qvel,
+        pitch=pb.pitch,
+        position_seed=pb.position_seed,
+        velocity_seed=pb.velocity_seed,
+        pitch_rate=pb.pitch_rate,
+    )
     forces = {
         "Fx_demand": pb.demand["Fx"],
         "Fz_demand": pb.demand["Fz"],
@@ -212,4 +254,13 @@ def from_playback(
     )
 
 
-__all__ = ["DEFAULT_BEAT_RATE", "ExportError", "FrameSequence", "achieved_forces", "check_fps", "from_playback", "is_non_dimensional", "time_per_second"]
+__all__ = [
+    "DEFAULT_BEAT_RATE",
+    "ExportError",
+    "FrameSequence",
+    "achieved_forces",
+    "check_fps",
+    "from_playback",
+    "is_non_dimensional",
+    "time_per_second",
+]

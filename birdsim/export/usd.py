@@ -89,7 +89,14 @@ def build_stage(frames: FrameSequence, assets_dir: Path):  # -> pxr.Usd.Stage
     d = mujoco.MjData(m)
     work = tempfile.mkdtemp(prefix="birdsim-usd-")
     try:
-        exp = USDExporter(m, height=16, width=16, output_directory="pkg", output_directory_root=work, verbose=False)
+        exp = USDExporter(
+            m,
+            height=16,
+            width=16,
+            output_directory="pkg",
+            output_directory_root=work,
+            verbose=False,
+        )
         # textures are referenced beside the output file, not in the exporter's frames/ layout
         exp.texture_files = [f"{assets_dir.name}/{Path(f).name}" for f in exp.texture_files]
         with _primitive_resolution(PRIMITIVE_RESOLUTION):
@@ -151,7 +158,9 @@ def write_usd(frames: FrameSequence, out: str | Path) -> Path:
     tmp = temporary_sibling(out)
     try:
         if not stage.GetRootLayer().Export(str(tmp)):
-            raise ExportError(f"--out {str(out)!r}: USD could not write the file; allowed: a path in a writable folder")
+            raise ExportError(
+                f"--out {str(out)!r}: USD could not write the file; allowed: a path in a writable folder"
+            )
         os.replace(tmp, out)
     finally:
         if tmp.exists():
@@ -159,4 +168,11 @@ def write_usd(frames: FrameSequence, out: str | Path) -> Path:
     return out
 
 
-__all__ = ["BODY_PRIM", "USD_SUFFIXES", "UsdMissingError", "build_stage", "require_usd", "write_usd"]
+__all__ = [
+    "BODY_PRIM",
+    "USD_SUFFIXES",
+    "UsdMissingError",
+    "build_stage",
+    "require_usd",
+    "write_usd",
+]

@@ -39,7 +39,9 @@ from typing import Any, Protocol
 import numpy as np
 
 from birdsim.errors import BirdsimError
-from birdsim.flight.demand import CLIMB_SPEED, air_path_angle  # one air-path rule (CLIMB_SPEED re-exported)
+from birdsim.flight.demand import (
+    air_path_angle,
+)  # one air-path rule (CLIMB_SPEED re-exported)
 from birdsim.physics.bird import Bird
 
 #: Wingbeats per closed-loop time constant 1 / omega_n (see gains_for and docs/flight.md).

@@ -79,17 +79,29 @@ class Manoeuvre:
 
     def __post_init__(self) -> None:
         if not self.keyframes:
-            raise ManoeuvreError(f"manoeuvre {self.name!r} has no keyframes; allowed: at least one [[keyframe]]")
+            raise ManoeuvreError(
+                f"manoeuvre {self.name!r} has no keyframes; allowed: at least one [[keyframe]]"
+            )
         ts = [k.t for k in self.keyframes]
         if any(b <= a for a, b in zip(ts, ts[1:])):
-            raise ManoeuvreError(f"manoeuvre {self.name!r}: keyframe times {ts} are not increasing; allowed: strictly increasing t")
+            raise ManoeuvreError(
+                f"manoeuvre {self.name!r}: keyframe times {ts} are not increasing; allowed: strictly increasing t"
+            )
         if ts[-1] > MAX_BEATS:
-            raise ManoeuvreError(f"manoeuvre {self.name!r}: keyframe t={ts[-1]:g}; allowed: t <= {MAX_BEATS:g} wingbeats")
+            raise ManoeuvreError(
+                f"manoeuvre {self.name!r}: keyframe t={ts[-1]:g}; allowed: t <= {MAX_BEATS:g} wingbeats"
+            )
         if not (math.isfinite(self.duration) and 0 < self.duration <= MAX_BEATS):
-            raise ManoeuvreError(f"manoeuvre {self.name!r}: duration={self.duration!r}; allowed: a number of wingbeats in (0, {MAX_BEATS:g}]")
+            raise ManoeuvreError(
+                f"manoeuvre {self.name!r}: duration={self.duration!r}; allowed: a number of wingbeats in (0, {MAX_BEATS:g}]"
+            )
         if self.perch not in ("", "start", "end"):
-            raise ManoeuvreError(f"manoeuvre {self.name!r}: perch={self.perch!r}; allowed: start, end or empty")
-        from birdsim.flight.path import FLOOR_CLEARANCE  # one floor rule for paths and force keyframes
+            raise ManoeuvreError(
+                f"manoeuvre {self.name!r}: perch={self.perch!r}; allowed: start, end or empty"
+            )
+        from birdsim.flight.path import (
+            FLOOR_CLEARANCE,
+        )  # one floor rule for paths and force keyframes
 
         for i, k in enumerate(self.keyframes):
             if not (math.isfinite(k.z) and k.z >= FLOOR_CLEARANCE):
@@ -185,35 +197,39 @@ def get_manoeuvre(name_or_path: str) -> Manoeuvre:
     p = Path(name_or_path)
     if p.suffix.lower() == ".toml" or p.exists():
         return load_manoeuvre(p)
-    raise ManoeuvreError(f"manoeuvre {name_or_path!r} is unknown; allowed: {', '.join(PRESETS)} or a .toml file")
+    raise ManoeuvreError(
+        f"manoeuvre {name_or_path!r} is unknown; allowed: {', '.join(PRESETS)} or a .toml file"
+    )
 
 
 def load_manoeuvre(path: str | Path) -> Manoeuvre:
     """Read a manoeuvre TOML file.  Two forms (times in wingbeats)::
 
-        name = "climb"                      # optional (default: file stem)
-        duration = 8                        # optional (default: last keyframe + 1), <= MAX_BEATS
-        perch = ""                          # "start", "end" or "" (optional)
-        [[keyframe]]                        # one table per keyframe ...
-        t = 0
-        Fx = 0.0
-        Fz = -0.2
-        V = 0.9
-        z = 6.0                             # optional, held from the previous keyframe
-        regime = "cruise"                   # optional overlay label
+    name = "climb"                      # optional (default: file stem)
+    duration = 8                        # optional (default: last keyframe + 1), <= MAX_BEATS
+    perch = ""                          # "start", "end" or "" (optional)
+    [[keyframe]]                        # one table per keyframe ...
+    t = 0
+    Fx = 0.0
+    Fz = -0.2
+    V = 0.9
+    z = 6.0                             # optional, held from the previous keyframe
+    regime = "cruise"                   # optional overlay label
 
-        [demands]                           # ... or columns of equal length
-        t = [0, 4, 8]
-        Fx = [0, 0, 0]
-        Fz = [-0.2, -0.4, -0.2]
-        V = [0.9, 0.9, 0.9]
+    [demands]                           # ... or columns of equal length
+    t = [0, 4, 8]
+    Fx = [0, 0, 0]
+    Fz = [-0.2, -0.4, -0.2]
+    V = [0.9, 0.9, 0.9]
     """
     p = Path(path)
     arg = f"manoeuvre file {str(p)!r}"
     try:
         data = tomllib.loads(p.read_text())
     except FileNotFoundError:
-        raise ManoeuvreError(f"{arg} does not exist; allowed: {', '.join(PRESETS)} or a readable .toml file") from None
+        raise ManoeuvreError(
+            f"{arg} does not exist; allowed: {', '.join(PRESETS)} or a readable .toml file"
+        ) from None
     except (OSError, UnicodeDecodeError) as exc:
         raise ManoeuvreError(f"{arg} cannot be read: {exc}") from None
     except tomllib.TOMLDecodeError as exc:
@@ -221,12 +237,18 @@ def load_manoeuvre(path: str | Path) -> Manoeuvre:
     known = {"name", "description", "duration", "perch", "keyframe", "demands"}
     unknown = sorted(set(data) - known)
     if unknown:
-        raise ManoeuvreError(f"{arg}: key {unknown[0]!r} is unknown; allowed: {', '.join(sorted(known))}")
+        raise ManoeuvreError(
+            f"{arg}: key {unknown[0]!r} is unknown; allowed: {', '.join(sorted(known))}"
+        )
     if ("keyframe" in data) == ("demands" in data):
-        raise ManoeuvreError(f"{arg}: give either [[keyframe]] tables or one [demands] table, not {'both' if 'keyframe' in data else 'neither'}")
+        raise ManoeuvreError(
+            f"{arg}: give either [[keyframe]] tables or one [demands] table, not {'both' if 'keyframe' in data else 'neither'}"
+        )
     rows = data["keyframe"] if "keyframe" in data else _columns_to_rows(arg, data["demands"])
     if not isinstance(rows, list) or not rows:
-        raise ManoeuvreError(f"{arg}: keyframe must be an array of tables ([[keyframe]]) with at least one entry")
+        raise ManoeuvreError(
+            f"{arg}: keyframe must be an array of tables ([[keyframe]]) with at least one entry"
+        )
     keyframes = []
     z_prev = CRUISE_HEIGHT
     for i, row in enumerate(rows):
@@ -236,7 +258,9 @@ def load_manoeuvre(path: str | Path) -> Manoeuvre:
         allowed = {"t", "Fx", "Fz", "V", "z", "regime"}
         bad = sorted(set(row) - allowed)
         if bad:
-            raise ManoeuvreError(f"{where}: key {bad[0]!r} is unknown; allowed: {', '.join(sorted(allowed))}")
+            raise ManoeuvreError(
+                f"{where}: key {bad[0]!r} is unknown; allowed: {', '.join(sorted(allowed))}"
+            )
         vals: dict[str, Any] = {}
         for key in ("t", "Fx", "Fz", "V"):
             if key not in row:
@@ -245,33 +269,51 @@ def load_manoeuvre(path: str | Path) -> Manoeuvre:
         if vals["V"] < 0:
             raise ManoeuvreError(f"{where}: V={vals['V']:g} is negative; allowed: V >= 0")
         if vals["t"] < 0:
-            raise ManoeuvreError(f"{where}: t={vals['t']:g} is negative; allowed: t >= 0 (wingbeats)")
+            raise ManoeuvreError(
+                f"{where}: t={vals['t']:g} is negative; allowed: t >= 0 (wingbeats)"
+            )
         z_prev = _number(f"{where}: z", row["z"]) if "z" in row else z_prev
         regime = row.get("regime", "")
         if not isinstance(regime, str):
             raise ManoeuvreError(f"{where}: regime={regime!r} is not a string")
         keyframes.append(Keyframe(vals["t"], vals["Fx"], vals["Fz"], vals["V"], z_prev, regime))
     last = keyframes[-1].t
-    duration = _number(f"{arg}: duration", data["duration"]) if "duration" in data else min(last + 1.0, MAX_BEATS)
+    duration = (
+        _number(f"{arg}: duration", data["duration"])
+        if "duration" in data
+        else min(last + 1.0, MAX_BEATS)
+    )
     name = data.get("name", p.stem)
     if not isinstance(name, str) or not name:
         raise ManoeuvreError(f"{arg}: name={name!r}; allowed: a non-empty string")
     perch = data.get("perch", "")
     try:
-        return Manoeuvre(name, tuple(keyframes), duration, str(data.get("description", "")), perch if isinstance(perch, str) else repr(perch))
+        return Manoeuvre(
+            name,
+            tuple(keyframes),
+            duration,
+            str(data.get("description", "")),
+            perch if isinstance(perch, str) else repr(perch),
+        )
     except ManoeuvreError as exc:
         raise ManoeuvreError(f"{arg}: {str(exc).split(': ', 1)[-1]}") from None
 
 
 def _columns_to_rows(arg: str, table: Any) -> list[dict[str, Any]]:
     if not isinstance(table, dict):
-        raise ManoeuvreError(f"{arg}: demands must be a table of equal-length arrays t, Fx, Fz, V (z optional)")
+        raise ManoeuvreError(
+            f"{arg}: demands must be a table of equal-length arrays t, Fx, Fz, V (z optional)"
+        )
     scalars = [k for k, v in table.items() if not isinstance(v, list)]
     if scalars:
-        raise ManoeuvreError(f"{arg}: [demands] {scalars[0]}={table[scalars[0]]!r} is not an array; allowed: arrays of one length, e.g. {scalars[0]} = [0, 1]")
+        raise ManoeuvreError(
+            f"{arg}: [demands] {scalars[0]}={table[scalars[0]]!r} is not an array; allowed: arrays of one length, e.g. {scalars[0]} = [0, 1]"
+        )
     lengths = {k: len(v) for k, v in table.items()}
     if set(lengths) != set(table) or len(set(lengths.values())) != 1:
-        raise ManoeuvreError(f"{arg}: [demands] columns must be arrays of one length; got {lengths or table}")
+        raise ManoeuvreError(
+            f"{arg}: [demands] columns must be arrays of one length; got {lengths or table}"
+        )
     n = next(iter(lengths.values()))
     return [{k: v[i] for k, v in table.items()} for i in range(n)]
 
@@ -282,4 +324,14 @@ def _number(arg: str, raw: Any) -> float:
     return float(raw)
 
 
-__all__ = ["CRUISE_HEIGHT", "Keyframe", "MAX_BEATS", "Manoeuvre", "ManoeuvreError", "PERCH_HEIGHT", "PRESETS", "get_manoeuvre", "load_manoeuvre"]
+__all__ = [
+    "CRUISE_HEIGHT",
+    "Keyframe",
+    "MAX_BEATS",
+    "Manoeuvre",
+    "ManoeuvreError",
+    "PERCH_HEIGHT",
+    "PRESETS",
+    "get_manoeuvre",
+    "load_manoeuvre",
+]

@@ -37,10 +37,10 @@ import numpy as np
 from scipy.interpolate import CubicSpline
 from scipy.signal import lfilter
 
-from birdsim.physics.bird import Bird
 from birdsim.errors import BirdsimError
-from birdsim.physics.kinematics import KinematicModel, get_model
 from birdsim.flight.manoeuvre import DEMANDS, PERCH_HEIGHT, Manoeuvre
+from birdsim.physics.bird import Bird
+from birdsim.physics.kinematics import KinematicModel, get_model
 
 
 class TableLike(Protocol):
@@ -50,7 +50,9 @@ class TableLike(Protocol):
     param_names: Sequence[str]
     axes: Any
 
-    def lookup(self, *, Fx: Any, Fz: Any, V: Any, clip: bool = False) -> Mapping[str, np.ndarray]: ...
+    def lookup(
+        self, *, Fx: Any, Fz: Any, V: Any, clip: bool = False
+    ) -> Mapping[str, np.ndarray]: ...
 
 
 class TableMismatchError(BirdsimError):
@@ -68,7 +70,9 @@ class PlaybackConfig:
         if not (math.isfinite(self.smoothing_beats) and self.smoothing_beats >= 0):
             raise BirdsimError(f"smoothing_beats={self.smoothing_beats!r}; allowed: a number >= 0")
         if not (isinstance(self.samples_per_beat, int) and self.samples_per_beat >= 4):
-            raise BirdsimError(f"samples_per_beat={self.samples_per_beat!r}; allowed: an integer >= 4")
+            raise BirdsimError(
+                f"samples_per_beat={self.samples_per_beat!r}; allowed: an integer >= 4"
+            )
 
 
 @dataclass(frozen=True)
@@ -134,7 +138,10 @@ def table_status(table: TableLike, demands: Mapping[str, np.ndarray]) -> tuple[s
     n = len(demands["Fx"])
     if fn is None:
         return ("ok",) * n
-    return tuple(str(fn(float(demands["Fx"][i]), float(demands["Fz"][i]), float(demands["V"][i]), clip=True)) for i in range(n))
+    return tuple(
+        str(fn(float(demands["Fx"][i]), float(demands["Fz"][i]), float(demands["V"][i]), clip=True))
+        for i in range(n)
+    )
 
 
 def check_table_model(table: TableLike, model: str | None, arg: str = "--table") -> KinematicModel:
@@ -187,7 +194,9 @@ def play(
     names = kin.param_names
     missing = [p for p in names if p not in raw]
     if missing:
-        raise TableMismatchError(f"--table lacks parameter {missing[0]!r} of model {kin.name}; allowed: a table for {kin.name}")
+        raise TableMismatchError(
+            f"--table lacks parameter {missing[0]!r} of model {kin.name}; allowed: a table for {kin.name}"
+        )
     P = np.stack([np.asarray(raw[p], dtype=float).reshape(n) for p in names], axis=1)  # (n, nP)
     if not np.all(np.isfinite(P)):
         bad = int(np.argmax(~np.all(np.isfinite(P), axis=1)))
@@ -315,12 +324,21 @@ def joint_derivatives(
     h = 1e-6
     motion = kin.joint_motion(params, bird)
 
-    def along(direction: Mapping[str, np.ndarray]) -> dict[str, tuple[np.ndarray, np.ndarray, np.ndarray]]:
+    def along(
+        direction: Mapping[str, np.ndarray],
+    ) -> dict[str, tuple[np.ndarray, np.ndarray, np.ndarray]]:
         plus = kin.joint_motion({k: params[k] + h * direction[k] for k in params}, bird)
         minus = kin.joint_motion({k: params[k] - h * direction[k] for k in params}, bird)
         return {
             name: tuple(
-                np.broadcast_to((np.asarray(getattr(plus[name], f), dtype=float) - np.asarray(getattr(minus[name], f), dtype=float)) / (2 * h), shape)
+                np.broadcast_to(
+                    (
+                        np.asarray(getattr(plus[name], f), dtype=float)
+                        - np.asarray(getattr(minus[name], f), dtype=float)
+                    )
+                    / (2 * h),
+                    shape,
+                )
                 for f in ("amp", "phase", "bias")
             )
             for name in motion
@@ -331,7 +349,9 @@ def joint_derivatives(
     second = along(param_accels) if param_accels is not None else None
     angles, rates, accels = {}, {}, {}
     for name, s in motion.items():
-        a, c, b = (np.broadcast_to(np.asarray(v, dtype=float), shape) for v in (s.amp, s.phase, s.bias))
+        a, c, b = (
+            np.broadcast_to(np.asarray(v, dtype=float), shape) for v in (s.amp, s.phase, s.bias)
+        )
         da, dc, db = first[name]
         arg = phase + c
         sn, cs = np.sin(arg), np.cos(arg)
@@ -351,4 +371,15 @@ def frame_times(seconds: float, fps: int, beats_per_second: float) -> np.ndarray
     return np.arange(frames) * (beats_per_second / fps)
 
 
-__all__ = ["Playback", "PlaybackConfig", "TableLike", "TableMismatchError", "check_table_model", "frame_times", "joint_derivatives", "joint_series", "play", "table_axes"]
+__all__ = [
+    "Playback",
+    "PlaybackConfig",
+    "TableLike",
+    "TableMismatchError",
+    "check_table_model",
+    "frame_times",
+    "joint_derivatives",
+    "joint_series",
+    "play",
+    "table_axes",
+]

@@ -31,7 +31,6 @@ def camera_quat(position: np.ndarray) -> np.ndarray:
     return quat
 
 
-
 #: Side of one ground checker square, in semispans (so that speed reads off the ground).
 GROUND_SPACING = 1.0
 
@@ -44,15 +43,45 @@ def add_arena(spec: mujoco.MjSpec, bird: Bird) -> None:
     arena = spec.find_default("arena")
     world = spec.worldbody
     tex = mujoco.mjtTexture
-    spec.add_texture(name="sky", type=tex.mjTEXTURE_SKYBOX, builtin=mujoco.mjtBuiltin.mjBUILTIN_GRADIENT,
-                     rgb1=[0.36, 0.56, 0.84], rgb2=[0.86, 0.91, 0.96], width=256, height=1536)
-    spec.add_texture(name="ground", type=tex.mjTEXTURE_2D, builtin=mujoco.mjtBuiltin.mjBUILTIN_CHECKER,
-                     rgb1=[0.55, 0.66, 0.42], rgb2=[0.47, 0.59, 0.36], mark=mujoco.mjtMark.mjMARK_EDGE,
-                     markrgb=[0.40, 0.50, 0.30], width=256, height=256)
-    spec.add_texture(name="bark", type=tex.mjTEXTURE_2D, builtin=mujoco.mjtBuiltin.mjBUILTIN_FLAT,
-                     rgb1=[1.0, 0.95, 0.9], rgb2=[1.0, 0.95, 0.9], mark=mujoco.mjtMark.mjMARK_RANDOM,
-                     markrgb=[0.6, 0.55, 0.5], random=0.3, width=64, height=64)
-    ground = spec.add_material(name="ground", texuniform=True, texrepeat=[1.0 / (2.0 * GROUND_SPACING * s)] * 2, specular=0.05, shininess=0.05)
+    spec.add_texture(
+        name="sky",
+        type=tex.mjTEXTURE_SKYBOX,
+        builtin=mujoco.mjtBuiltin.mjBUILTIN_GRADIENT,
+        rgb1=[0.36, 0.56, 0.84],
+        rgb2=[0.86, 0.91, 0.96],
+        width=256,
+        height=1536,
+    )
+    spec.add_texture(
+        name="ground",
+        type=tex.mjTEXTURE_2D,
+        builtin=mujoco.mjtBuiltin.mjBUILTIN_CHECKER,
+        rgb1=[0.55, 0.66, 0.42],
+        rgb2=[0.47, 0.59, 0.36],
+        mark=mujoco.mjtMark.mjMARK_EDGE,
+        markrgb=[0.40, 0.50, 0.30],
+        width=256,
+        height=256,
+    )
+    spec.add_texture(
+        name="bark",
+        type=tex.mjTEXTURE_2D,
+        builtin=mujoco.mjtBuiltin.mjBUILTIN_FLAT,
+        rgb1=[1.0, 0.95, 0.9],
+        rgb2=[1.0, 0.95, 0.9],
+        mark=mujoco.mjtMark.mjMARK_RANDOM,
+        markrgb=[0.6, 0.55, 0.5],
+        random=0.3,
+        width=64,
+        height=64,
+    )
+    ground = spec.add_material(
+        name="ground",
+        texuniform=True,
+        texrepeat=[1.0 / (2.0 * GROUND_SPACING * s)] * 2,
+        specular=0.05,
+        shininess=0.05,
+    )
     ground.textures[mujoco.mjtTextureRole.mjTEXROLE_RGB] = "ground"
     bark = spec.add_material(name="bark", texrepeat=[2.0, 2.0], specular=0.05, shininess=0.05)
     bark.textures[mujoco.mjtTextureRole.mjTEXROLE_RGB] = "bark"
@@ -60,27 +89,79 @@ def add_arena(spec: mujoco.MjSpec, bird: Bird) -> None:
     spec.visual.headlight.diffuse = [0.35, 0.35, 0.35]
     spec.visual.headlight.specular = [0.05, 0.05, 0.05]
     spec.visual.map.haze = 0.35
-    world.add_light(name="sun", pos=[0, 0, 10 * s], dir=[0.3, 0.2, -1.0], type=mujoco.mjtLightType.mjLIGHT_DIRECTIONAL,
-                    diffuse=[0.65, 0.63, 0.58], specular=[0.2, 0.2, 0.2], castshadow=True)
-    world.add_geom(name="floor", default=arena, type=mujoco.mjtGeom.mjGEOM_PLANE, size=[50 * s, 50 * s, 0.1], rgba=[1, 1, 1, 1], material="ground")
+    world.add_light(
+        name="sun",
+        pos=[0, 0, 10 * s],
+        dir=[0.3, 0.2, -1.0],
+        type=mujoco.mjtLightType.mjLIGHT_DIRECTIONAL,
+        diffuse=[0.65, 0.63, 0.58],
+        specular=[0.2, 0.2, 0.2],
+        castshadow=True,
+    )
+    world.add_geom(
+        name="floor",
+        default=arena,
+        type=mujoco.mjtGeom.mjGEOM_PLANE,
+        size=[50 * s, 50 * s, 0.1],
+        rgba=[1, 1, 1, 1],
+        material="ground",
+    )
     perch = world.add_body(name="perch", pos=[6.0 * s, 0.0, 0.0], childclass="arena")
-    perch.add_geom(name="perch_post", type=mujoco.mjtGeom.mjGEOM_CYLINDER, size=[0.05 * s, 0.75 * s, 0], pos=[0, 0, 0.75 * s], rgba=[0.5, 0.38, 0.26, 1], material="bark")
     perch.add_geom(
-        name="perch_bar", type=mujoco.mjtGeom.mjGEOM_CAPSULE, size=[0.04 * s, 0.6 * s, 0],
-        pos=[0, 0, 1.5 * s], quat=[math.sqrt(0.5), math.sqrt(0.5), 0, 0], rgba=[0.5, 0.38, 0.26, 1], material="bark",
+        name="perch_post",
+        type=mujoco.mjtGeom.mjGEOM_CYLINDER,
+        size=[0.05 * s, 0.75 * s, 0],
+        pos=[0, 0, 0.75 * s],
+        rgba=[0.5, 0.38, 0.26, 1],
+        material="bark",
+    )
+    perch.add_geom(
+        name="perch_bar",
+        type=mujoco.mjtGeom.mjGEOM_CAPSULE,
+        size=[0.04 * s, 0.6 * s, 0],
+        pos=[0, 0, 1.5 * s],
+        quat=[math.sqrt(0.5), math.sqrt(0.5), 0, 0],
+        rgba=[0.5, 0.38, 0.26, 1],
+        material="bark",
     )
     # for the eye only: a flared foot, a knot and twigs off the branch (no contacts, no mass)
-    decor = dict(contype=0, conaffinity=0, group=2, mass=0.0, material="bark", rgba=[0.5, 0.38, 0.26, 1])
-    perch.add_geom(name="perch_foot", type=mujoco.mjtGeom.mjGEOM_ELLIPSOID, size=[0.11 * s, 0.11 * s, 0.08 * s], pos=[0, 0, 0], **decor)
-    perch.add_geom(name="perch_knot", type=mujoco.mjtGeom.mjGEOM_SPHERE, size=[0.065 * s, 0, 0], pos=[0, 0, 1.5 * s], **decor)
-    for k, (y, angle, length) in enumerate(((0.45, 0.7, 0.28), (-0.35, 2.3, 0.22), (0.1, 1.2, 0.18))):
+    decor = dict(
+        contype=0, conaffinity=0, group=2, mass=0.0, material="bark", rgba=[0.5, 0.38, 0.26, 1]
+    )
+    perch.add_geom(
+        name="perch_foot",
+        type=mujoco.mjtGeom.mjGEOM_ELLIPSOID,
+        size=[0.11 * s, 0.11 * s, 0.08 * s],
+        pos=[0, 0, 0],
+        **decor,
+    )
+    perch.add_geom(
+        name="perch_knot",
+        type=mujoco.mjtGeom.mjGEOM_SPHERE,
+        size=[0.065 * s, 0, 0],
+        pos=[0, 0, 1.5 * s],
+        **decor,
+    )
+    for k, (y, angle, length) in enumerate(
+        ((0.45, 0.7, 0.28), (-0.35, 2.3, 0.22), (0.1, 1.2, 0.18))
+    ):
         half = 0.5 * length * s
         d = np.array([math.cos(angle) * 0.4, 0.0, math.sin(angle)])
         d /= np.linalg.norm(d)
-        perch.add_geom(name=f"perch_twig{k}", type=mujoco.mjtGeom.mjGEOM_CAPSULE, size=[0.012 * s, 0, 0],
-                       fromto=[*(np.array([0.0, y * s, 1.5 * s])), *(np.array([0.0, y * s, 1.5 * s]) + 2 * half * d)], **decor)
+        perch.add_geom(
+            name=f"perch_twig{k}",
+            type=mujoco.mjtGeom.mjGEOM_CAPSULE,
+            size=[0.012 * s, 0, 0],
+            fromto=[
+                *(np.array([0.0, y * s, 1.5 * s])),
+                *(np.array([0.0, y * s, 1.5 * s]) + 2 * half * d),
+            ],
+            **decor,
+        )
     perch.add_site(name="perch_top", pos=[0, 0, 1.54 * s], size=[0.02 * s, 0, 0], group=3)
-    world.add_camera(name="overview", pos=[3 * s, -12 * s, 4 * s], quat=camera_quat(np.array([-3.0, -12.0, 2.0])))
+    world.add_camera(
+        name="overview", pos=[3 * s, -12 * s, 4 * s], quat=camera_quat(np.array([-3.0, -12.0, 2.0]))
+    )
 
 
 __all__ = ["GROUND_SPACING", "add_arena", "camera_quat"]

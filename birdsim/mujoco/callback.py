@@ -30,10 +30,10 @@ from contextlib import contextmanager
 import mujoco
 import numpy as np
 
-from birdsim.physics.aero import body_drag_magnitude
-from birdsim.physics.bird import Bird
 from birdsim.errors import BirdsimError
 from birdsim.mujoco.model import aero_sites, span_sign
+from birdsim.physics.aero import body_drag_magnitude
+from birdsim.physics.bird import Bird
 
 _SITE = mujoco.mjtObj.mjOBJ_SITE
 
@@ -52,7 +52,14 @@ class AeroCallback:
     ``enabled`` switches the forces off without uninstalling (e.g. an aero-off run).
     """
 
-    def __init__(self, m: mujoco.MjModel, model_name: str, bird: Bird | None = None, *, body_drag: bool = True):
+    def __init__(
+        self,
+        m: mujoco.MjModel,
+        model_name: str,
+        bird: Bird | None = None,
+        *,
+        body_drag: bool = True,
+    ):
         self.bird = bird or Bird()
         self.model = m
         self.enabled = True
@@ -62,7 +69,9 @@ class AeroCallback:
             self.site_ids = np.array([m.site(s.site).id for s in sites])
             self.torso_site = m.site("torso_cp").id
         except KeyError as exc:
-            raise BirdsimError(f"model lacks site {exc}; allowed: a model built by birdsim.mujoco.model") from None
+            raise BirdsimError(
+                f"model lacks site {exc}; allowed: a model built by birdsim.mujoco.model"
+            ) from None
         self.body_ids = m.site_bodyid[self.site_ids].copy()
         self.torso_body = int(m.site_bodyid[self.torso_site])
         # element offsets from the site along its local y axis, (K, S)
@@ -100,7 +109,9 @@ class AeroCallback:
             torque = _cross(r, f).sum(axis=1)
         pos = d.site_xpos[self.site_ids]
         for k in range(len(self.site_ids)):
-            mujoco.mj_applyFT(m, d, force[k], torque[k], pos[k], int(self.body_ids[k]), d.qfrc_passive)
+            mujoco.mj_applyFT(
+                m, d, force[k], torque[k], pos[k], int(self.body_ids[k]), d.qfrc_passive
+            )
         if self.body_drag:
             self._apply_body_drag(m, d)
 
@@ -115,7 +126,15 @@ class AeroCallback:
         attack = np.arctan2(-loc[2], loc[0])  # theta - gamma (seed body axes: z down)
         # |sin| keeps it a drag (never a thrust) when the body meets the air nose-down or backwards
         drag = body_drag_magnitude(speed, attack, self.bird.rho, self.bird.body_drag_area)
-        mujoco.mj_applyFT(m, d, -drag * u / speed, np.zeros(3), d.site_xpos[self.torso_site], self.torso_body, d.qfrc_passive)
+        mujoco.mj_applyFT(
+            m,
+            d,
+            -drag * u / speed,
+            np.zeros(3),
+            d.site_xpos[self.torso_site],
+            self.torso_body,
+            d.qfrc_passive,
+        )
 
 
 @contextmanager
@@ -129,7 +148,9 @@ def aero_forces(
     """
     cb = AeroCallback(m, model_name, bird, body_drag=body_drag)
     if mujoco.get_mjcb_passive() is not None:
-        raise BirdsimError("a MuJoCo passive callback is already installed; allowed: one aero_forces block at a time")
+        raise BirdsimError(
+            "a MuJoCo passive callback is already installed; allowed: one aero_forces block at a time"
+        )
     mujoco.set_mjcb_passive(cb)
     try:
         yield cb

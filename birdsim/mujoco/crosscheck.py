@@ -33,13 +33,13 @@ from dataclasses import dataclass, field
 import mujoco
 import numpy as np
 
-from birdsim.physics.bird import Bird
-from birdsim.physics.cycle import evaluate_cycle
 from birdsim.errors import BirdsimError
-from birdsim.physics.kinematics import get_model
 from birdsim.mujoco.callback import aero_forces
 from birdsim.mujoco.driver import trajectory
 from birdsim.mujoco.model import HOLD_TIMECONST_STEPS, build_model
+from birdsim.physics.bird import Bird
+from birdsim.physics.cycle import evaluate_cycle
+from birdsim.physics.kinematics import get_model
 
 C = np.array([1.0, -1.0, -1.0])
 #: Where the held torso sits (seed earth axes; the height is irrelevant with gravity
@@ -48,7 +48,6 @@ HOLD_POSITION_SEED = (0.0, 0.0, -2.0)
 #: The weld's impedance when the torso is re-set each step: MuJoCo's largest (0.9999);
 #: a soft constraint delivers d/(d + (1-d)) of the rigid force, ~1e-4 short.
 HOLD_IMPEDANCE = 0.9999
-
 
 
 @dataclass(frozen=True)
@@ -111,7 +110,13 @@ class CrossCheck:
         }
 
 
-def held_model(model_name: str, params: Mapping[str, float], speed: float, bird: Bird, timestep: float | None = None) -> mujoco.MjModel:
+def held_model(
+    model_name: str,
+    params: Mapping[str, float],
+    speed: float,
+    bird: Bird,
+    timestep: float | None = None,
+) -> mujoco.MjModel:
     """The bird built at the parameter set's pitch, gravity and contacts off, the
     freestream in ``opt.wind``; ``timestep`` also sets the weld's time constant."""
     m = build_model(model_name, bird, scene=False, body_pitch=float(params["pitch"]))
@@ -122,7 +127,6 @@ def held_model(model_name: str, params: Mapping[str, float], speed: float, bird:
         m.opt.timestep = timestep
         m.eq_solref[m.equality("hold").id] = (HOLD_TIMECONST_STEPS * timestep, 1.0)
     return m
-
 
 
 def _inverse_run(m, d, traj, aero_cb) -> tuple[np.ndarray, np.ndarray]:
@@ -198,7 +202,9 @@ def crosscheck(
 
     m = held_model(model_name, params, speed, bird)
     d = mujoco.MjData(m)
-    traj = trajectory(m, model_name, params, cyc.time, bird, position_seed=HOLD_POSITION_SEED, check_bounds=False)
+    traj = trajectory(
+        m, model_name, params, cyc.time, bird, position_seed=HOLD_POSITION_SEED, check_bounds=False
+    )
     off_root, off_wing = _inverse_run(m, d, traj, None)
     with aero_forces(m, model_name, bird):
         on_root, on_wing = _inverse_run(m, d, traj, True)
@@ -208,7 +214,9 @@ def crosscheck(
 
     fwd = fwd_an = None
     if forward is not None:
-        fwd, fwd_an = _forward(model_name, params, speed, bird, samples * substeps, cycles, period, reset_root=not free)
+        fwd, fwd_an = _forward(
+            model_name, params, speed, bird, samples * substeps, cycles, period, reset_root=not free
+        )
 
     return CrossCheck(
         model=model_name,
@@ -228,7 +236,9 @@ def crosscheck(
     )
 
 
-def _forward(model_name, params, speed, bird, steps, cycles, period, reset_root: bool) -> tuple[np.ndarray, np.ndarray]:
+def _forward(
+    model_name, params, speed, bird, steps, cycles, period, reset_root: bool
+) -> tuple[np.ndarray, np.ndarray]:
     """Mean aero force (seed) from the welded forward simulation and the analytic mean
     on the same ``steps`` sample times."""
     dt = period / steps
@@ -237,7 +247,9 @@ def _forward(model_name, params, speed, bird, steps, cycles, period, reset_root:
     if reset_root:
         m.eq_solimp[hold] = (HOLD_IMPEDANCE, HOLD_IMPEDANCE, 0.001, 0.5, 2.0)
     times = np.arange(cycles * steps) * dt
-    traj = trajectory(m, model_name, params, times, bird, position_seed=HOLD_POSITION_SEED, check_bounds=False)
+    traj = trajectory(
+        m, model_name, params, times, bird, position_seed=HOLD_POSITION_SEED, check_bounds=False
+    )
     d_inv = mujoco.MjData(m)
 
     def run(aero: bool) -> np.ndarray:

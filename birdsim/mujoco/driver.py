@@ -26,10 +26,10 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
-from birdsim.physics.bird import Bird
 from birdsim.errors import BirdsimError
-from birdsim.physics.kinematics import JOINTS, get_model, validate_params
 from birdsim.mujoco.model import SIDES, hinge_axis
+from birdsim.physics.bird import Bird
+from birdsim.physics.kinematics import JOINTS, get_model, validate_params
 
 #: The core joints composed into the shoulder ball joint, outermost first.
 SHOULDER = ("sweep", "stroke", "flap", "twist")
@@ -69,7 +69,10 @@ def _quat_mul(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 
 
 def ball_state(
-    axes: Sequence[np.ndarray], q: Sequence[np.ndarray], qd: Sequence[np.ndarray], qdd: Sequence[np.ndarray]
+    axes: Sequence[np.ndarray],
+    q: Sequence[np.ndarray],
+    qd: Sequence[np.ndarray],
+    qdd: Sequence[np.ndarray],
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Quaternion (T, 4), child-frame angular velocity and acceleration (T, 3) of the
     intrinsic composition of rotations by ``q[k]`` about ``axes[k]`` (outermost first)."""
@@ -78,7 +81,9 @@ def ball_state(
     quat = np.tile([1.0, 0.0, 0.0, 0.0], (t, 1))
     for a, ang in zip(axes, q):
         half = 0.5 * np.asarray(ang)
-        quat = _quat_mul(quat, np.concatenate([np.cos(half)[:, None], np.sin(half)[:, None] * a], axis=-1))
+        quat = _quat_mul(
+            quat, np.concatenate([np.cos(half)[:, None], np.sin(half)[:, None] * a], axis=-1)
+        )
     rots = [_rotation_matrices(a, np.asarray(ang)) for a, ang in zip(axes, q)]
     v = [None] * n
     b = np.tile(np.eye(3), (t, 1, 1))  # A_{k+1} .. A_n, built from the inside out
@@ -103,7 +108,9 @@ def _as_series(value: object, t: int, name: str) -> np.ndarray:
     if a.ndim > 1 or (a.ndim == 1 and a.shape[0] != t):
         raise BirdsimError(f"joint {name} has shape {a.shape}; allowed: a number or ({t},) samples")
     if not np.all(np.isfinite(a)):
-        raise BirdsimError(f"joint {name} is not finite; allowed: finite angles (rad) or heave (length)")
+        raise BirdsimError(
+            f"joint {name} is not finite; allowed: finite angles (rad) or heave (length)"
+        )
     return np.broadcast_to(a, (t,)).astype(float)
 
 
@@ -123,7 +130,11 @@ def wing_arrays(
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """qpos (T, nq), qvel and qacc (T, nv) with the wing joints set (root entries: rest
     pose / zero).  Missing joints, rates or accelerations are 0."""
-    for arg, vals in (("joint_angles", angles), ("joint_rates", rates or {}), ("joint_accelerations", accelerations or {})):
+    for arg, vals in (
+        ("joint_angles", angles),
+        ("joint_rates", rates or {}),
+        ("joint_accelerations", accelerations or {}),
+    ):
         _check_names(vals, arg)
     t = samples
     get = lambda d, k: _as_series((d or {}).get(k, 0.0), t, k)  # noqa: E731
@@ -137,7 +148,10 @@ def wing_arrays(
         qacc[:, m.jnt_dofadr[jid]] = get(accelerations, "heave")
         axes = [hinge_axis(side, JOINTS[j].axis) for j in SHOULDER]
         quat, omega, alpha = ball_state(
-            axes, [get(angles, j) for j in SHOULDER], [get(rates, j) for j in SHOULDER], [get(accelerations, j) for j in SHOULDER]
+            axes,
+            [get(angles, j) for j in SHOULDER],
+            [get(rates, j) for j in SHOULDER],
+            [get(accelerations, j) for j in SHOULDER],
         )
         jid = m.joint(f"{side}_shoulder").id
         qa, da = m.jnt_qposadr[jid], m.jnt_dofadr[jid]
@@ -156,9 +170,13 @@ def _vec3(value: object, name: str) -> np.ndarray:
     try:
         a = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
-        raise BirdsimError(f"{name}={value!r} is not a vector; allowed: three finite numbers") from None
+        raise BirdsimError(
+            f"{name}={value!r} is not a vector; allowed: three finite numbers"
+        ) from None
     if a.shape != (3,) or not np.all(np.isfinite(a)):
-        raise BirdsimError(f"{name}={value!r} is invalid; allowed: three finite numbers (seed axes X, Y, Z)")
+        raise BirdsimError(
+            f"{name}={value!r} is invalid; allowed: three finite numbers (seed axes X, Y, Z)"
+        )
     return a
 
 
@@ -188,7 +206,11 @@ def set_root(
     qpos[..., 4] = 0.0
     qpos[..., 5] = -np.sin(half)
     qpos[..., 6] = 0.0
-    qvel[..., 0:3] = 0.0 if velocity_seed is None else np.asarray(velocity_seed, dtype=float) * np.array([1.0, -1.0, -1.0])
+    qvel[..., 0:3] = (
+        0.0
+        if velocity_seed is None
+        else np.asarray(velocity_seed, dtype=float) * np.array([1.0, -1.0, -1.0])
+    )
     qvel[..., 3] = 0.0
     qvel[..., 4] = -np.asarray(pitch_rate, dtype=float)
     qvel[..., 5] = 0.0
@@ -221,7 +243,15 @@ def set_pose(
         velocity_seed = _vec3(velocity_seed, "velocity_seed")
     qpos, qvel, _ = wing_arrays(m, joint_angles, joint_rates, samples=1)
     qpos[0, :3] = d.qpos[:3]
-    set_root(m, qpos[0], qvel[0], pitch=pitch, position_seed=position_seed, velocity_seed=velocity_seed, pitch_rate=pitch_rate)
+    set_root(
+        m,
+        qpos[0],
+        qvel[0],
+        pitch=pitch,
+        position_seed=position_seed,
+        velocity_seed=velocity_seed,
+        pitch_rate=pitch_rate,
+    )
     d.qpos[:] = qpos[0]
     d.qvel[:] = qvel[0]
     if forward:
@@ -250,12 +280,16 @@ def joint_series(
     if times.ndim != 1:
         raise BirdsimError(f"times has shape {times.shape}; allowed: a 1-D array of times")
     if not np.all(np.isfinite(times)):
-        raise BirdsimError(f"times={float(times[~np.isfinite(times)][0])} is not finite; allowed: finite times")
+        raise BirdsimError(
+            f"times={float(times[~np.isfinite(times)][0])} is not finite; allowed: finite times"
+        )
     p = {k: np.broadcast_to(v, times.shape) for k, v in p.items()}
     angles, rates, accs = {}, {}, {}
     for name, motion in km.joint_motion(p, bird).items():
         q, qd, qdd = motion.at(bird.omega * times, bird.omega)
-        angles[name], rates[name], accs[name] = (np.broadcast_to(x, times.shape) for x in (q, qd, qdd))
+        angles[name], rates[name], accs[name] = (
+            np.broadcast_to(x, times.shape) for x in (q, qd, qdd)
+        )
     return angles, rates, accs
 
 

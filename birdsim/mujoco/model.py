@@ -40,12 +40,17 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
-from birdsim.physics.bird import Bird
 from birdsim.errors import BirdsimError
-from birdsim.physics.kinematics import get_model
+from birdsim.mujoco.arena import (
+    add_arena as _add_arena,
+)
+from birdsim.mujoco.arena import (
+    camera_quat as _camera_quat,
+)
 from birdsim.mujoco.plumage import plumage_for
 from birdsim.mujoco.visual import add_body_dress, add_materials, add_panel_dress, add_visual_default
-from birdsim.mujoco.arena import GROUND_SPACING, add_arena as _add_arena, camera_quat as _camera_quat  # noqa: F401 (GROUND_SPACING re-exported)
+from birdsim.physics.bird import Bird
+from birdsim.physics.kinematics import get_model
 
 #: Simulation steps per wingbeat: ``opt.timestep = bird.period / STEPS_PER_WINGBEAT``.
 STEPS_PER_WINGBEAT = 512
@@ -67,7 +72,11 @@ SIDES = ("r", "l")
 WING_JOINTS = ("heave", "shoulder", "wrist_flap", "wrist_twist")
 #: Seed axes of the core's hinge joints (kinematics.JOINTS) -- repeated here only as
 #: MuJoCo axes; tests compare them with the core's joint table.
-SEED_AXIS = {"x": np.array([1.0, 0.0, 0.0]), "y": np.array([0.0, 1.0, 0.0]), "z": np.array([0.0, 0.0, 1.0])}
+SEED_AXIS = {
+    "x": np.array([1.0, 0.0, 0.0]),
+    "y": np.array([0.0, 1.0, 0.0]),
+    "z": np.array([0.0, 0.0, 1.0]),
+}
 C = np.diag([1.0, -1.0, -1.0])
 MIRROR = np.diag([1.0, -1.0, 1.0])
 
@@ -126,8 +135,13 @@ def aero_sites(model_name: str, bird: Bird) -> tuple[AeroSite, ...]:
             r_cp = bird.cp_span_fraction * panel.span
             out.append(
                 AeroSite(
-                    f"{side}_cp_{panel.name}", side, panel.name, panel.area, panel.chord,
-                    tuple(float(x) for x in r - r_cp), tuple(float(x) for x in w),
+                    f"{side}_cp_{panel.name}",
+                    side,
+                    panel.name,
+                    panel.area,
+                    panel.chord,
+                    tuple(float(x) for x in r - r_cp),
+                    tuple(float(x) for x in w),
                 )
             )
     return tuple(out)
@@ -170,7 +184,9 @@ CAMERAS = {
 }
 
 
-def _add_bird(spec: mujoco.MjSpec, model_name: str, bird: Bird, body_pitch: float, visuals: bool = True) -> None:
+def _add_bird(
+    spec: mujoco.MjSpec, model_name: str, bird: Bird, body_pitch: float, visuals: bool = True
+) -> None:
     km = get_model(model_name)
     plumage = plumage_for(bird.name)
     if visuals:
@@ -199,16 +215,33 @@ def _add_bird(spec: mujoco.MjSpec, model_name: str, bird: Bird, body_pitch: floa
     torso.mass = bird.mass
     torso.ipos = [0.0, 0.0, 0.0]
     torso.inertia = _box_inertia(bird.mass, body_size)
-    torso.add_geom(name="torso_body", type=mujoco.mjtGeom.mjGEOM_ELLIPSOID, size=body_size, mass=0.0)
-    torso.add_geom(name="head", type=mujoco.mjtGeom.mjGEOM_SPHERE, size=[0.11 * s, 0, 0], pos=[0.6 * s, 0, 0.08 * s], mass=0.0)
     torso.add_geom(
-        name="tail", type=mujoco.mjtGeom.mjGEOM_BOX, size=[0.22 * s, 0.14 * s, 0.008 * s], pos=[-0.7 * s, 0, 0.02 * s], mass=0.0
+        name="torso_body", type=mujoco.mjtGeom.mjGEOM_ELLIPSOID, size=body_size, mass=0.0
+    )
+    torso.add_geom(
+        name="head",
+        type=mujoco.mjtGeom.mjGEOM_SPHERE,
+        size=[0.11 * s, 0, 0],
+        pos=[0.6 * s, 0, 0.08 * s],
+        mass=0.0,
+    )
+    torso.add_geom(
+        name="tail",
+        type=mujoco.mjtGeom.mjGEOM_BOX,
+        size=[0.22 * s, 0.14 * s, 0.008 * s],
+        pos=[-0.7 * s, 0, 0.02 * s],
+        mass=0.0,
     )
     torso.add_site(name="torso_cp", default=spec.find_default("cp"), pos=[0, 0, 0])
     if visuals:
         add_body_dress(spec, torso, s)
     for name, pos in CAMERAS.items():
-        torso.add_camera(name=name, pos=pos * s, quat=_camera_quat(pos), mode=mujoco.mjtCamLight.mjCAMLIGHT_TRACKCOM)
+        torso.add_camera(
+            name=name,
+            pos=pos * s,
+            quat=_camera_quat(pos),
+            mode=mujoco.mjtCamLight.mjCAMLIGHT_TRACKCOM,
+        )
 
     panel_cls = spec.find_default("panel")
     cp_cls = spec.find_default("cp")
@@ -225,24 +258,51 @@ def _add_bird(spec: mujoco.MjSpec, model_name: str, bird: Bird, body_pitch: floa
         drawn = np.array([size[0], max(size[1], ZERO_SPAN_HALF * chord), size[2]])
         body.add_geom(name=name, default=panel_cls, size=drawn, pos=[0.0, sign * span / 2, 0.0])
         if visuals:  # the bird's planform over the panel: same span and area, no mass
-            add_panel_dress(spec, body, f"vis_{name.removesuffix('_panel')}", kind, span, chord, sign, plumage.wing_bars)
+            add_panel_dress(
+                spec,
+                body,
+                f"vis_{name.removesuffix('_panel')}",
+                kind,
+                span,
+                chord,
+                sign,
+                plumage.wing_bars,
+            )
 
     for side in SIDES:
         sg = span_sign(side)
         arm = torso.add_body(name=f"{side}_arm")
-        arm.add_joint(name=f"{side}_heave", type=mujoco.mjtJoint.mjJNT_SLIDE, axis=slide_axis(side, "z"))
+        arm.add_joint(
+            name=f"{side}_heave", type=mujoco.mjtJoint.mjJNT_SLIDE, axis=slide_axis(side, "z")
+        )
         arm.add_joint(name=f"{side}_shoulder", type=mujoco.mjtJoint.mjJNT_BALL)
         panel(arm, f"{side}_arm_panel", arm_span, arm_chord, sg, "arm")
-        arm.add_site(name=f"{side}_cp_wing", default=cp_cls, pos=[0.0, sg * bird.cp_span_fraction * s, 0.0])
-        arm.add_site(name=f"{side}_cp_arm", default=cp_cls, pos=[0.0, sg * bird.cp_span_fraction * arm_span, 0.0])
+        arm.add_site(
+            name=f"{side}_cp_wing", default=cp_cls, pos=[0.0, sg * bird.cp_span_fraction * s, 0.0]
+        )
+        arm.add_site(
+            name=f"{side}_cp_arm",
+            default=cp_cls,
+            pos=[0.0, sg * bird.cp_span_fraction * arm_span, 0.0],
+        )
         hand = arm.add_body(name=f"{side}_hand", pos=[0.0, sg * arm_span, 0.0])
-        hand.add_joint(name=f"{side}_wrist_flap", type=mujoco.mjtJoint.mjJNT_HINGE, axis=hinge_axis(side, "x"))
-        hand.add_joint(name=f"{side}_wrist_twist", type=mujoco.mjtJoint.mjJNT_HINGE, axis=hinge_axis(side, "y"))
+        hand.add_joint(
+            name=f"{side}_wrist_flap", type=mujoco.mjtJoint.mjJNT_HINGE, axis=hinge_axis(side, "x")
+        )
+        hand.add_joint(
+            name=f"{side}_wrist_twist", type=mujoco.mjtJoint.mjJNT_HINGE, axis=hinge_axis(side, "y")
+        )
         panel(hand, f"{side}_hand_panel", hand_span, hand_chord, sg, "hand")
-        hand.add_site(name=f"{side}_cp_hand", default=cp_cls, pos=[0.0, sg * bird.cp_span_fraction * hand_span, 0.0])
+        hand.add_site(
+            name=f"{side}_cp_hand",
+            default=cp_cls,
+            pos=[0.0, sg * bird.cp_span_fraction * hand_span, 0.0],
+        )
 
     # hold the torso to the world where it was built (used by the cross-check)
-    weld = spec.add_equality(name="hold", type=mujoco.mjtEq.mjEQ_WELD, objtype=mujoco.mjtObj.mjOBJ_BODY)
+    weld = spec.add_equality(
+        name="hold", type=mujoco.mjtEq.mjEQ_WELD, objtype=mujoco.mjtObj.mjOBJ_BODY
+    )
     weld.name1 = "torso"
     # anchor (in body2 = world coordinates) at the torso origin, so that the held force
     # has no lever arm; relpose "0 1 0 0 0 0 0" = MJCF's sentinel for "the pose at
@@ -271,7 +331,12 @@ def _add_key(spec: mujoco.MjSpec, m: mujoco.MjModel) -> None:
 
 
 def build_spec(
-    model_name: str = "m4", bird: Bird | None = None, *, scene: bool = True, body_pitch: float = 0.0, visuals: bool = True
+    model_name: str = "m4",
+    bird: Bird | None = None,
+    *,
+    scene: bool = True,
+    body_pitch: float = 0.0,
+    visuals: bool = True,
 ) -> mujoco.MjSpec:
     """The MjSpec of the bird for kinematic ``model_name`` (base, m1..m4).
 
@@ -296,7 +361,12 @@ def build_spec(
 
 
 def build_model(
-    model_name: str = "m4", bird: Bird | None = None, *, scene: bool = True, body_pitch: float = 0.0, visuals: bool = True
+    model_name: str = "m4",
+    bird: Bird | None = None,
+    *,
+    scene: bool = True,
+    body_pitch: float = 0.0,
+    visuals: bool = True,
 ) -> mujoco.MjModel:
     """Compiled MjModel of the bird (see :func:`build_spec`).
 
@@ -307,8 +377,12 @@ def build_model(
     weld ``hold`` (inactive).  Timestep ``bird.period / 512``; offscreen 1280 x 720.
     """
     if not isinstance(body_pitch, (int, float)) or not math.isfinite(body_pitch):
-        raise BirdsimError(f"body_pitch={body_pitch!r} is invalid; allowed: a finite angle in radians")
-    return build_spec(model_name, bird, scene=scene, body_pitch=body_pitch, visuals=visuals).compile()
+        raise BirdsimError(
+            f"body_pitch={body_pitch!r} is invalid; allowed: a finite angle in radians"
+        )
+    return build_spec(
+        model_name, bird, scene=scene, body_pitch=body_pitch, visuals=visuals
+    ).compile()
 
 
 SCENE_INCLUDE = '  <include file="bird.xml"/>\n'

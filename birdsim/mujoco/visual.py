@@ -79,13 +79,18 @@ def _feather(inner_a, inner_b, outer_a, outer_b, narrow: float, bulge: float) ->
     nrm = np.array([edge[1], -edge[0]]) / max(width, 1e-300)
     if np.dot(nrm, mid - 0.5 * (inner_a + inner_b)) < 0:
         nrm = -nrm
-    arc = [oa + (ob - oa) * (0.5 - 0.5 * math.cos(a)) + nrm * bulge * width * math.sin(a) for a in np.linspace(0, math.pi, 7)[1:-1]]
+    arc = [
+        oa + (ob - oa) * (0.5 - 0.5 * math.cos(a)) + nrm * bulge * width * math.sin(a)
+        for a in np.linspace(0, math.pi, 7)[1:-1]
+    ]
     return np.array([inner_a, inner_b, ob, *arc[::-1], oa])
 
 
 def _strips(upper: np.ndarray, lower: np.ndarray) -> list[np.ndarray]:
     """Quads between two curves sampled at the same stations (P, 2) each."""
-    return [np.array([upper[i], upper[i + 1], lower[i + 1], lower[i]]) for i in range(len(upper) - 1)]
+    return [
+        np.array([upper[i], upper[i + 1], lower[i + 1], lower[i]]) for i in range(len(upper) - 1)
+    ]
 
 
 def arm_planform(bars: int = 2) -> list[Piece]:
@@ -99,7 +104,9 @@ def arm_planform(bars: int = 2) -> list[Piece]:
     for k in range(len(cuts) - 1):
         top, bot = le - cuts[k] * (le - cv), le - cuts[k + 1] * (le - cv)
         kind = "bars" if (bars and k in (1, 3)) else "coverts"
-        pieces += [Piece(kind, q) for q in _strips(np.column_stack([u, top]), np.column_stack([u, bot]))]
+        pieces += [
+            Piece(kind, q) for q in _strips(np.column_stack([u, top]), np.column_stack([u, bot]))
+        ]
     inner = np.column_stack([u, cv])
     outer = np.column_stack([u, np.full_like(u, -0.46)])
     ii, oo = _resample(inner, SECONDARIES), _resample(outer, SECONDARIES)
@@ -121,14 +128,28 @@ def hand_planform() -> list[Piece]:
     # rounded tip: half an ellipse from the trailing edge round u = 1 to the leading edge
     x0, x1 = te[-1], le[-1]
     a = np.linspace(-0.5 * np.pi, 0.5 * np.pi, 9)[1:]
-    tip = np.column_stack([tip_u + (1.0 - tip_u) * np.cos(a), 0.5 * (x0 + x1) + 0.5 * (x1 - x0) * np.sin(a)])
+    tip = np.column_stack(
+        [tip_u + (1.0 - tip_u) * np.cos(a), 0.5 * (x0 + x1) + 0.5 * (x1 - x0) * np.sin(a)]
+    )
     outer = np.vstack([np.column_stack([te_u, te]), tip])
     pieces = [Piece("coverts", q) for q in _strips(np.column_stack([u, le]), inner)]
     ii, oo = _resample(inner, PRIMARIES), _resample(outer, PRIMARIES)
     for k in range(PRIMARIES):
         slotted = k >= PRIMARIES - SLOTTED
         kind = "primaries" if k % 2 == 0 else "primaries_alt"
-        pieces.append(Piece(kind, _feather(ii[k], ii[k + 1], oo[k], oo[k + 1], 0.55 if slotted else 0.97, 0.5 if slotted else 0.3)))
+        pieces.append(
+            Piece(
+                kind,
+                _feather(
+                    ii[k],
+                    ii[k + 1],
+                    oo[k],
+                    oo[k + 1],
+                    0.55 if slotted else 0.97,
+                    0.5 if slotted else 0.3,
+                ),
+            )
+        )
     return pieces
 
 
@@ -142,14 +163,18 @@ def panel_planform(kind: str, span: float, chord: float, bars: int = 2) -> list[
     return [Piece(p.kind, p.polygon * scale) for p in pieces]
 
 
-def extrude(polygons: list[np.ndarray], sign: float, thickness: float, z: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+def extrude(
+    polygons: list[np.ndarray], sign: float, thickness: float, z: float = 0.0
+) -> tuple[np.ndarray, np.ndarray]:
     """A mesh (vertices (V, 3), faces (F, 3)) of flat polygons (u, x) in a body frame
     whose span runs along ``sign`` * y: each polygon a prism of ``thickness`` about
     ``z``, triangulated as a fan about its centroid (pieces are star-shaped)."""
     verts, faces = [], []
     for poly in polygons:
         xy = np.column_stack([poly[:, 1], sign * poly[:, 0]])
-        signed = 0.5 * float(np.dot(xy[:, 0], np.roll(xy[:, 1], -1)) - np.dot(xy[:, 1], np.roll(xy[:, 0], -1)))
+        signed = 0.5 * float(
+            np.dot(xy[:, 0], np.roll(xy[:, 1], -1)) - np.dot(xy[:, 1], np.roll(xy[:, 0], -1))
+        )
         if signed < 0:
             xy = xy[::-1]
         n = len(xy)
@@ -175,16 +200,28 @@ def _shade(rgba, factor: float) -> list[float]:
 def add_materials(spec: mujoco.MjSpec, plumage: Plumage) -> None:
     """One material per plumage part, named ``plumage_<part>`` (matte; the neck glossy)."""
     parts = {
-        "body": plumage.body, "belly": plumage.belly, "head": plumage.head, "neck": plumage.neck,
-        "beak": plumage.beak, "eye": plumage.eye, "eye_ring": plumage.eye_ring, "coverts": plumage.coverts,
-        "bars": plumage.bars, "secondaries": plumage.secondaries, "secondaries_alt": _shade(plumage.secondaries, 0.88),
-        "primaries": plumage.primaries, "primaries_alt": _shade(plumage.primaries, 0.82), "tail": plumage.tail,
-        "tail_band": plumage.tail_band, "feet": plumage.feet,
+        "body": plumage.body,
+        "belly": plumage.belly,
+        "head": plumage.head,
+        "neck": plumage.neck,
+        "beak": plumage.beak,
+        "eye": plumage.eye,
+        "eye_ring": plumage.eye_ring,
+        "coverts": plumage.coverts,
+        "bars": plumage.bars,
+        "secondaries": plumage.secondaries,
+        "secondaries_alt": _shade(plumage.secondaries, 0.88),
+        "primaries": plumage.primaries,
+        "primaries_alt": _shade(plumage.primaries, 0.82),
+        "tail": plumage.tail,
+        "tail_band": plumage.tail_band,
+        "feet": plumage.feet,
     }
     for part, rgba in parts.items():
         glossy = part in ("neck", "eye", "beak")
         spec.add_material(
-            name=f"plumage_{part}", rgba=list(rgba),
+            name=f"plumage_{part}",
+            rgba=list(rgba),
             specular=plumage.neck_specular if part == "neck" else (0.6 if glossy else 0.12),
             shininess=plumage.neck_shininess if part == "neck" else (0.6 if glossy else 0.15),
         )
@@ -200,7 +237,16 @@ def add_visual_default(spec: mujoco.MjSpec) -> None:
     vis.geom.density = 0.0
 
 
-def add_panel_dress(spec: mujoco.MjSpec, body, prefix: str, kind: str, span: float, chord: float, sign: float, bars: int) -> None:
+def add_panel_dress(
+    spec: mujoco.MjSpec,
+    body,
+    prefix: str,
+    kind: str,
+    span: float,
+    chord: float,
+    sign: float,
+    bars: int,
+) -> None:
     """Meshes ``<prefix>_<colour>`` dressing one panel (span along ``sign`` * y of
     ``body``); nothing for a panel of zero span."""
     if span <= 1e-9 * max(chord, 1e-300):
@@ -209,11 +255,21 @@ def add_panel_dress(spec: mujoco.MjSpec, body, prefix: str, kind: str, span: flo
     vis = spec.find_default("visual")
     for colour in dict.fromkeys(p.kind for p in pieces):
         polys = [p.polygon for p in pieces if p.kind == colour]
-        z = 0.25 * WING_THICKNESS * chord if colour in ("coverts", "bars") else 0.0  # coverts on top
+        z = (
+            0.25 * WING_THICKNESS * chord if colour in ("coverts", "bars") else 0.0
+        )  # coverts on top
         v, f = extrude(polys, sign, WING_THICKNESS * chord, z)
-        mesh = spec.add_mesh(name=f"{prefix}_{colour}", uservert=v.ravel().tolist(), userface=f.ravel().tolist())
+        mesh = spec.add_mesh(
+            name=f"{prefix}_{colour}", uservert=v.ravel().tolist(), userface=f.ravel().tolist()
+        )
         mesh.inertia = mujoco.mjtMeshInertia.mjMESH_INERTIA_SHELL
-        body.add_geom(name=f"{prefix}_{colour}", default=vis, type=mujoco.mjtGeom.mjGEOM_MESH, meshname=mesh.name, material=f"plumage_{colour}")
+        body.add_geom(
+            name=f"{prefix}_{colour}",
+            default=vis,
+            type=mujoco.mjtGeom.mjGEOM_MESH,
+            meshname=mesh.name,
+            material=f"plumage_{colour}",
+        )
 
 
 def tail_fan(s: float) -> dict[str, list[np.ndarray]]:
@@ -226,38 +282,97 @@ def tail_fan(s: float) -> dict[str, list[np.ndarray]]:
     for a0, a1 in zip(angles[:-1], angles[1:]):
         d0, d1 = np.array([-math.cos(a0), math.sin(a0)]), np.array([-math.cos(a1), math.sin(a1)])
         r_in, r_band = 0.05 * s, 0.8 * length
-        out["tail"].append(np.array([hub + r_in * d0, hub + r_band * d0, hub + r_band * d1, hub + r_in * d1]))
+        out["tail"].append(
+            np.array([hub + r_in * d0, hub + r_band * d0, hub + r_band * d1, hub + r_in * d1])
+        )
         dm = (d0 + d1) / np.linalg.norm(d0 + d1)
-        out["tail_band"].append(np.array([hub + r_band * d0, hub + length * d0, hub + 1.04 * length * dm, hub + length * d1, hub + r_band * d1]))
+        out["tail_band"].append(
+            np.array(
+                [
+                    hub + r_band * d0,
+                    hub + length * d0,
+                    hub + 1.04 * length * dm,
+                    hub + length * d1,
+                    hub + r_band * d1,
+                ]
+            )
+        )
     return out
 
 
 def add_body_dress(spec: mujoco.MjSpec, torso, s: float) -> None:
     """Torso, belly, neck, head, beak, eyes and tail of the visual bird (semispan ``s``)."""
     vis = spec.find_default("visual")
-    E, S, M = mujoco.mjtGeom.mjGEOM_ELLIPSOID, mujoco.mjtGeom.mjGEOM_SPHERE, mujoco.mjtGeom.mjGEOM_MESH
+    E, S, M = (
+        mujoco.mjtGeom.mjGEOM_ELLIPSOID,
+        mujoco.mjtGeom.mjGEOM_SPHERE,
+        mujoco.mjtGeom.mjGEOM_MESH,
+    )
 
     def geom(name, gtype, size, pos, material, quat=(1.0, 0.0, 0.0, 0.0)):
-        torso.add_geom(name=name, default=vis, type=gtype, size=list(size), pos=list(np.asarray(pos) * s), quat=list(quat), material=f"plumage_{material}")
+        torso.add_geom(
+            name=name,
+            default=vis,
+            type=gtype,
+            size=list(size),
+            pos=list(np.asarray(pos) * s),
+            quat=list(quat),
+            material=f"plumage_{material}",
+        )
 
     geom("vis_torso", E, np.array([0.50, 0.15, 0.14]) * s, [0.0, 0.0, 0.0], "body")
     geom("vis_belly", E, np.array([0.40, 0.13, 0.10]) * s, [0.04, 0.0, -0.055], "belly")
     tilt = math.radians(-30.0)  # neck leans forward-up
-    geom("vis_neck", E, np.array([0.17, 0.105, 0.11]) * s, [0.42, 0.0, 0.05], "neck", (math.cos(tilt / 2), 0.0, math.sin(tilt / 2), 0.0))
+    geom(
+        "vis_neck",
+        E,
+        np.array([0.17, 0.105, 0.11]) * s,
+        [0.42, 0.0, 0.05],
+        "neck",
+        (math.cos(tilt / 2), 0.0, math.sin(tilt / 2), 0.0),
+    )
     geom("vis_head", S, [0.105 * s, 0, 0], [0.60, 0.0, 0.12], "head")
     droop = math.radians(12.0)
-    geom("vis_beak", E, np.array([0.085, 0.028, 0.024]) * s, [0.72, 0.0, 0.10], "beak", (math.cos(droop / 2), 0.0, math.sin(droop / 2), 0.0))
+    geom(
+        "vis_beak",
+        E,
+        np.array([0.085, 0.028, 0.024]) * s,
+        [0.72, 0.0, 0.10],
+        "beak",
+        (math.cos(droop / 2), 0.0, math.sin(droop / 2), 0.0),
+    )
     for side, y in (("l", 1.0), ("r", -1.0)):
         geom(f"vis_{side}_eye_ring", S, [0.030 * s, 0, 0], [0.645, y * 0.075, 0.145], "eye_ring")
         geom(f"vis_{side}_eye", S, [0.022 * s, 0, 0], [0.652, y * 0.085, 0.147], "eye")
     for colour, polys in tail_fan(s).items():
-        v, f = extrude([np.column_stack([q[:, 1], q[:, 0]]) for q in polys], 1.0, 0.012 * s, 0.03 * s)  # (u, x) = (y, x)
-        mesh = spec.add_mesh(name=f"vis_{colour}", uservert=v.ravel().tolist(), userface=f.ravel().tolist())
+        v, f = extrude(
+            [np.column_stack([q[:, 1], q[:, 0]]) for q in polys], 1.0, 0.012 * s, 0.03 * s
+        )  # (u, x) = (y, x)
+        mesh = spec.add_mesh(
+            name=f"vis_{colour}", uservert=v.ravel().tolist(), userface=f.ravel().tolist()
+        )
         mesh.inertia = mujoco.mjtMeshInertia.mjMESH_INERTIA_SHELL
-        torso.add_geom(name=f"vis_{colour}", default=vis, type=M, meshname=mesh.name, material=f"plumage_{colour}")
+        torso.add_geom(
+            name=f"vis_{colour}",
+            default=vis,
+            type=M,
+            meshname=mesh.name,
+            material=f"plumage_{colour}",
+        )
 
 
 __all__ = [
-    "PHYSICAL_GROUP", "Piece", "VISUAL_GROUP", "add_body_dress", "add_materials", "add_panel_dress", "add_visual_default",
-    "arm_planform", "extrude", "hand_planform", "panel_planform", "polygon_area", "tail_fan",
+    "PHYSICAL_GROUP",
+    "Piece",
+    "VISUAL_GROUP",
+    "add_body_dress",
+    "add_materials",
+    "add_panel_dress",
+    "add_visual_default",
+    "arm_planform",
+    "extrude",
+    "hand_planform",
+    "panel_planform",
+    "polygon_area",
+    "tail_fan",
 ]

@@ -80,7 +80,9 @@ class SeedPolar(Polar):
         u = np.sqrt(u2)
         num = 0.5 * rho * np.asarray(area, dtype=float)
         # the strips of a heaving (base) wing share one velocity: broadcast against the areas
-        inv_u = np.divide(num, u, out=np.zeros(np.broadcast_shapes(num.shape, u.shape)), where=u > 0.0)
+        inv_u = np.divide(
+            num, u, out=np.zeros(np.broadcast_shapes(num.shape, u.shape)), where=u > 0.0
+        )
         drag_u2 = self.cd0 * u2 + self.cd_max * vz2
         lift2 = 2.0 * self.cl_max
         fx = inv_u * vx * (lift2 * vz2 - drag_u2)
@@ -126,7 +128,9 @@ def body_drag_x(speed: np.ndarray, pitch: np.ndarray, rho: float, area: float) -
     return -0.5 * rho * np.square(speed) * np.sin(pitch) * area
 
 
-def body_drag_magnitude(speed_total: np.ndarray | float, attack: np.ndarray | float, rho: float, area: float):
+def body_drag_magnitude(
+    speed_total: np.ndarray | float, attack: np.ndarray | float, rho: float, area: float
+):
     """``rho/2 Vt^2 |sin(attack)| area``: the body drag's magnitude for a body meeting
     the air at speed ``Vt`` and angle of attack ``attack = theta - gamma`` (the angle
     from the body's x axis to its velocity relative to the air, in the pitch plane)."""
@@ -155,7 +159,9 @@ def body_drag(
     Returns:
         ``(Dx, Dz)``, seed earth axes (Dz > 0 is down: a climbing body is pushed down).
     """
-    speed, climb, pitch = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (speed, climb, pitch)))
+    speed, climb, pitch = np.broadcast_arrays(
+        *(np.asarray(a, dtype=float) for a in (speed, climb, pitch))
+    )
     level = -0.5 * rho * np.square(speed) * np.sin(pitch) * area
     if not np.any(climb != 0.0):
         return level, np.zeros_like(level)

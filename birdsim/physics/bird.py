@@ -18,8 +18,8 @@ from dataclasses import asdict, dataclass, field, fields, replace
 from pathlib import Path
 from typing import Any
 
-from birdsim.physics.aero import Polar, SeedPolar, polar_from_dict
 from birdsim.errors import BirdConfigError
+from birdsim.physics.aero import Polar, SeedPolar, polar_from_dict
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -83,9 +83,17 @@ class Bird:
         for name in ("wrist_twist_ratio", "body_drag_area", "gravity"):
             v = getattr(self, name)
             if not (_is_number(v) and math.isfinite(v) and v >= 0):
-                raise BirdConfigError(f"bird.{name}={v!r} is invalid; allowed: a finite number >= 0")
-        if not (isinstance(self.strips, int) and not isinstance(self.strips, bool) and 1 <= self.strips <= 10_000):
-            raise BirdConfigError(f"bird.strips={self.strips!r} is invalid; allowed: an integer in [1, 10000]")
+                raise BirdConfigError(
+                    f"bird.{name}={v!r} is invalid; allowed: a finite number >= 0"
+                )
+        if not (
+            isinstance(self.strips, int)
+            and not isinstance(self.strips, bool)
+            and 1 <= self.strips <= 10_000
+        ):
+            raise BirdConfigError(
+                f"bird.strips={self.strips!r} is invalid; allowed: an integer in [1, 10000]"
+            )
         if not isinstance(self.polar, Polar):
             raise BirdConfigError(f"bird.polar={self.polar!r} is invalid; allowed: a Polar object")
 
@@ -118,7 +126,9 @@ class Bird:
         known = {f.name for f in fields(cls)}
         unknown = sorted(set(d) - known)
         if unknown:
-            raise BirdConfigError(f"bird key {unknown[0]!r} is unknown; allowed: {', '.join(sorted(known))}")
+            raise BirdConfigError(
+                f"bird key {unknown[0]!r} is unknown; allowed: {', '.join(sorted(known))}"
+            )
         if "polar" in d and isinstance(d["polar"], dict):
             d["polar"] = polar_from_dict(d["polar"])
         return cls(**d)
@@ -189,13 +199,17 @@ class Bird:
                 polar[sub] = raw if sub == "kind" else _parse_number(key, raw)
                 continue
             if key not in types or key == "polar":
-                raise BirdConfigError(f"overrides: {key}={raw} names no bird field; allowed: {', '.join(sorted(types))}")
+                raise BirdConfigError(
+                    f"overrides: {key}={raw} names no bird field; allowed: {', '.join(sorted(types))}"
+                )
             top[key] = _parse_value(key, raw, types[key])
         try:
             if polar != self.polar.to_dict():
                 top["polar"] = polar_from_dict(polar)
             return replace(self, **top)
-        except BirdConfigError as exc:  # "bird.strips=0 is invalid" -> "overrides: strips=0 is invalid"
+        except (
+            BirdConfigError
+        ) as exc:  # "bird.strips=0 is invalid" -> "overrides: strips=0 is invalid"
             raise BirdConfigError(f"overrides: {str(exc).removeprefix('bird.')}") from None
 
 

@@ -22,10 +22,10 @@ from functools import lru_cache
 
 import numpy as np
 
-from birdsim.physics.aero import body_drag, induced_velocity
-from birdsim.physics.cycle_result import Cycle, MeanForces, PanelMeans, _Histories, cycle_mean  # noqa: F401 (re-exported)
-from birdsim.physics.bird import Bird
 from birdsim.errors import BirdsimError
+from birdsim.physics.aero import body_drag, induced_velocity
+from birdsim.physics.bird import Bird
+from birdsim.physics.cycle_result import Cycle, MeanForces, PanelMeans, _Histories, cycle_mean  # noqa: F401 (re-exported)
 from birdsim.physics.frames import Vec3, _is_zero, body_to_earth, earth_to_body
 from birdsim.physics.kinematics import (
     Joint,
@@ -39,7 +39,6 @@ from birdsim.physics.kinematics import (
     strip_positions,
     validate_params,
 )
-
 
 #: Samples per wingbeat of :func:`evaluate_cycle` (and of the CLI's ``forces`` and a table
 #: build's final check): the smallest even n that puts the mean force within 1e-7 of the
@@ -171,12 +170,16 @@ def evaluate_cycle(
     m = model if isinstance(model, KinematicModel) else get_model(model)
     bird = Bird() if bird is None else bird
     if not isinstance(bird, Bird):
-        raise BirdsimError(f"bird={bird!r} is invalid; allowed: a birdsim.Bird (Bird.from_toml(path) reads a bird file) or None")
+        raise BirdsimError(
+            f"bird={bird!r} is invalid; allowed: a birdsim.Bird (Bird.from_toml(path) reads a bird file) or None"
+        )
     p = validate_params(m, params, check_bounds=check_bounds)
     try:
         v = np.asarray(speed, dtype=float)
     except (TypeError, ValueError):
-        raise BirdsimError(f"speed={speed!r} is not a number; allowed: a finite number >= 0") from None
+        raise BirdsimError(
+            f"speed={speed!r} is not a number; allowed: a finite number >= 0"
+        ) from None
     if not np.all(np.isfinite(v)) or np.any(v < 0):
         bad = float(v[~(np.isfinite(v) & (v >= 0))].flat[0]) if v.ndim else float(v)
         raise BirdsimError(f"speed={bad} is invalid; allowed: a finite number >= 0")
@@ -185,7 +188,9 @@ def evaluate_cycle(
         batch = np.broadcast_shapes(v.shape, vc.shape, *(a.shape for a in p.values()))
     except ValueError:
         shapes = ", ".join(f"{k} {a.shape}" for k, a in {"speed": v, "climb": vc, **p}.items())
-        raise BirdsimError(f"parameter shapes do not broadcast ({shapes}); allowed: arrays of one common shape") from None
+        raise BirdsimError(
+            f"parameter shapes do not broadcast ({shapes}); allowed: arrays of one common shape"
+        ) from None
     flat = {k: np.broadcast_to(a, batch).reshape(-1) for k, a in p.items()}
     v_flat = np.broadcast_to(v, batch).reshape(-1)
     climb_flat = np.broadcast_to(vc, batch).reshape(-1)
@@ -197,7 +202,9 @@ def evaluate_cycle(
 
     def histories() -> _Histories:
         air_earth = np.zeros(v_flat.shape + (3,))
-        hist = _histories(m, flat, v_flat, bird, phases, air_earth, climb_flat if climbing else None)
+        hist = _histories(
+            m, flat, v_flat, bird, phases, air_earth, climb_flat if climbing else None
+        )
         if bird.induced_velocity:
             # Actuator disc (appendix 1A): the disc pushes the air against the mean force of
             # both wings (seed earth axes); iterate the coupling to a fixed point (damped by
@@ -205,17 +212,24 @@ def evaluate_cycle(
             for _ in range(INDUCED_MAX_ITERATIONS):
                 f = 2.0 * hist.force_earth.sum(axis=1).mean(axis=-2)  # two wings, B x 3
                 f[:, 1] = 0.0
-                vi = induced_velocity(f, v_flat, bird.rho, bird.disc_area, climb=climb_flat if climbing else None)
+                vi = induced_velocity(
+                    f, v_flat, bird.rho, bird.disc_area, climb=climb_flat if climbing else None
+                )
                 norm = np.linalg.norm(f, axis=-1, keepdims=True)
                 f_hat = np.divide(f, norm, out=np.zeros_like(f), where=norm > 0)
                 target = -vi[:, None] * f_hat
                 if np.max(np.abs(target - air_earth), initial=0.0) < INDUCED_TOL:
                     break
                 air_earth = 0.5 * air_earth + 0.5 * target
-                hist = _histories(m, flat, v_flat, bird, phases, air_earth, climb_flat if climbing else None)
+                hist = _histories(
+                    m, flat, v_flat, bird, phases, air_earth, climb_flat if climbing else None
+                )
         return _Histories(
-            shaped(hist.force_earth), shaped(hist.power), {g: shaped(a) for g, a in hist.joint_power.items()},
-            shaped(hist.cp_position), shaped(hist.cp_velocity),
+            shaped(hist.force_earth),
+            shaped(hist.power),
+            {g: shaped(a) for g, a in hist.joint_power.items()},
+            shaped(hist.cp_position),
+            shaped(hist.cp_velocity),
         )
 
     if backend not in BACKENDS:
@@ -225,7 +239,9 @@ def evaluate_cycle(
         means = _kernel_means(m, flat, v_flat, climb_flat, climbing, bird, phases)
         if means is not None:
             means = PanelMeans(
-                shaped(means.force_earth), shaped(means.power), {g: shaped(a) for g, a in means.joint_power.items()}
+                shaped(means.force_earth),
+                shaped(means.power),
+                {g: shaped(a) for g, a in means.joint_power.items()},
             )
     dx, dz = body_drag(v_flat, climb_flat, flat["pitch"], bird.rho, bird.body_drag_area)
     cyc = Cycle(
@@ -289,7 +305,9 @@ def _check_climb(climb: object) -> np.ndarray:
     try:
         vc = np.asarray(climb, dtype=float)
     except (TypeError, ValueError):
-        raise BirdsimError(f"climb={climb!r} is not a number; allowed: a finite number (positive up)") from None
+        raise BirdsimError(
+            f"climb={climb!r} is not a number; allowed: a finite number (positive up)"
+        ) from None
     if not np.all(np.isfinite(vc)):
         bad = float(vc[~np.isfinite(vc)].flat[0]) if vc.ndim else float(vc)
         raise BirdsimError(f"climb={bad} is invalid; allowed: a finite number (positive up)")
@@ -320,13 +338,27 @@ def _histories(
     groups = sorted({el.group for chain, _, _ in panels for el in chain if isinstance(el, Joint)})
     b, k, n = speed.shape[0], len(panels), len(phases)
     out = _Histories(
-        np.empty((b, k, n, 3)), np.empty((b, k, n)), {g: np.zeros((b, n)) for g in groups},
-        np.empty((b, k, n, 3)), np.empty((b, k, n, 3)),
+        np.empty((b, k, n, 3)),
+        np.empty((b, k, n)),
+        {g: np.zeros((b, n)) for g in groups},
+        np.empty((b, k, n, 3)),
+        np.empty((b, k, n, 3)),
     )
     for lo in range(0, b, CHUNK):
         sl = slice(lo, min(lo + CHUNK, b))
         vc = None if climb is None else climb[sl]
-        _chunk({name: a[sl] for name, a in p.items()}, speed[sl], vc, air_earth[sl], m, panels, bird, phases, out, sl)
+        _chunk(
+            {name: a[sl] for name, a in p.items()},
+            speed[sl],
+            vc,
+            air_earth[sl],
+            m,
+            panels,
+            bird,
+            phases,
+            out,
+            sl,
+        )
     return out
 
 

@@ -25,7 +25,6 @@ class _Histories:
     cp_velocity: np.ndarray  # B x K x N x 3
 
 
-
 @dataclass(frozen=True)
 class MeanForces:
     """Cycle means (arrays of the batch shape).  Fx includes the body drag."""
@@ -164,7 +163,10 @@ class Cycle:
         wing_x = m.Fx - self.body_drag_x  # exactly today's arithmetic at climb = 0
         wing_z = self._wing_mean[0][..., 2]
         return MeanForces(
-            2.0 * wing_x + self.body_drag_x, np.zeros_like(m.Fy), 2.0 * wing_z + self.body_drag_z, 2.0 * m.P
+            2.0 * wing_x + self.body_drag_x,
+            np.zeros_like(m.Fy),
+            2.0 * wing_z + self.body_drag_z,
+            2.0 * m.P,
         )
 
 

@@ -31,10 +31,9 @@ import numpy as np
 
 from birdsim.physics.aero import RoboflyPolar, SeedPolar
 from birdsim.physics.bird import Bird
-from birdsim.physics.kinematics import Joint, KinematicModel, Offset, strip_positions
-
 from birdsim.physics.jit import jit as _jit
 from birdsim.physics.jit import numba
+from birdsim.physics.kinematics import Joint, KinematicModel, Offset, strip_positions
 
 _STATE = {"ok": numba is not None, "warned": False}
 
@@ -74,7 +73,9 @@ def _run(kernel, B: int, args: tuple) -> bool:
         if n == 1 or B <= CHUNK:
             kernel(0, B, *args)
             return True
-        pool = _POOL.get(n) or _POOL.setdefault(n, ThreadPoolExecutor(n, thread_name_prefix="birdsim-kernel"))
+        pool = _POOL.get(n) or _POOL.setdefault(
+            n, ThreadPoolExecutor(n, thread_name_prefix="birdsim-kernel")
+        )
         bounds = range(0, B, CHUNK)
         for f in [pool.submit(kernel, lo, min(lo + CHUNK, B), *args) for lo in bounds]:
             f.result()
@@ -83,6 +84,7 @@ def _run(kernel, B: int, args: tuple) -> bool:
         first = str(exc).splitlines()[0] if str(exc) else ""
         _disable(f"{type(exc).__name__}: {first}")
         return False
+
 
 # chain element codes
 _OFFSET, _HINGE, _SLIDE = 0, 1, 2
@@ -150,10 +152,14 @@ def setup(m: KinematicModel, bird: Bird) -> Setup:
     else:
         polar, coeffs = _ROBOFLY, np.zeros(3)
     groups = tuple(g for g in _GROUPS if g in present)
-    return Setup(kind, joint, axis, group, span, length, radius, area, strips, polar, coeffs, groups, names)
+    return Setup(
+        kind, joint, axis, group, span, length, radius, area, strips, polar, coeffs, groups, names
+    )
 
 
-def joint_coefficients(m: KinematicModel, flat: dict[str, np.ndarray], bird: Bird) -> tuple[np.ndarray, ...]:
+def joint_coefficients(
+    m: KinematicModel, flat: dict[str, np.ndarray], bird: Bird
+) -> tuple[np.ndarray, ...]:
     """Per parameter set (B) and joint (J): amplitude, phase, bias of the joint's sinusoid
     (exactly the values the numpy path uses) and whether the joint is constant."""
     names = tuple(j.name for j in m.joints)
@@ -197,7 +203,11 @@ def _disable(reason: str) -> None:
     _STATE["ok"] = False
     if not _STATE["warned"]:
         _STATE["warned"] = True
-        warnings.warn(f"birdsim: the fused kernel is unavailable ({reason}); using the numpy path", RuntimeWarning, stacklevel=3)
+        warnings.warn(
+            f"birdsim: the fused kernel is unavailable ({reason}); using the numpy path",
+            RuntimeWarning,
+            stacklevel=3,
+        )
 
 
 def means(
@@ -224,10 +234,32 @@ def means(
     B, K = len(speed), len(st.length)
     F, P, JP = np.zeros((B, K, 3)), np.zeros((B, K)), np.zeros((B, 2))
     args = (
-        c(flat["pitch"], dtype=float), c(speed, dtype=float), c(climb, dtype=float), c(air_earth, dtype=float),
-        amp, phase, bias, const, c(phases, dtype=float), _half(phases), float(bird.omega), float(bird.rho),
-        st.kind, st.joint, st.axis, st.group, st.span, st.length, st.radius, st.area, st.strips, st.polar, st.coeffs,
-        F, P, JP,
+        c(flat["pitch"], dtype=float),
+        c(speed, dtype=float),
+        c(climb, dtype=float),
+        c(air_earth, dtype=float),
+        amp,
+        phase,
+        bias,
+        const,
+        c(phases, dtype=float),
+        _half(phases),
+        float(bird.omega),
+        float(bird.rho),
+        st.kind,
+        st.joint,
+        st.axis,
+        st.group,
+        st.span,
+        st.length,
+        st.radius,
+        st.area,
+        st.strips,
+        st.polar,
+        st.coeffs,
+        F,
+        P,
+        JP,
     )
     if not _run(_means_kernel, B, args):
         return None
@@ -261,9 +293,31 @@ def means_and_gradients(
     B, d = len(speed), len(m.param_names)
     out = np.zeros((B, 4, d + 1))
     args = (
-        c(flat["pitch"], dtype=float), c(speed, dtype=float), c(climb, dtype=float),
-        amp, phase, bias, const, damp, dphase, dbias, ip, c(phases, dtype=float), float(bird.omega), float(bird.rho),
-        st.kind, st.joint, st.axis, st.group, st.span, st.length, st.radius, st.area, st.strips, st.polar, st.coeffs,
+        c(flat["pitch"], dtype=float),
+        c(speed, dtype=float),
+        c(climb, dtype=float),
+        amp,
+        phase,
+        bias,
+        const,
+        damp,
+        dphase,
+        dbias,
+        ip,
+        c(phases, dtype=float),
+        float(bird.omega),
+        float(bird.rho),
+        st.kind,
+        st.joint,
+        st.axis,
+        st.group,
+        st.span,
+        st.length,
+        st.radius,
+        st.area,
+        st.strips,
+        st.polar,
+        st.coeffs,
         out,
     )
     if not _run(_grad_kernel, B, args):
@@ -274,6 +328,7 @@ def means_and_gradients(
 # ---- compiled code --------------------------------------------------------------------
 # Conventions as in frames.rotate: the passive Table 2 rotation about `axis` with (c, s);
 # the way back passes -s.  Values only here; the dual-number version follows.
+
 
 @_jit
 def _polar_force(polar, coeffs, vx, vz, area, rho):
@@ -310,8 +365,34 @@ def _rot(axis, c, s, x, y, z):
 
 @_jit
 def _means_kernel(
-    lo, hi, pitch, speed, climb, air_earth, amp, phase, bias, const, phases, half, omega, rho,
-    kind, joint, axis, group, span, length, radius, area, strips, polar, coeffs, F, P, JP,
+    lo,
+    hi,
+    pitch,
+    speed,
+    climb,
+    air_earth,
+    amp,
+    phase,
+    bias,
+    const,
+    phases,
+    half,
+    omega,
+    rho,
+    kind,
+    joint,
+    axis,
+    group,
+    span,
+    length,
+    radius,
+    area,
+    strips,
+    polar,
+    coeffs,
+    F,
+    P,
+    JP,
 ):
     J, N, K = amp.shape[1], phases.shape[0], kind.shape[0]
     ct, stt = np.cos(phases), np.sin(phases)

@@ -17,7 +17,6 @@ import numpy as np
 
 from birdsim.physics.jit import jit as _jit
 
-
 # ---- forward-mode dual numbers: value in [0], d/d(param i) in [1 + i] ----------------
 
 
@@ -96,8 +95,34 @@ def _dpolar(polar, coeffs, vx, vz, area, rho, gx, gz):
 
 @_jit
 def _grad_kernel(
-    lo, hi, pitch, speed, climb, amp, phase, bias, const, damp, dphase, dbias, ip, phases, omega, rho,
-    kind, joint, axis, group, span, length, radius, area, strips, polar, coeffs, out,
+    lo,
+    hi,
+    pitch,
+    speed,
+    climb,
+    amp,
+    phase,
+    bias,
+    const,
+    damp,
+    dphase,
+    dbias,
+    ip,
+    phases,
+    omega,
+    rho,
+    kind,
+    joint,
+    axis,
+    group,
+    span,
+    length,
+    radius,
+    area,
+    strips,
+    polar,
+    coeffs,
+    out,
 ):
     J, N, K = amp.shape[1], phases.shape[0], kind.shape[0]
     D = damp.shape[1] + 1

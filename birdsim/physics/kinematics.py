@@ -32,8 +32,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from birdsim.physics.bird import Bird
 from birdsim.errors import ParameterError, UnknownModelError
+from birdsim.physics.bird import Bird
 from birdsim.physics.frames import Axis, Vec3, _is_zero, cross_axis, rotate
 
 PI = math.pi
@@ -87,7 +87,9 @@ class Sinusoid:
             return q, 0.0, 0.0
         return q, qd, -omega * omega * (q - self.bias)
 
-    def angle_rate(self, omega_t: np.ndarray, omega: float) -> tuple[np.ndarray, np.ndarray | float]:
+    def angle_rate(
+        self, omega_t: np.ndarray, omega: float
+    ) -> tuple[np.ndarray, np.ndarray | float]:
         """Angle and rate at phase ``omega_t`` (the hot path: no acceleration, no zero bias)."""
         if isinstance(self.amp, float) and self.amp == 0.0:  # a constant joint: no time axis
             return np.asarray(self.bias, dtype=float), 0.0
@@ -115,9 +117,33 @@ _PARAMS: dict[str, ParamSpec] = {
     for p in (
         ParamSpec("pitch", "theta", 0.0, PI / 2, 1.4, 0.1, "body pitch, nose up"),
         ParamSpec("flap_amp", "Phi_f", 0.0, PI / 2, PI / 2, 0.7, "shoulder flap amplitude"),
-        ParamSpec("twist_amp", "Theta_f", 0.0, PI / 4, PI / 4, 0.2, "twist amplitude, leading edge down on the downstroke"),
-        ParamSpec("sweep", "gamma_f", -PI / 4, PI / 4, 0.0, 0.0, "constant sweep about body z; positive sweeps the right wing tip back"),
-        ParamSpec("stroke_plane", "theta_sp", 0.0, 0.35, 0.35, 0.2, "stroke-plane inclination about body y"),
+        ParamSpec(
+            "twist_amp",
+            "Theta_f",
+            0.0,
+            PI / 4,
+            PI / 4,
+            0.2,
+            "twist amplitude, leading edge down on the downstroke",
+        ),
+        ParamSpec(
+            "sweep",
+            "gamma_f",
+            -PI / 4,
+            PI / 4,
+            0.0,
+            0.0,
+            "constant sweep about body z; positive sweeps the right wing tip back",
+        ),
+        ParamSpec(
+            "stroke_plane",
+            "theta_sp",
+            0.0,
+            0.35,
+            0.35,
+            0.2,
+            "stroke-plane inclination about body y",
+        ),
         ParamSpec("wrist_amp", "Phi_w", 0.0, PI / 4, 0.05, 0.3, "wrist flap amplitude"),
         ParamSpec("wrist_bias", "Psi", 0.0, PI / 4, 0.05, 0.3, "wrist flap bias (hand tip down)"),
         ParamSpec("wrist_lag", "Delta", 0.0, PI / 2, PI / 2, PI / 2, "wrist flap phase lag"),
@@ -156,7 +182,9 @@ class KinematicModel:
         for p in self.params:
             if p.name == name:
                 return p
-        raise ParameterError(f"parameter {name!r} is unknown for model {self.name}; allowed: {', '.join(self.param_names)}")
+        raise ParameterError(
+            f"parameter {name!r} is unknown for model {self.name}; allowed: {', '.join(self.param_names)}"
+        )
 
     def guess(self, regime: str = "hover") -> dict[str, float]:
         """A physically sensible starting point: ``hover`` (large amplitudes, steep pitch)
@@ -167,7 +195,9 @@ class KinematicModel:
         attr = attrs[regime]
         return {p.name: min(max(getattr(p, attr), p.lower), p.upper) for p in self.params}
 
-    def chain_with_geometry(self, bird: Bird) -> tuple[tuple[tuple[ChainElement, ...], float, float], ...]:
+    def chain_with_geometry(
+        self, bird: Bird
+    ) -> tuple[tuple[tuple[ChainElement, ...], float, float], ...]:
         """Per panel: (chain with the wrist offset set from the bird, panel span, chord)."""
         out = []
         for chain, panel in zip(self.chains, bird.panels(self.name)):
@@ -192,8 +222,12 @@ class KinematicModel:
         if "stroke_plane" in params:
             motion["stroke"] = Sinusoid(zero, 0.0, params["stroke_plane"])
         if self.name == "m4":
-            motion["wrist_flap"] = Sinusoid(params["wrist_amp"], -params["wrist_lag"], params["wrist_bias"])
-            motion["wrist_twist"] = Sinusoid(bird.wrist_twist_ratio * params["twist_amp"], -PI / 2, zero)
+            motion["wrist_flap"] = Sinusoid(
+                params["wrist_amp"], -params["wrist_lag"], params["wrist_bias"]
+            )
+            motion["wrist_twist"] = Sinusoid(
+                bird.wrist_twist_ratio * params["twist_amp"], -PI / 2, zero
+            )
         return motion
 
 
@@ -233,10 +267,25 @@ MODELS: dict[str, KinematicModel] = {
         KinematicModel(
             "m4",
             tuple(
-                ParamSpec(**{**_PARAMS["flap_amp"].__dict__, "upper": PI / 4, "hover_guess": PI / 4, "cruise_guess": 0.5})
+                ParamSpec(
+                    **{
+                        **_PARAMS["flap_amp"].__dict__,
+                        "upper": PI / 4,
+                        "hover_guess": PI / 4,
+                        "cruise_guess": 0.5,
+                    }
+                )
                 if n == "flap_amp"
                 else _PARAMS[n]
-                for n in ("pitch", "flap_amp", "twist_amp", "stroke_plane", "wrist_amp", "wrist_bias", "wrist_lag")
+                for n in (
+                    "pitch",
+                    "flap_amp",
+                    "twist_amp",
+                    "stroke_plane",
+                    "wrist_amp",
+                    "wrist_bias",
+                    "wrist_lag",
+                )
             ),
             (_chain(*_SHOULDER_SP), _chain(*_SHOULDER_SP, "|", "wrist_flap", "wrist_twist")),
             "7 DOF: m3 arm plus a hand panel on a wrist (flap with lag and bias, twist 0.25 x shoulder)",
@@ -250,7 +299,9 @@ def get_model(name: str) -> KinematicModel:
     try:
         return MODELS[name]
     except (KeyError, TypeError):
-        raise UnknownModelError(f"model {name!r} is unknown; allowed: {', '.join(MODELS)}") from None
+        raise UnknownModelError(
+            f"model {name!r} is unknown; allowed: {', '.join(MODELS)}"
+        ) from None
 
 
 def validate_params(
@@ -258,7 +309,9 @@ def validate_params(
 ) -> dict[str, np.ndarray]:
     """Arrays of every parameter of ``model``; one clear error for anything wrong."""
     if not isinstance(params, Mapping):
-        raise ParameterError(f"params={params!r} is not a mapping; allowed: {{name: value}} for {', '.join(model.param_names)}")
+        raise ParameterError(
+            f"params={params!r} is not a mapping; allowed: {{name: value}} for {', '.join(model.param_names)}"
+        )
     unknown = [k for k in params if k not in model.param_names]
     if unknown:
         raise ParameterError(
@@ -273,9 +326,13 @@ def validate_params(
         try:
             v = np.asarray(params[spec.name], dtype=float)
         except (TypeError, ValueError):
-            raise ParameterError(f"parameter {spec.name}={params[spec.name]!r} is not a number") from None
+            raise ParameterError(
+                f"parameter {spec.name}={params[spec.name]!r} is not a number"
+            ) from None
         if not np.all(np.isfinite(v)):
-            raise ParameterError(f"parameter {spec.name}={_first_bad(v)} is not finite; allowed: [{spec.lower:.6g}, {spec.upper:.6g}]")
+            raise ParameterError(
+                f"parameter {spec.name}={_first_bad(v)} is not finite; allowed: [{spec.lower:.6g}, {spec.upper:.6g}]"
+            )
         if check_bounds:
             tol = 1e-9
             bad = (v < spec.lower - tol) | (v > spec.upper + tol)
@@ -306,7 +363,11 @@ class JointState:
 
 
 def joint_states(
-    model: KinematicModel, params: Mapping[str, np.ndarray], bird: Bird, omega_t: np.ndarray, trailing: int = 1
+    model: KinematicModel,
+    params: Mapping[str, np.ndarray],
+    bird: Bird,
+    omega_t: np.ndarray,
+    trailing: int = 1,
 ) -> dict[str, JointState]:
     """Evaluate every joint at phases ``omega_t`` (N,).  Parameter arrays of shape B get
     shape (*B, N, 1...) with ``trailing`` extra unit axes (strips)."""
@@ -355,7 +416,9 @@ def _add(a: np.ndarray | float, b: np.ndarray | float) -> np.ndarray | float:
     return b if _is_zero(a) else a if _is_zero(b) else a + b
 
 
-def body_to_panel(chain: tuple[ChainElement, ...], states: Mapping[str, JointState], v: Vec3) -> Vec3:
+def body_to_panel(
+    chain: tuple[ChainElement, ...], states: Mapping[str, JointState], v: Vec3
+) -> Vec3:
     """Rotate a body-axes vector into the panel frame (Table 2 matrices in chain order)."""
     for el in chain:
         if isinstance(el, Joint) and el.kind == "hinge":
@@ -364,7 +427,9 @@ def body_to_panel(chain: tuple[ChainElement, ...], states: Mapping[str, JointSta
     return v
 
 
-def panel_to_body(chain: tuple[ChainElement, ...], states: Mapping[str, JointState], v: Vec3) -> Vec3:
+def panel_to_body(
+    chain: tuple[ChainElement, ...], states: Mapping[str, JointState], v: Vec3
+) -> Vec3:
     """The way back: panel frame -> body axes (transposes in reverse order)."""
     for el in reversed(chain):
         if isinstance(el, Joint) and el.kind == "hinge":

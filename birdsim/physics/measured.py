@@ -31,7 +31,13 @@ def _positive(arg: str, value: float, unit: str) -> float:
 
 
 def bird_from_measurements(
-    name: str, *, mass: float, span: float, mean_chord: float, frequency: float, body_drag_area: float | None = None
+    name: str,
+    *,
+    mass: float,
+    span: float,
+    mean_chord: float,
+    frequency: float,
+    body_drag_area: float | None = None,
 ) -> Bird:
     """An SI bird from its measurements.
 
@@ -56,12 +62,20 @@ def bird_from_measurements(
     chord = _positive("--mean-chord", mean_chord, "m")
     frequency = _positive("--frequency", frequency, "Hz")
     if chord > span:
-        raise BirdConfigError(f"--mean-chord {chord:g} is longer than --span {span:g}; allowed: a mean chord shorter than the span (m)")
+        raise BirdConfigError(
+            f"--mean-chord {chord:g} is longer than --span {span:g}; allowed: a mean chord shorter than the span (m)"
+        )
     s = span / 2.0
     if body_drag_area is None:
         body_drag_area = s * chord
-    elif not (isinstance(body_drag_area, (int, float)) and math.isfinite(body_drag_area) and body_drag_area >= 0):
-        raise BirdConfigError(f"--body-drag-area {body_drag_area!r} is invalid; allowed: a number >= 0 (m^2)")
+    elif not (
+        isinstance(body_drag_area, (int, float))
+        and math.isfinite(body_drag_area)
+        and body_drag_area >= 0
+    ):
+        raise BirdConfigError(
+            f"--body-drag-area {body_drag_area!r} is invalid; allowed: a number >= 0 (m^2)"
+        )
     return Bird(
         name=name,
         semispan=s,

@@ -105,4 +105,11 @@ def same_reduced_bird(a: Bird, b: Bird, *, rel_tol: float = 1e-9) -> bool:
     return True
 
 
-__all__ = ["Scales", "mass_ratio", "reduced_bird", "same_reduced_bird", "scales", "weight_in_table_units"]
+__all__ = [
+    "Scales",
+    "mass_ratio",
+    "reduced_bird",
+    "same_reduced_bird",
+    "scales",
+    "weight_in_table_units",
+]

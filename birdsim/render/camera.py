@@ -65,7 +65,9 @@ def smooth_critically_damped(x: np.ndarray, t: np.ndarray, tau: float) -> np.nda
     y = np.concatenate([head, x, tail])
     a = math.exp(-dt / tau)
 
-    def lag(z: np.ndarray) -> np.ndarray:  # y[i] = a y[i-1] + (1 - a) z[i], starting at rest on z[0]
+    def lag(
+        z: np.ndarray,
+    ) -> np.ndarray:  # y[i] = a y[i-1] + (1 - a) z[i], starting at rest on z[0]
         return lfilter([1.0 - a], [1.0, -a], z, axis=0, zi=(a * z[:1]))[0]
 
     y = lag(lag(y))
@@ -111,7 +113,16 @@ class CameraPose:
 OVERVIEW_TEXT_BAND = 0.3
 
 
-def camera_path(name: str, position: np.ndarray, heading: np.ndarray, t_beats: np.ndarray, span: float, fovy_deg: float, aspect: float, extra_points: np.ndarray | None = None) -> list[CameraPose]:
+def camera_path(
+    name: str,
+    position: np.ndarray,
+    heading: np.ndarray,
+    t_beats: np.ndarray,
+    span: float,
+    fovy_deg: float,
+    aspect: float,
+    extra_points: np.ndarray | None = None,
+) -> list[CameraPose]:
     """One :class:`CameraPose` per instant for camera ``name``.
 
     Args:
@@ -138,8 +149,12 @@ def camera_path(name: str, position: np.ndarray, heading: np.ndarray, t_beats: n
         half_y_fov = math.radians(fovy_deg) / 2
         half_x_fov = math.atan(aspect * math.tan(half_y_fov))
         # seen from the side (-y) and a little above: both extents inside the frame
-        dist = max(half_x / math.tan(half_x_fov), half_z / math.tan(half_y_fov)) * 1.15 + 0.5 * (hi[1] - lo[1])
-        pose = CameraPose.from_offset(centre, np.array([0.0, -1.0, 0.25]) / math.hypot(1.0, 0.25) * dist)
+        dist = max(half_x / math.tan(half_x_fov), half_z / math.tan(half_y_fov)) * 1.15 + 0.5 * (
+            hi[1] - lo[1]
+        )
+        pose = CameraPose.from_offset(
+            centre, np.array([0.0, -1.0, 0.25]) / math.hypot(1.0, 0.25) * dist
+        )
         return [pose] * n
     p = smooth_critically_damped(position, t_beats, TAU_BEATS)
     dist = fit_distance(span, fovy_deg, aspect, SPAN_FRACTION)
@@ -154,7 +169,11 @@ def camera_path(name: str, position: np.ndarray, heading: np.ndarray, t_beats: n
         h = smooth_critically_damped(heading * np.array([1.0, 1.0, 0.0]), t_beats, TAU_BEATS)
         out = []
         for k in range(n):
-            fwd = h[k] / max(np.linalg.norm(h[k]), 1e-12) if np.linalg.norm(h[k]) > 1e-6 else np.array([1.0, 0.0, 0.0])
+            fwd = (
+                h[k] / max(np.linalg.norm(h[k]), 1e-12)
+                if np.linalg.norm(h[k]) > 1e-6
+                else np.array([1.0, 0.0, 0.0])
+            )
             off = -fwd + np.array([0.0, 0.0, 0.3])
             out.append(CameraPose.from_offset(p[k], off / np.linalg.norm(off) * dist * 1.1))
         return out
@@ -182,4 +201,12 @@ def project(points: np.ndarray, pose: CameraPose, fovy_deg: float, aspect: float
     return out
 
 
-__all__ = ["CameraPose", "SPAN_FRACTION", "TAU_BEATS", "camera_path", "fit_distance", "project", "smooth_critically_damped"]
+__all__ = [
+    "CameraPose",
+    "SPAN_FRACTION",
+    "TAU_BEATS",
+    "camera_path",
+    "fit_distance",
+    "project",
+    "smooth_critically_damped",
+]

@@ -14,7 +14,9 @@ from birdsim.render.options import RenderError
 
 
 @contextmanager
-def mp4_writer(path: Path, width: int, height: int, fps: int, *, crf: int = 23, preset: str = "veryfast") -> Iterator[Any]:
+def mp4_writer(
+    path: Path, width: int, height: int, fps: int, *, crf: int = 23, preset: str = "veryfast"
+) -> Iterator[Any]:
     """A generator taking RGB frames (H, W, 3 uint8); the MP4 appears at ``path`` only
     when the block ends without an exception (temporary sibling + os.replace).
 
@@ -26,7 +28,9 @@ def mp4_writer(path: Path, width: int, height: int, fps: int, *, crf: int = 23, 
     try:
         tmp = temporary_sibling(path)
     except OSError as exc:
-        raise RenderError(f"--out {str(path)!r} is not writable: {exc.strerror}; allowed: a path in a writable folder") from None
+        raise RenderError(
+            f"--out {str(path)!r} is not writable: {exc.strerror}; allowed: a path in a writable folder"
+        ) from None
     writer = imageio_ffmpeg.write_frames(
         str(tmp),
         (width, height),
@@ -68,7 +72,14 @@ def video_info(path: str | Path) -> dict[str, Any]:
     meta = next(gen)
     gen.close()
     frames, secs = imageio_ffmpeg.count_frames_and_secs(str(path))
-    return {"codec": meta.get("codec"), "pix_fmt": meta.get("pix_fmt"), "size": tuple(meta.get("size", ())), "fps": meta.get("fps"), "frames": frames, "seconds": secs}
+    return {
+        "codec": meta.get("codec"),
+        "pix_fmt": meta.get("pix_fmt"),
+        "size": tuple(meta.get("size", ())),
+        "fps": meta.get("fps"),
+        "frames": frames,
+        "seconds": secs,
+    }
 
 
 __all__ = ["mp4_writer", "video_info"]

@@ -30,7 +30,15 @@ DRAG_RGBA = (0.70, 0.20, 0.85, 1.0)
 C = np.array([1.0, -1.0, -1.0])  # MuJoCo world <-> seed earth axes (a reflection: its own inverse)
 
 
-def site_forces(mj: Any, m: Any, d: Any, sites: Sequence[Any], site_ids: Sequence[int], torso_site: int, bird: Bird) -> tuple[np.ndarray, np.ndarray]:
+def site_forces(
+    mj: Any,
+    m: Any,
+    d: Any,
+    sites: Sequence[Any],
+    site_ids: Sequence[int],
+    torso_site: int,
+    bird: Bird,
+) -> tuple[np.ndarray, np.ndarray]:
     """World forces (P, 3) of every CP site (strip forces summed; their moments about
     the site are not returned) and the body drag (3,) on the torso, for the posed
     ``d`` (``mj_kinematics`` + ``mj_comPos`` done; this calls ``mj_comVel``).
@@ -59,7 +67,9 @@ def site_forces(mj: Any, m: Any, d: Any, sites: Sequence[Any], site_ids: Sequenc
         v = lin[None, :] + np.cross(ang[None, :], r)
         local = v @ xmat  # xmat^T v per element
         fx, fz = bird.polar.force_panel(local[:, 0], -local[:, 2], areas, bird.rho)
-        out[k] = (np.asarray(fx)[:, None] * xmat[:, 0] - np.asarray(fz)[:, None] * xmat[:, 2]).sum(axis=0)
+        out[k] = (np.asarray(fx)[:, None] * xmat[:, 0] - np.asarray(fz)[:, None] * xmat[:, 2]).sum(
+            axis=0
+        )
     mj.mj_objectVelocity(m, d, mj.mjtObj.mjOBJ_SITE, int(torso_site), vel, 0)
     u = vel[3:] - wind
     speed = float(np.linalg.norm(u))
@@ -71,7 +81,9 @@ def site_forces(mj: Any, m: Any, d: Any, sites: Sequence[Any], site_ids: Sequenc
     return out, drag
 
 
-def dissertation_force(forces_world: np.ndarray, drag_world: np.ndarray, sides: Sequence[str], bird: Bird) -> np.ndarray:
+def dissertation_force(
+    forces_world: np.ndarray, drag_world: np.ndarray, sides: Sequence[str], bird: Bird
+) -> np.ndarray:
     """The dissertation's force: right-wing CP forces + body drag, seed earth axes
     (x forward, y right, z down), in table force units (rho omega^2 s^3 c).
 
@@ -102,9 +114,16 @@ def wingbeat_mean(x: np.ndarray, t_beats: np.ndarray) -> np.ndarray:
     flat = x.reshape(n, -1)
     if n < 2 * half + 1:  # shorter than a wingbeat: the mean of all
         return np.broadcast_to(flat.mean(axis=0), flat.shape).reshape(x.shape).copy()
-    full = np.stack([np.convolve(flat[:, j], weights, mode="valid") for j in range(flat.shape[1])], axis=1) / weights.sum()
+    full = (
+        np.stack(
+            [np.convolve(flat[:, j], weights, mode="valid") for j in range(flat.shape[1])], axis=1
+        )
+        / weights.sum()
+    )
     # near the clip's ends: the nearest whole wingbeat (a partial one would show the wingbeat's ripple)
-    out = np.concatenate([np.repeat(full[:1], half, axis=0), full, np.repeat(full[-1:], half, axis=0)])
+    out = np.concatenate(
+        [np.repeat(full[:1], half, axis=0), full, np.repeat(full[-1:], half, axis=0)]
+    )
     return out.reshape(x.shape)
 
 
@@ -113,4 +132,12 @@ def weight(bird: Bird) -> float:
     return float(bird.mass * bird.gravity)
 
 
-__all__ = ["ARM_RGBA", "DRAG_RGBA", "HAND_RGBA", "dissertation_force", "site_forces", "weight", "wingbeat_mean"]
+__all__ = [
+    "ARM_RGBA",
+    "DRAG_RGBA",
+    "HAND_RGBA",
+    "dissertation_force",
+    "site_forces",
+    "weight",
+    "wingbeat_mean",
+]

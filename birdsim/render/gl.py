@@ -41,7 +41,13 @@ class GLError(BirdsimError):
 def library_available(backend: str) -> bool:
     """Whether the system library of ``backend`` ("osmesa" or "egl") can be loaded."""
     short, soname, _ = _LIBRARIES[backend]
-    candidates = [ctypes.util.find_library(short), f"{soname}.8", f"{soname}.1", f"{soname}.6", soname]
+    candidates = [
+        ctypes.util.find_library(short),
+        f"{soname}.8",
+        f"{soname}.1",
+        f"{soname}.6",
+        soname,
+    ]
     for name in candidates:
         if not name:
             continue
@@ -134,7 +140,9 @@ def _retarget_loaded_mujoco(backend: str) -> None:
         else:
             from mujoco.osmesa import GLContext  # type: ignore[no-redef]
     except (ImportError, AttributeError, OSError) as exc:
-        raise GLError(f"--gl {backend}: MuJoCo's {backend} context cannot be loaded: {exc}") from None
+        raise GLError(
+            f"--gl {backend}: MuJoCo's {backend} context cannot be loaded: {exc}"
+        ) from None
     ctx = _context_module()
     if ctx is None:
         raise GLError(f"--gl {backend}: this MuJoCo has no offscreen GL context module")
@@ -148,4 +156,12 @@ def _retarget_loaded_mujoco(backend: str) -> None:
         pass
 
 
-__all__ = ["GLError", "GL_CHOICES", "active_gl", "library_available", "missing_message", "resolve_gl", "select_gl"]
+__all__ = [
+    "GLError",
+    "GL_CHOICES",
+    "active_gl",
+    "library_available",
+    "missing_message",
+    "resolve_gl",
+    "select_gl",
+]

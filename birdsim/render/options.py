@@ -78,19 +78,38 @@ class RenderOptions:
         for name in ("width", "height"):
             v = getattr(self, name)
             if not isinstance(v, int) or isinstance(v, bool) or v < 16 or v > MAX_SIDE or v % 16:
-                raise RenderError(f"--size {name}={v!r} is invalid; allowed: a multiple of 16 in [16, {MAX_SIDE}] (H.264/yuv420p)")
+                raise RenderError(
+                    f"--size {name}={v!r} is invalid; allowed: a multiple of 16 in [16, {MAX_SIDE}] (H.264/yuv420p)"
+                )
         if not isinstance(self.fps, int) or isinstance(self.fps, bool) or not 1 <= self.fps <= 240:
             raise RenderError(f"--fps {self.fps!r} is invalid; allowed: an integer in [1, 240]")
-        if self.seconds is not None and not (isinstance(self.seconds, (int, float)) and math.isfinite(self.seconds) and 0 < self.seconds <= MAX_SECONDS):
-            raise RenderError(f"--seconds {self.seconds!r} is invalid; allowed: a number in (0, {MAX_SECONDS:g}]")
+        if self.seconds is not None and not (
+            isinstance(self.seconds, (int, float))
+            and math.isfinite(self.seconds)
+            and 0 < self.seconds <= MAX_SECONDS
+        ):
+            raise RenderError(
+                f"--seconds {self.seconds!r} is invalid; allowed: a number in (0, {MAX_SECONDS:g}]"
+            )
         if not (math.isfinite(self.beats_per_second) and 0 < self.beats_per_second <= 100):
-            raise RenderError(f"--beat-rate {self.beats_per_second!r} is invalid; allowed: wingbeats per second in (0, 100]")
+            raise RenderError(
+                f"--beat-rate {self.beats_per_second!r} is invalid; allowed: wingbeats per second in (0, 100]"
+            )
         if self.camera not in CAMERAS:
             raise RenderError(f"--camera {self.camera!r} is unknown; allowed: {', '.join(CAMERAS)}")
         if self.quality not in QUALITIES:
-            raise RenderError(f"--quality {self.quality!r} is unknown; allowed: {', '.join(QUALITIES)}")
-        if self.forces is not None and not (isinstance(self.forces, (int, float)) and not isinstance(self.forces, bool) and math.isfinite(self.forces) and 0 < self.forces <= 1e6):
-            raise RenderError(f"--forces {self.forces!r} is invalid; allowed: a positive number (arrow length of one weight, in semispans)")
+            raise RenderError(
+                f"--quality {self.quality!r} is unknown; allowed: {', '.join(QUALITIES)}"
+            )
+        if self.forces is not None and not (
+            isinstance(self.forces, (int, float))
+            and not isinstance(self.forces, bool)
+            and math.isfinite(self.forces)
+            and 0 < self.forces <= 1e6
+        ):
+            raise RenderError(
+                f"--forces {self.forces!r} is invalid; allowed: a positive number (arrow length of one weight, in semispans)"
+            )
         if not (0 <= self.crf <= 51):
             raise RenderError(f"crf={self.crf!r} is invalid; allowed: 0..51")
 
@@ -116,11 +135,15 @@ def parse_size(text: str) -> tuple[int, int]:
     """``"640x480"`` -> (640, 480); one clear line for anything else."""
     m = re.fullmatch(r"\s*(\d+)\s*[xX]\s*(\d+)\s*", str(text))
     if not m:
-        raise RenderError(f"--size {text!r} is malformed; allowed: WIDTHxHEIGHT, e.g. 640x480 (multiples of 16)")
+        raise RenderError(
+            f"--size {text!r} is malformed; allowed: WIDTHxHEIGHT, e.g. 640x480 (multiples of 16)"
+        )
     w, h = int(m.group(1)), int(m.group(2))
     for v in (w, h):
         if v < 16 or v > MAX_SIDE or v % 16:
-            raise RenderError(f"--size {text!r} is invalid; allowed: sides that are multiples of 16 in [16, {MAX_SIDE}], e.g. 640x480, 1280x720")
+            raise RenderError(
+                f"--size {text!r} is invalid; allowed: sides that are multiples of 16 in [16, {MAX_SIDE}], e.g. 640x480, 1280x720"
+            )
     return w, h
 
 
@@ -142,4 +165,15 @@ class RenderResult:
         return self.video_seconds / self.wall_seconds if self.wall_seconds > 0 else float("inf")
 
 
-__all__ = ["CAMERAS", "CAMERA_HELP", "MAX_SECONDS", "MAX_SIDE", "QUALITIES", "Quality", "RenderError", "RenderOptions", "RenderResult", "parse_size"]
+__all__ = [
+    "CAMERAS",
+    "CAMERA_HELP",
+    "MAX_SECONDS",
+    "MAX_SIDE",
+    "QUALITIES",
+    "Quality",
+    "RenderError",
+    "RenderOptions",
+    "RenderResult",
+    "parse_size",
+]

@@ -29,39 +29,75 @@ def fill_sky(img: np.ndarray) -> None:
 
 
 #: Short names of the wingbeat parameters in the overlay.
-SHORT = {"flap_amp": "flap", "twist_amp": "twist", "stroke_plane": "stroke", "sweep": "sweep", "wrist_amp": "wrist",
-         "wrist_bias": "bias", "wrist_lag": "lag", "heave_amp": "heave"}
+SHORT = {
+    "flap_amp": "flap",
+    "twist_amp": "twist",
+    "stroke_plane": "stroke",
+    "sweep": "sweep",
+    "wrist_amp": "wrist",
+    "wrist_bias": "bias",
+    "wrist_lag": "lag",
+    "heave_amp": "heave",
+}
 
 
 def overlay_lines(pb: Playback, i: int) -> list[OverlayLine]:
     """Text of the overlay for playback instant ``i``: manoeuvre, regime, time, speed and
     what was clipped; the wingbeat parameters (the forces are added by the scene)."""
     used = {k: float(v[i]) for k, v in pb.demand_used.items()}
-    title: list = [(f"{pb.manoeuvre.name}: {pb.regime[i]}   t {pb.t_beats[i]:5.2f} beats   V {used['V']:.2f}   {pb.model.name}", WHITE)]
+    title: list = [
+        (
+            f"{pb.manoeuvre.name}: {pb.regime[i]}   t {pb.t_beats[i]:5.2f} beats   V {used['V']:.2f}   {pb.model.name}",
+            WHITE,
+        )
+    ]
     if pb.status[i] != "ok":
         title.append((f"   cell {pb.status[i]}", AMBER))
     lines: list[OverlayLine] = [title]
-    lines.append(("  ".join(f"{SHORT.get(n, n)} {round(float(pb.params[n][i]), 2) + 0.0:.2f}" for n in pb.params), GREY))
+    lines.append(
+        (
+            "  ".join(
+                f"{SHORT.get(n, n)} {round(float(pb.params[n][i]), 2) + 0.0:.2f}" for n in pb.params
+            ),
+            GREY,
+        )
+    )
     if pb.clipped[i]:
         req = {k: float(v[i]) for k, v in pb.demand.items()}
-        lines.append((f"clipped to table: asked V={req['V']:.2f} Fx={req['Fx']:+.2f} Fz={req['Fz']:+.2f}", AMBER))
+        lines.append(
+            (
+                f"clipped to table: asked V={req['V']:.2f} Fx={req['Fx']:+.2f} Fz={req['Fz']:+.2f}",
+                AMBER,
+            )
+        )
     return lines
 
 
 def force_lines(demanded: np.ndarray | None, achieved: np.ndarray) -> list[OverlayLine]:
     """Demanded and achieved force (the dissertation's: right wing + body drag, seed
     axes, Fz < 0 is up; achieved = wingbeat mean of the drawn state), table units."""
+
     def f(v: float) -> str:
         return f"{round(float(v), 2) + 0.0:+.2f}"  # + 0.0: no "-0.00"
 
     ach = [("achieved ", GREY), (f"Fx {f(achieved[0])} Fz {f(achieved[2])}", ACHIEVED)]
-    dem = [] if demanded is None else [("demanded ", GREY), (f"Fx {f(demanded[0])} Fz {f(demanded[2])}   ", DEMANDED)]
+    dem = (
+        []
+        if demanded is None
+        else [("demanded ", GREY), (f"Fx {f(demanded[0])} Fz {f(demanded[2])}   ", DEMANDED)]
+    )
     return [dem + ach + [("  (right wing + body drag)", GREY)]]
 
 
 def legend_line(unit_name: str, scale: float) -> OverlayLine:
     """The force arrows' colours and scale."""
-    return [("arrows ", GREY), ("arm ", (242, 90, 26)), ("hand ", (60, 120, 255)), ("drag   ", (200, 90, 240)), (f"{unit_name} = {scale:g} semispans", GREY)]
+    return [
+        ("arrows ", GREY),
+        ("arm ", (242, 90, 26)),
+        ("hand ", (60, 120, 255)),
+        ("drag   ", (200, 90, 240)),
+        (f"{unit_name} = {scale:g} semispans", GREY),
+    ]
 
 
 def font_for_height(height: int) -> Any:
@@ -90,7 +126,11 @@ def draw_overlay(img: np.ndarray, lines: Sequence[OverlayLine], font: Any) -> No
     band[:] = (band.astype(np.uint16) * 2 // 5).astype(np.uint8)
     pil = Image.fromarray(band)
     for k, line in enumerate(lines):
-        parts = [(line, WHITE)] if isinstance(line, str) else (line if isinstance(line, list) else [line])
+        parts = (
+            [(line, WHITE)]
+            if isinstance(line, str)
+            else (line if isinstance(line, list) else [line])
+        )
         x = 6
         for text, colour in parts:
             sprite = _text_sprite(text, tuple(colour), font)
@@ -131,7 +171,14 @@ class PlotStrip:
         font: for the labels.
     """
 
-    def __init__(self, width: int, height: int, t: np.ndarray, series: Sequence[tuple[str, np.ndarray, tuple[int, int, int]]], font: Any):
+    def __init__(
+        self,
+        width: int,
+        height: int,
+        t: np.ndarray,
+        series: Sequence[tuple[str, np.ndarray, tuple[int, int, int]]],
+        font: Any,
+    ):
         from PIL import Image, ImageDraw
 
         self.h = max(24, height // 7)
@@ -148,7 +195,9 @@ class PlotStrip:
         for label, v, rgb in series:
             if len(v) < 2:  # a label only
                 continue
-            pts = list(zip(self._x(np.asarray(t, dtype=float)), self._y(np.asarray(v, dtype=float))))
+            pts = list(
+                zip(self._x(np.asarray(t, dtype=float)), self._y(np.asarray(v, dtype=float)))
+            )
             draw.line(pts, fill=(*rgb, 255), width=max(1, height // 240))
         x = 6
         for label, _, rgb in series:
@@ -178,4 +227,14 @@ class PlotStrip:
         band[:, max(0, min(self.w - 1, x))] = 255
 
 
-__all__ = ["OverlayLine", "PlotStrip", "SKY_RGB", "draw_overlay", "fill_sky", "font_for_height", "force_lines", "legend_line", "overlay_lines"]
+__all__ = [
+    "OverlayLine",
+    "PlotStrip",
+    "SKY_RGB",
+    "draw_overlay",
+    "fill_sky",
+    "font_for_height",
+    "force_lines",
+    "legend_line",
+    "overlay_lines",
+]

@@ -22,21 +22,39 @@ from typing import Any
 
 import numpy as np
 
-from birdsim.physics.bird import Bird
 from birdsim.flight.manoeuvre import Manoeuvre
 from birdsim.flight.playback import TableLike
 from birdsim.io import check_output
+from birdsim.physics.bird import Bird
 from birdsim.render.encode import mp4_writer, video_info
 from birdsim.render.gl import select_gl
-from birdsim.render.options import CAMERAS, MAX_SECONDS, MAX_SIDE, RenderError, RenderOptions, RenderResult, parse_size
+from birdsim.render.options import (
+    CAMERAS,
+    MAX_SECONDS,
+    MAX_SIDE,
+    RenderError,
+    RenderOptions,
+    RenderResult,
+    parse_size,
+)
 from birdsim.render.overlay import SKY_RGB, draw_overlay, fill_sky, overlay_lines
 from birdsim.render.scene import Scene
 from birdsim.render.sheet import contact_sheet
-from birdsim.render.states import StateSequence, perch_seed_position, play_for_video, states_from_playback
+from birdsim.render.states import (
+    StateSequence,
+    perch_seed_position,
+    play_for_video,
+    states_from_playback,
+)
 
 
 def render_states(
-    states: StateSequence, out: str | Path, options: RenderOptions = RenderOptions(), *, force: bool = False, log: Any = None
+    states: StateSequence,
+    out: str | Path,
+    options: RenderOptions = RenderOptions(),
+    *,
+    force: bool = False,
+    log: Any = None,
 ) -> RenderResult:
     """Render every frame of ``states`` to the MP4 ``out``.
 
@@ -66,14 +84,36 @@ def render_states(
     from tqdm import tqdm
 
     render_s = 0.0
-    with Scene(states, options) as scene, mp4_writer(out, options.width, options.height, options.fps, crf=options.crf, preset=options.preset) as writer:
-        for i in tqdm(range(scene.frames), desc=f"render {states.title}".rstrip(), unit="frame", disable=None if options.progress else True, file=log):
+    with (
+        Scene(states, options) as scene,
+        mp4_writer(
+            out, options.width, options.height, options.fps, crf=options.crf, preset=options.preset
+        ) as writer,
+    ):
+        for i in tqdm(
+            range(scene.frames),
+            desc=f"render {states.title}".rstrip(),
+            unit="frame",
+            disable=None if options.progress else True,
+            file=log,
+        ):
             t0 = time.perf_counter()
             scene.update(i)
             img = scene.renderer.render()
             render_s += time.perf_counter() - t0
             writer.send(np.ascontiguousarray(scene.finish(img, i)))
-    return RenderResult(out, scene.frames, options.width, options.height, options.fps, scene.frames / options.fps, time.perf_counter() - wall0, render_s, backend, states.clip_note)
+    return RenderResult(
+        out,
+        scene.frames,
+        options.width,
+        options.height,
+        options.fps,
+        scene.frames / options.fps,
+        time.perf_counter() - wall0,
+        render_s,
+        backend,
+        states.clip_note,
+    )
 
 
 def render_manoeuvre(
@@ -122,7 +162,9 @@ def render_still(
         raise RenderError(f"--still {str(out)!r} does not end in .png; allowed: a .png path")
     clip_beats = options.duration(manoeuvre) * options.beats_per_second
     if not (0.0 <= at_beats <= clip_beats):
-        raise RenderError(f"--at {at_beats!r} is outside the clip; allowed: a time in wingbeats in [0, {clip_beats:g}]")
+        raise RenderError(
+            f"--at {at_beats!r} is outside the clip; allowed: a time in wingbeats in [0, {clip_beats:g}]"
+        )
     select_gl(options.gl)
     pb = play_for_video(manoeuvre, table, options, bird=bird, model=model)
     states = states_from_playback(pb, max(1, int(options.trail_substeps)))
@@ -146,7 +188,27 @@ def write_png(out: Path, img: np.ndarray) -> Path:
 
 
 __all__ = [
-    "CAMERAS", "MAX_SECONDS", "MAX_SIDE", "RenderError", "RenderOptions", "RenderResult", "SKY_RGB", "Scene", "StateSequence",
-    "contact_sheet", "draw_overlay", "fill_sky", "mp4_writer", "overlay_lines", "parse_size", "perch_seed_position",
-    "play_for_video", "render_manoeuvre", "render_states", "render_still", "states_from_playback", "video_info", "write_png",
+    "CAMERAS",
+    "MAX_SECONDS",
+    "MAX_SIDE",
+    "RenderError",
+    "RenderOptions",
+    "RenderResult",
+    "SKY_RGB",
+    "Scene",
+    "StateSequence",
+    "contact_sheet",
+    "draw_overlay",
+    "fill_sky",
+    "mp4_writer",
+    "overlay_lines",
+    "parse_size",
+    "perch_seed_position",
+    "play_for_video",
+    "render_manoeuvre",
+    "render_states",
+    "render_still",
+    "states_from_playback",
+    "video_info",
+    "write_png",
 ]

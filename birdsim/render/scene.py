@@ -22,9 +22,24 @@ import numpy as np
 from birdsim.flight.playback import Playback
 from birdsim.render.camera import CameraPose, camera_path, project
 from birdsim.render.decor import add_arrow, add_polyline, add_trails, trail_window
-from birdsim.render.forces import ARM_RGBA, DRAG_RGBA, HAND_RGBA, dissertation_force, site_forces, weight, wingbeat_mean
+from birdsim.render.forces import (
+    ARM_RGBA,
+    DRAG_RGBA,
+    HAND_RGBA,
+    dissertation_force,
+    site_forces,
+    weight,
+    wingbeat_mean,
+)
 from birdsim.render.options import CAMERAS, RenderError, RenderOptions
-from birdsim.render.overlay import PlotStrip, draw_overlay, fill_sky, font_for_height, force_lines, legend_line
+from birdsim.render.overlay import (
+    PlotStrip,
+    draw_overlay,
+    fill_sky,
+    font_for_height,
+    force_lines,
+    legend_line,
+)
 from birdsim.render.states import StateSequence, states_from_playback
 
 
@@ -48,11 +63,15 @@ class Scene:
         self._mj = mujoco
         self.playback = states if isinstance(states, Playback) else None
         self.options = options
-        self.m = build_model(states.model.name if isinstance(states, Playback) else states.model, states.bird)
+        self.m = build_model(
+            states.model.name if isinstance(states, Playback) else states.model, states.bird
+        )
         if isinstance(states, Playback):
             states = states_from_playback(states, max(1, int(options.trail_substeps)), m=self.m)
         if states.qpos.shape[1] != self.m.nq or states.qvel.shape[1] != self.m.nv:
-            raise RenderError(f"states have nq={states.qpos.shape[1]}, nv={states.qvel.shape[1]}; the model {states.model!r} has nq={self.m.nq}, nv={self.m.nv}")
+            raise RenderError(
+                f"states have nq={states.qpos.shape[1]}, nv={states.qvel.shape[1]}; the model {states.model!r} has nq={self.m.nq}, nv={self.m.nv}"
+            )
         self.states = states
         self.sub = states.instants_per_frame
         self.frames = states.frames
@@ -62,7 +81,9 @@ class Scene:
         self.m.vis.quality.offsamples = look.samples
         self.m.vis.quality.shadowsize = look.shadowsize
         if not look.textures:
-            self.m.geom_matid[:] = np.where(self.m.geom_group == 0, -1, self.m.geom_matid)  # arena plain
+            self.m.geom_matid[:] = np.where(
+                self.m.geom_group == 0, -1, self.m.geom_matid
+            )  # arena plain
             self.m.geom_rgba[self.m.geom_group == 0] = (0.45, 0.56, 0.38, 1.0)
         floor = mujoco.mj_name2id(self.m, mujoco.mjtObj.mjOBJ_GEOM, "floor")
         if floor >= 0 and self.m.geom_type[floor] == mujoco.mjtGeom.mjGEOM_PLANE:
@@ -84,7 +105,9 @@ class Scene:
         self.camera = mujoco.MjvCamera()
         self.camera.type = mujoco.mjtCamera.mjCAMERA_FREE
         self.option = mujoco.MjvOption()
-        self.option.geomgroup[1] = 0  # the physical bird (panels as boxes): the visual bird (group 2) is drawn
+        self.option.geomgroup[1] = (
+            0  # the physical bird (panels as boxes): the visual bird (group 2) is drawn
+        )
         self.aero = aero_sites(states.model, states.bird)
         self.sites = [s.site for s in self.aero]
         self.site_ids = [mujoco.mj_name2id(self.m, mujoco.mjtObj.mjOBJ_SITE, s) for s in self.sites]
@@ -110,8 +133,16 @@ class Scene:
         if self.states.reference_path is not None:
             extra += list(self.states.reference_path)
         aspect = self.options.width / self.options.height
-        poses = camera_path(name, self.torso_path, self.heading, self.states.t_beats, 2.0 * self.states.bird.semispan,
-                            float(self.m.vis.global_.fovy), aspect, np.array(extra) if extra else None)
+        poses = camera_path(
+            name,
+            self.torso_path,
+            self.heading,
+            self.states.t_beats,
+            2.0 * self.states.bird.semispan,
+            float(self.m.vis.global_.fovy),
+            aspect,
+            np.array(extra) if extra else None,
+        )
         return [poses[self.instant(i)] for i in range(self.frames)]
 
     def _shadow_frames(self, wanted: bool) -> np.ndarray:
@@ -129,8 +160,12 @@ class Scene:
             p = self.torso_path[self.instant(i)]
             ground = p + d * (p[2] / -d[2])  # where the sun's ray through the bird meets z = 0
             margin = 2.0 * self._s  # the wings' shadow reaches a semispan or two beyond
-            pts = ground + np.array([[0, 0, 0], [margin, 0, 0], [-margin, 0, 0], [0, margin, 0], [0, -margin, 0]])
-            out[i] = bool(np.any(np.all(np.abs(project(pts, self.poses[i], fovy, aspect)) <= 1.0, axis=1)))
+            pts = ground + np.array(
+                [[0, 0, 0], [margin, 0, 0], [-margin, 0, 0], [0, margin, 0], [0, -margin, 0]]
+            )
+            out[i] = bool(
+                np.any(np.all(np.abs(project(pts, self.poses[i], fovy, aspect)) <= 1.0, axis=1))
+            )
         return out
 
     def pose_instant(self, k: int) -> None:
@@ -143,7 +178,9 @@ class Scene:
         mj.mj_comPos(self.m, self.d)
         mj.mj_camlight(self.m, self.d)
         if self._sun >= 0:  # the sun's shadow box (directional light) centred on the bird
-            self.d.light_xpos[self._sun] = self.d.xpos[self._torso] - self.d.light_xdir[self._sun] * 4.0 * self._s
+            self.d.light_xpos[self._sun] = (
+                self.d.xpos[self._torso] - self.d.light_xdir[self._sun] * 4.0 * self._s
+            )
 
     def _precompute(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """One pass over every instant: CP site positions (instants, sites, 3), torso
@@ -163,12 +200,25 @@ class Scene:
             sites[k] = self.d.site_xpos[self.site_ids]
             torso[k] = self.d.xpos[self._torso]
             heading[k] = self.d.xmat[self._torso].reshape(3, 3)[:, 0]
-            self.cp_forces[k], self.drag[k] = site_forces(mj, self.m, self.d, self.aero, self.site_ids, tsite, bird)
+            self.cp_forces[k], self.drag[k] = site_forces(
+                mj, self.m, self.d, self.aero, self.site_ids, tsite, bird
+            )
             self.drag_at[k] = self.d.site_xpos[tsite]
         #: the dissertation's force (right wing + body drag), seed axes, table units, wingbeat mean
-        self.achieved = wingbeat_mean(dissertation_force(self.cp_forces, self.drag, [a.side for a in self.aero], bird), self.states.t_beats)
+        self.achieved = wingbeat_mean(
+            dissertation_force(self.cp_forces, self.drag, [a.side for a in self.aero], bird),
+            self.states.t_beats,
+        )
         w = weight(bird)
-        self.force_unit = w if w > 0 else max(float(np.linalg.norm(self.cp_forces, axis=-1).max()), float(np.linalg.norm(self.drag, axis=-1).max()), 1e-300)
+        self.force_unit = (
+            w
+            if w > 0
+            else max(
+                float(np.linalg.norm(self.cp_forces, axis=-1).max()),
+                float(np.linalg.norm(self.drag, axis=-1).max()),
+                1e-300,
+            )
+        )
         self.force_unit_name = "the weight" if w > 0 else "the largest force"
         return sites, torso, heading
 
@@ -207,9 +257,13 @@ class Scene:
             self._add_forces(self.instant(i))
 
     def _add_trails(self, i: int) -> None:
-        dt_beats = float(np.median(np.diff(self.states.t_beats))) if self.states.instants > 1 else 1.0
+        dt_beats = (
+            float(np.median(np.diff(self.states.t_beats))) if self.states.instants > 1 else 1.0
+        )
         keep = max(2, int(round(self.options.trail_beats / max(dt_beats, 1e-12))))
-        add_trails(self._mj, self.renderer.scene, self.trails[trail_window(i, self.sub, keep)], self.sites)
+        add_trails(
+            self._mj, self.renderer.scene, self.trails[trail_window(i, self.sub, keep)], self.sites
+        )
 
     def overlay_lines(self, k: int) -> list:
         """The overlay of instant ``k``: the states' own lines, the demanded and achieved
@@ -218,7 +272,12 @@ class Scene:
         lines = list(self.states.overlay_at(k))
         lines[1:1] = force_lines(None if dem is None else dem[k], self.achieved[k])
         if self.options.forces is not None:
-            lines.append(legend_line("1 weight" if self.force_unit_name == "the weight" else "largest force", self.options.forces))
+            lines.append(
+                legend_line(
+                    "1 weight" if self.force_unit_name == "the weight" else "largest force",
+                    self.options.forces,
+                )
+            )
         return lines
 
     def finish(self, img: np.ndarray, i: int) -> np.ndarray:
@@ -236,11 +295,24 @@ class Scene:
             t, dem = self.states.t_beats, self.states.demanded_force
             series = []
             if dem is not None:
-                series += [("Fz demanded", dem[:, 2], (120, 170, 255)), ("Fx demanded", dem[:, 0], (120, 220, 120))]
-            series += [("Fz achieved", self.achieved[:, 2], (255, 200, 60)), ("Fx achieved", self.achieved[:, 0], (255, 110, 110)), ("(wingbeat mean)", self.achieved[:1, 0][:0], (200, 200, 200))]
+                series += [
+                    ("Fz demanded", dem[:, 2], (120, 170, 255)),
+                    ("Fx demanded", dem[:, 0], (120, 220, 120)),
+                ]
+            series += [
+                ("Fz achieved", self.achieved[:, 2], (255, 200, 60)),
+                ("Fx achieved", self.achieved[:, 0], (255, 110, 110)),
+                ("(wingbeat mean)", self.achieved[:1, 0][:0], (200, 200, 200)),
+            ]
             from birdsim.render.overlay import font_for_height
 
-            self._strip = PlotStrip(self.options.width, self.options.height, t, series, font_for_height(int(self.options.height * 0.8)))
+            self._strip = PlotStrip(
+                self.options.width,
+                self.options.height,
+                t,
+                series,
+                font_for_height(int(self.options.height * 0.8)),
+            )
         return self._strip
 
     def rgb(self, i: int) -> np.ndarray:

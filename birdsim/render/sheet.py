@@ -11,7 +11,9 @@ from birdsim.io import write_atomic
 from birdsim.render.encode import video_info
 
 
-def contact_sheet(video: str | Path, out: str | Path, *, count: int = 12, columns: int = 4, thumb_width: int = 320) -> Path:
+def contact_sheet(
+    video: str | Path, out: str | Path, *, count: int = 12, columns: int = 4, thumb_width: int = 320
+) -> Path:
     """A PNG grid of ``count`` evenly spaced frames of ``video``, written atomically.
 
     Args:

@@ -42,9 +42,9 @@ from typing import Any, Union
 import numpy as np
 
 from birdsim.errors import BirdsimError
-from birdsim.physics.bird import Bird
 from birdsim.flight.manoeuvre import Manoeuvre
 from birdsim.flight.playback import Playback, TableLike, frame_times, play
+from birdsim.physics.bird import Bird
 from birdsim.render.options import RenderOptions
 from birdsim.render.overlay import OverlayLine, overlay_lines
 
@@ -75,18 +75,31 @@ class StateSequence:
         if t.ndim != 1 or len(t) == 0:
             raise BirdsimError(f"t_beats has shape {t.shape}; allowed: (F,) with F >= 1")
         if qpos.ndim != 2 or qpos.shape[0] != len(t) or qvel.ndim != 2 or qvel.shape[0] != len(t):
-            raise BirdsimError(f"qpos {qpos.shape} / qvel {qvel.shape} do not match t_beats ({len(t)},); allowed: (F, nq) and (F, nv)")
+            raise BirdsimError(
+                f"qpos {qpos.shape} / qvel {qvel.shape} do not match t_beats ({len(t)},); allowed: (F, nq) and (F, nv)"
+            )
         if not (np.all(np.isfinite(qpos)) and np.all(np.isfinite(qvel))):
             raise BirdsimError("qpos/qvel contain NaN or inf; allowed: finite states")
         if not isinstance(self.instants_per_frame, int) or self.instants_per_frame < 1:
-            raise BirdsimError(f"instants_per_frame={self.instants_per_frame!r}; allowed: an integer >= 1")
+            raise BirdsimError(
+                f"instants_per_frame={self.instants_per_frame!r}; allowed: an integer >= 1"
+            )
         path = self.reference_path
         if path is not None:
             path = np.asarray(path, dtype=float)
-            if path.ndim != 2 or path.shape[1] != 3 or len(path) < 2 or not np.all(np.isfinite(path)):
-                raise BirdsimError(f"reference_path has shape {path.shape}; allowed: (K, 3) finite points, K >= 2")
+            if (
+                path.ndim != 2
+                or path.shape[1] != 3
+                or len(path) < 2
+                or not np.all(np.isfinite(path))
+            ):
+                raise BirdsimError(
+                    f"reference_path has shape {path.shape}; allowed: (K, 3) finite points, K >= 2"
+                )
         if self.overlay is not None and not callable(self.overlay) and len(self.overlay) != len(t):
-            raise BirdsimError(f"overlay has {len(self.overlay)} entries for {len(t)} instants; allowed: one per instant or a callable")
+            raise BirdsimError(
+                f"overlay has {len(self.overlay)} entries for {len(t)} instants; allowed: one per instant or a callable"
+            )
         object.__setattr__(self, "t_beats", t)
         object.__setattr__(self, "qpos", qpos)
         object.__setattr__(self, "qvel", qvel)
@@ -94,7 +107,9 @@ class StateSequence:
         if self.demanded_force is not None:
             dem = np.asarray(self.demanded_force, dtype=float)
             if dem.shape != (len(t), 3) or not np.all(np.isfinite(dem)):
-                raise BirdsimError(f"demanded_force has shape {dem.shape}; allowed: ({len(t)}, 3) finite values")
+                raise BirdsimError(
+                    f"demanded_force has shape {dem.shape}; allowed: ({len(t)}, 3) finite values"
+                )
             object.__setattr__(self, "demanded_force", dem)
 
     @property
@@ -121,11 +136,21 @@ def playback_state(pb: Playback, m: Any | None = None) -> tuple[np.ndarray, np.n
 
     m = m if m is not None else build_model(pb.model.name, pb.bird, visuals=False)  # joints only
     qpos, qvel, _ = wing_arrays(m, pb.angles, pb.rates, samples=pb.frames)
-    set_root(m, qpos, qvel, pitch=pb.pitch, position_seed=pb.position_seed, velocity_seed=pb.velocity_seed, pitch_rate=pb.pitch_rate)
+    set_root(
+        m,
+        qpos,
+        qvel,
+        pitch=pb.pitch,
+        position_seed=pb.position_seed,
+        velocity_seed=pb.velocity_seed,
+        pitch_rate=pb.pitch_rate,
+    )
     return qpos, qvel
 
 
-def states_from_playback(pb: Playback, instants_per_frame: int = 1, *, m: Any | None = None) -> StateSequence:
+def states_from_playback(
+    pb: Playback, instants_per_frame: int = 1, *, m: Any | None = None
+) -> StateSequence:
     """The :class:`StateSequence` of a table-driven playback (overlay: time, regime,
     demanded force, parameters; reference path: the body's prescribed path)."""
     qpos, qvel = playback_state(pb, m)
@@ -140,12 +165,19 @@ def states_from_playback(pb: Playback, instants_per_frame: int = 1, *, m: Any | 
         instants_per_frame=instants_per_frame,
         title=pb.manoeuvre.name,
         clip_note=pb.clip_note,
-        demanded_force=np.column_stack([pb.demand_used["Fx"], np.zeros(pb.frames), pb.demand_used["Fz"]]),
+        demanded_force=np.column_stack(
+            [pb.demand_used["Fx"], np.zeros(pb.frames), pb.demand_used["Fz"]]
+        ),
     )
 
 
 def play_for_video(
-    manoeuvre: Manoeuvre, table: TableLike, options: RenderOptions, *, bird: Bird | None = None, model: str | None = None
+    manoeuvre: Manoeuvre,
+    table: TableLike,
+    options: RenderOptions,
+    *,
+    bird: Bird | None = None,
+    model: str | None = None,
 ) -> Playback:
     """The playback at ``trail_substeps`` instants per video frame, the body placed so
     that a perched start or end sits on the scene's perch."""
@@ -153,8 +185,17 @@ def play_for_video(
     frames = len(frame_times(options.duration(manoeuvre), options.fps, options.beats_per_second))
     t_beats = np.arange(frames * sub) * (options.beats_per_second / (options.fps * sub))
     bird = bird or getattr(table, "bird", None) or Bird()
-    kin = play(manoeuvre, table, t_beats[:1], bird=bird, model=model).model  # validates model and table first
-    return play(manoeuvre, table, t_beats, bird=bird, model=model, perch_seed=perch_seed_position(kin.name, bird))
+    kin = play(
+        manoeuvre, table, t_beats[:1], bird=bird, model=model
+    ).model  # validates model and table first
+    return play(
+        manoeuvre,
+        table,
+        t_beats,
+        bird=bird,
+        model=model,
+        perch_seed=perch_seed_position(kin.name, bird),
+    )
 
 
 def perch_seed_position(model_name: str, bird: Bird) -> tuple[float, float]:
@@ -175,4 +216,11 @@ def perch_seed_position(model_name: str, bird: Bird) -> tuple[float, float]:
     return (float(top[0]), -float(top[2] + clearance))
 
 
-__all__ = ["OverlaySource", "StateSequence", "perch_seed_position", "play_for_video", "playback_state", "states_from_playback"]
+__all__ = [
+    "OverlaySource",
+    "StateSequence",
+    "perch_seed_position",
+    "play_for_video",
+    "playback_state",
+    "states_from_playback",
+]

@@ -61,7 +61,12 @@ def grid_means(
     for lo in range(0, size, CHUNK):
         hi = min(lo + CHUNK, size)
         cyc = evaluate_cycle(
-            model, {k: a[lo:hi] for k, a in flat.items()}, vf[lo:hi], bird=bird, n=n, check_bounds=check_bounds
+            model,
+            {k: a[lo:hi] for k, a in flat.items()},
+            vf[lo:hi],
+            bird=bird,
+            n=n,
+            check_bounds=check_bounds,
         )
         m = cyc.mean
         fx[lo:hi], fz[lo:hi], p[lo:hi] = m.Fx, m.Fz, m.P
@@ -114,8 +119,13 @@ def wrist_upward_force(
     """
     s = WRIST_STUDY
     params = dict(
-        pitch=s["pitch"], flap_amp=flap_amp, twist_amp=s["twist_amp"], stroke_plane=s["stroke_plane"],
-        wrist_amp=wrist_amp, wrist_bias=wrist_bias, wrist_lag=wrist_lag,
+        pitch=s["pitch"],
+        flap_amp=flap_amp,
+        twist_amp=s["twist_amp"],
+        stroke_plane=s["stroke_plane"],
+        wrist_amp=wrist_amp,
+        wrist_bias=wrist_bias,
+        wrist_lag=wrist_lag,
     )
     return -grid_means("m4", params, s["speed"], bird=bird, n=n).Fz
 
@@ -132,7 +142,13 @@ class WristOptimum:
 
 
 def wrist_optimum(
-    flap_amp: np.ndarray, wrist_amp: np.ndarray, lag: np.ndarray, bias: np.ndarray, *, bird: Bird | None = None, n: int = 32
+    flap_amp: np.ndarray,
+    wrist_amp: np.ndarray,
+    lag: np.ndarray,
+    bias: np.ndarray,
+    *,
+    bird: Bird | None = None,
+    n: int = 32,
 ) -> WristOptimum:
     """Fig 27: argmax over the (lag, bias) grid of the upward force, for every amplitude pair."""
     up = wrist_upward_force(*mesh([flap_amp, wrist_amp, lag, bias]), bird=bird, n=n)
@@ -141,7 +157,10 @@ def wrist_optimum(
     best = np.argmax(flat, axis=-1)
     li, bi = np.unravel_index(best, (len(lag), len(bias)))
     return WristOptimum(
-        np.asarray(flap_amp), np.asarray(wrist_amp), np.asarray(lag)[li], np.asarray(bias)[bi],
+        np.asarray(flap_amp),
+        np.asarray(wrist_amp),
+        np.asarray(lag)[li],
+        np.asarray(bias)[bi],
         np.take_along_axis(flat, best[..., None], axis=-1)[..., 0],
     )
 
@@ -197,7 +216,10 @@ def landscape(
     profile = dict(profile or {})
     names = [x[0], y[0], *profile]
     grids = mesh([x[1], y[1], *profile.values()])
-    params: dict[str, np.ndarray] = {**{k: np.asarray(v) for k, v in fixed.items()}, **dict(zip(names, grids))}
+    params: dict[str, np.ndarray] = {
+        **{k: np.asarray(v) for k, v in fixed.items()},
+        **dict(zip(names, grids)),
+    }
     if derived is not None:
         params.update(derived(params))
     model_params = {k: v for k, v in params.items() if k in get_model(model).param_names}
@@ -235,7 +257,9 @@ class ControlPointPaths:
     trailing: np.ndarray
 
 
-def control_point_paths(model: str, params: Mapping[str, float], *, bird: Bird | None = None, n: int = 64) -> ControlPointPaths:
+def control_point_paths(
+    model: str, params: Mapping[str, float], *, bird: Bird | None = None, n: int = 64
+) -> ControlPointPaths:
     """Where each panel's control point goes over one wingbeat, with its chord line.
 
     Uses the kinematic chain directly (``joint_states``, ``points_in_body``,
@@ -253,13 +277,24 @@ def control_point_paths(model: str, params: Mapping[str, float], *, bird: Bird |
         r = np.array([bird.cp_span_fraction * span])
         pos, _ = points_in_body(chain, states, r)
         x_axis = panel_to_body(chain, states, (np.ones((n, 1)), np.zeros((n, 1)), np.zeros((n, 1))))
-        pos = np.stack([np.broadcast_to(c, (n, 1))[:, 0] for c in body_to_earth(pitch, pos)], axis=-1)
-        ax = np.stack([np.broadcast_to(c, (n, 1))[:, 0] for c in body_to_earth(pitch, x_axis)], axis=-1)
+        pos = np.stack(
+            [np.broadcast_to(c, (n, 1))[:, 0] for c in body_to_earth(pitch, pos)], axis=-1
+        )
+        ax = np.stack(
+            [np.broadcast_to(c, (n, 1))[:, 0] for c in body_to_earth(pitch, x_axis)], axis=-1
+        )
         paths.append(pos)
         leads.append(pos + 0.5 * chord * ax)
         trails.append(pos - 0.5 * chord * ax)
         names.append(geom.name)
-    return ControlPointPaths(m.name, tuple(names), phases / (2 * math.pi), np.stack(paths), np.stack(leads), np.stack(trails))
+    return ControlPointPaths(
+        m.name,
+        tuple(names),
+        phases / (2 * math.pi),
+        np.stack(paths),
+        np.stack(leads),
+        np.stack(trails),
+    )
 
 
 # ---- Figs 35-38, 44, 45, 52: solutions over speed ------------------------------------
@@ -315,10 +350,25 @@ def speed_sweep(
         sol = slsqp(prob, x)
         X[i], cost[i] = sol.x, sol.cost
         x = sol.x
-    b = evaluate_cost(m, X, demand[0], demand[1], np.asarray(speeds, dtype=float), weights=CostWeights(), bird=bird, n=n)
+    b = evaluate_cost(
+        m,
+        X,
+        demand[0],
+        demand[1],
+        np.asarray(speeds, dtype=float),
+        weights=CostWeights(),
+        bird=bird,
+        n=n,
+    )
     return SpeedSweep(
-        m.name, "backward" if backward else "forward", np.asarray(speeds, dtype=float), m.param_names, X,
-        np.asarray(b.total, dtype=float), b.fractions, np.stack([b.Fx, b.Fz, b.P], axis=-1),
+        m.name,
+        "backward" if backward else "forward",
+        np.asarray(speeds, dtype=float),
+        m.param_names,
+        X,
+        np.asarray(b.total, dtype=float),
+        b.fractions,
+        np.stack([b.Fx, b.Fz, b.P], axis=-1),
     )
 
 
@@ -356,7 +406,9 @@ class OptimiserRun:
         return np.minimum.accumulate(self.values)
 
 
-def optimiser_run(function: str, method: str, *, x0: Sequence[float] | None = None, nodes: int = 12, seed: int = 0) -> OptimiserRun:
+def optimiser_run(
+    function: str, method: str, *, x0: Sequence[float] | None = None, nodes: int = 12, seed: int = 0
+) -> OptimiserRun:
     """Run one of ``birdsim.tables.optimize``'s solvers on f or g, recording each evaluation."""
     from birdsim.tables.optimize import FunctionProblem, complete_search, evolutionary, slsqp
 
@@ -379,4 +431,14 @@ def optimiser_run(function: str, method: str, *, x0: Sequence[float] | None = No
         sol = evolutionary(prob, seed=seed, popsize=5, polish=False)
         label = f"differential evolution (seed {seed})"
     pts = np.concatenate(seen) if seen else np.zeros((0, 2))
-    return OptimiserRun(function, method, label, pts, fun(pts), np.asarray(sol.x), float(fun(sol.x)[0]), sol.evaluations, sol.iterations)
+    return OptimiserRun(
+        function,
+        method,
+        label,
+        pts,
+        fun(pts),
+        np.asarray(sol.x),
+        float(fun(sol.x)[0]),
+        sol.evaluations,
+        sol.iterations,
+    )

@@ -68,7 +68,15 @@ def _footnote(fig: "Figure", text: str) -> None:
     height = fig.get_figheight()
     lines = len(wrap(text, int(fig.get_figwidth() * 15)).splitlines())
     strip = (0.1 + 0.15 * lines) / height  # inches kept free under the axes
-    fig.text(0.5, 0.004, wrap(text, int(fig.get_figwidth() * 15)), ha="center", va="bottom", fontsize=8, color="0.3")
+    fig.text(
+        0.5,
+        0.004,
+        wrap(text, int(fig.get_figwidth() * 15)),
+        ha="center",
+        va="bottom",
+        fontsize=8,
+        color="0.3",
+    )
     fig.get_layout_engine().set(rect=(0.0, strip, 1.0, 1.0 - strip))
 
 
@@ -102,10 +110,20 @@ def histories(cycle: "Cycle", title: str) -> "Figure":
     }
     several = len(cycle.panel_names) > 1
     for ax, key in zip(axes, ("Fx", "Fz", "P")):
-        ax.plot(phase, _closed(total[key]), color="k", lw=2, label="whole wing" + (" + body drag" if key == "Fx" and drag else ""))
+        ax.plot(
+            phase,
+            _closed(total[key]),
+            color="k",
+            lw=2,
+            label="whole wing" + (" + body drag" if key == "Fx" and drag else ""),
+        )
         if several:
             for k, name in enumerate(cycle.panel_names):
-                part = cycle.panel_power[k] if key == "P" else cycle.panel_force_earth[k, :, "xyz".index(key[1].lower())]
+                part = (
+                    cycle.panel_power[k]
+                    if key == "P"
+                    else cycle.panel_force_earth[k, :, "xyz".index(key[1].lower())]
+                )
                 ax.plot(phase, _closed(part), lw=1.5, label=f"panel {k + 1} ({name})")
         ax.axhline(means[key], color="k", ls="--", lw=1, label=f"cycle mean = {means[key]:+.3f}")
         ax.axhline(0.0, color="0.7", lw=0.8)
@@ -124,7 +142,9 @@ def histories(cycle: "Cycle", title: str) -> "Figure":
 # ---- 2. thrust coefficient over advance angle and twist ------------------------------
 
 
-def thrust_coefficient(zeta: np.ndarray, twist: np.ndarray, cfx: np.ndarray, title: str) -> "Figure":
+def thrust_coefficient(
+    zeta: np.ndarray, twist: np.ndarray, cfx: np.ndarray, title: str
+) -> "Figure":
     """C_Fx (eq. 23) over advance angle (x) and twist (y), the zero contour and the
     line twist = advance angle (Fig 9)."""
     plt = pyplot()
@@ -170,7 +190,9 @@ def maps(
     dissertation's optimum)."""
     plt = pyplot()
     n = len(panels)
-    fig, axes = plt.subplots(1, n, figsize=(4.6 * n + 1.0, 4.6), layout="constrained", squeeze=False)
+    fig, axes = plt.subplots(
+        1, n, figsize=(4.6 * n + 1.0, 4.6), layout="constrained", squeeze=False
+    )
     values = [np.asarray(v) for _, v in panels]
     lo = min(float(np.nanmin(v)) for v in values)
     hi = max(float(np.nanmax(v)) for v in values)
@@ -180,10 +202,22 @@ def maps(
         cs = ax.contourf(x, y, v.T, levels=levels, cmap="viridis")
         ax.contour(x, y, v.T, levels=levels[::4], colors="w", linewidths=0.5, alpha=0.6)
         if not shared_scale or k == n - 1:
-            fig.colorbar(cs, ax=ax if not shared_scale else list(axes[0]), label=value_label, ticks=plt.MaxNLocator(7))
+            fig.colorbar(
+                cs,
+                ax=ax if not shared_scale else list(axes[0]),
+                label=value_label,
+                ticks=plt.MaxNLocator(7),
+            )
         i, j = np.unravel_index(np.nanargmax(v) if mark == "max" else np.nanargmin(v), v.shape)
-        ax.plot(x[i], y[j], "r*", ms=14, mec="w", label=f"{mark} at ({x[i]:.2f}, {y[j]:.2f}) = {v[i, j]:.3g}")
-        for px, py, plabel in (extra[k] if extra else ()):
+        ax.plot(
+            x[i],
+            y[j],
+            "r*",
+            ms=14,
+            mec="w",
+            label=f"{mark} at ({x[i]:.2f}, {y[j]:.2f}) = {v[i, j]:.3g}",
+        )
+        for px, py, plabel in extra[k] if extra else ():
             ax.plot(px, py, "wo", ms=9, mfc="none", mew=2, label=plabel)
         pad_x, pad_y = 0.03 * np.ptp(x), 0.03 * np.ptp(y)
         ax.set_xlim(x[0] - pad_x, x[-1] + pad_x)  # markers on the edge stay visible
@@ -200,7 +234,10 @@ def maps(
 
 def wrist_optimum(opt: "WristOptimum", title: str) -> "Figure":
     """Fig 27: the best lag and bias (and the upward force there) over the two amplitudes."""
-    searched = (0.0, math.pi / 2)  # colour scale = the searched range, so a constant map looks constant
+    searched = (
+        0.0,
+        math.pi / 2,
+    )  # colour scale = the searched range, so a constant map looks constant
     panels = [
         ("lag of largest upward force, Delta* (rad)", opt.lag_star, searched),
         ("bias of largest upward force, Psi* (rad)", opt.bias_star, searched),
@@ -209,7 +246,9 @@ def wrist_optimum(opt: "WristOptimum", title: str) -> "Figure":
     plt = pyplot()
     fig, axes = plt.subplots(1, 3, figsize=(15, 4.8), layout="constrained")
     for ax, (label, v, (lo, hi)) in zip(axes, panels):
-        mesh = ax.pcolormesh(opt.flap_amp, opt.wrist_amp, v.T, shading="nearest", cmap="viridis", vmin=lo, vmax=hi)
+        mesh = ax.pcolormesh(
+            opt.flap_amp, opt.wrist_amp, v.T, shading="nearest", cmap="viridis", vmin=lo, vmax=hi
+        )
         fig.colorbar(mesh, ax=ax, label=label)
         ax.set_xlabel("shoulder flap amplitude Phi_f (rad)")
         ax.set_ylabel("wrist flap amplitude Phi_w (rad)")
@@ -222,7 +261,9 @@ def wrist_optimum(opt: "WristOptimum", title: str) -> "Figure":
 # ---- 7. control-point paths ----------------------------------------------------------
 
 
-def cp_paths(paths: "ControlPointPaths", title: str, chords: int = 16, chord_scale: float = 0.3) -> "Figure":
+def cp_paths(
+    paths: "ControlPointPaths", title: str, chords: int = 16, chord_scale: float = 0.3
+) -> "Figure":
     """Figs 41-43, 46-48, 53-55: plan, rear, side and perspective views of every CP
     path with chord lines at ``chords`` instants, relative to the shoulder,
     earth-oriented (X forward, Y right, up = -Z).  Chord lines are drawn at
@@ -231,9 +272,27 @@ def cp_paths(paths: "ControlPointPaths", title: str, chords: int = 16, chord_sca
     plt = pyplot()
     fig = plt.figure(figsize=(11, 9.5), layout="constrained")
     views = [
-        ("plan view (from above)", 1, 0, "Y, right (non-dimensional)", "X, forward (non-dimensional)"),
-        ("rear view (from behind)", 1, 2, "Y, right (non-dimensional)", "up = -Z (non-dimensional)"),
-        ("side view (from the right)", 0, 2, "X, forward (non-dimensional)", "up = -Z (non-dimensional)"),
+        (
+            "plan view (from above)",
+            1,
+            0,
+            "Y, right (non-dimensional)",
+            "X, forward (non-dimensional)",
+        ),
+        (
+            "rear view (from behind)",
+            1,
+            2,
+            "Y, right (non-dimensional)",
+            "up = -Z (non-dimensional)",
+        ),
+        (
+            "side view (from the right)",
+            0,
+            2,
+            "X, forward (non-dimensional)",
+            "up = -Z (non-dimensional)",
+        ),
     ]
     n = paths.path.shape[1]
     pick = np.unique(np.linspace(0, n, chords, endpoint=False).astype(int))
@@ -249,12 +308,45 @@ def cp_paths(paths: "ControlPointPaths", title: str, chords: int = 16, chord_sca
         ax = fig.add_subplot(2, 2, v + 1)
         for k, pname in enumerate(paths.panel_names):
             p, le, te = centre[k], lead[k], trail[k]
-            ax.plot(_closed(coord(p, cx), 0), _closed(coord(p, cy), 0), color=colours[k], lw=2, label=f"CP path, panel {k + 1} ({pname})")
+            ax.plot(
+                _closed(coord(p, cx), 0),
+                _closed(coord(p, cy), 0),
+                color=colours[k],
+                lw=2,
+                label=f"CP path, panel {k + 1} ({pname})",
+            )
             for i in pick:
-                ax.plot([coord(te[i], cx), coord(le[i], cx)], [coord(te[i], cy), coord(le[i], cy)], color="0.25", lw=1.0)
-                ax.plot(coord(le[i], cx), coord(le[i], cy), "o", color=colours[k], ms=3.5, mec="0.25", mew=0.5)
-            ax.plot(coord(p[0], cx), coord(p[0], cy), "k^", ms=8, label="t = 0 (start of downstroke)" if k == 0 else None)
-        ax.plot([], [], color="0.25", lw=1.0, marker="o", ms=3.5, label=f"chord line x {chord_scale:g}, dot = leading edge")
+                ax.plot(
+                    [coord(te[i], cx), coord(le[i], cx)],
+                    [coord(te[i], cy), coord(le[i], cy)],
+                    color="0.25",
+                    lw=1.0,
+                )
+                ax.plot(
+                    coord(le[i], cx),
+                    coord(le[i], cy),
+                    "o",
+                    color=colours[k],
+                    ms=3.5,
+                    mec="0.25",
+                    mew=0.5,
+                )
+            ax.plot(
+                coord(p[0], cx),
+                coord(p[0], cy),
+                "k^",
+                ms=8,
+                label="t = 0 (start of downstroke)" if k == 0 else None,
+            )
+        ax.plot(
+            [],
+            [],
+            color="0.25",
+            lw=1.0,
+            marker="o",
+            ms=3.5,
+            label=f"chord line x {chord_scale:g}, dot = leading edge",
+        )
         ax.plot(0, 0, "ks", ms=6, label="shoulder")
         ax.set_aspect("equal", adjustable="datalim")
         ax.set_xlabel(xl)
@@ -266,9 +358,17 @@ def cp_paths(paths: "ControlPointPaths", title: str, chords: int = 16, chord_sca
     ax3 = fig.add_subplot(2, 2, 4, projection="3d")
     for k, pname in enumerate(paths.panel_names):
         p, le, te = centre[k], lead[k], trail[k]
-        ax3.plot(_closed(p[:, 0], 0), _closed(p[:, 1], 0), _closed(-p[:, 2], 0), color=colours[k], lw=2)
+        ax3.plot(
+            _closed(p[:, 0], 0), _closed(p[:, 1], 0), _closed(-p[:, 2], 0), color=colours[k], lw=2
+        )
         for i in pick:
-            ax3.plot([te[i, 0], le[i, 0]], [te[i, 1], le[i, 1]], [-te[i, 2], -le[i, 2]], color="0.25", lw=1.0)
+            ax3.plot(
+                [te[i, 0], le[i, 0]],
+                [te[i, 1], le[i, 1]],
+                [-te[i, 2], -le[i, 2]],
+                color="0.25",
+                lw=1.0,
+            )
     ax3.plot([0], [0], [0], "ks")
     ax3.set_xlabel("X, forward")
     ax3.set_ylabel("Y, right")
@@ -276,7 +376,9 @@ def cp_paths(paths: "ControlPointPaths", title: str, chords: int = 16, chord_sca
     ax3.set_zlabel("up\n(-Z)")
     for axis in (ax3.xaxis, ax3.yaxis, ax3.zaxis):
         axis.set_major_locator(plt.MaxNLocator(4))
-    everything = np.concatenate([a.reshape(-1, 3) for a in (centre, lead, trail)] + [np.zeros((1, 3))])
+    everything = np.concatenate(
+        [a.reshape(-1, 3) for a in (centre, lead, trail)] + [np.zeros((1, 3))]
+    )
     ax3.set_box_aspect(tuple(np.ptp(everything, axis=0) + 0.05))
     ax3.view_init(elev=20, azim=-125)
     ax3.set_title("perspective (non-dimensional)", fontsize=10)
@@ -304,10 +406,21 @@ def lines(
     n = len(series)
     cols = min(ncols, n)
     rows = math.ceil(n / cols)
-    fig, axes = plt.subplots(rows, cols, figsize=(5.2 * cols + 0.5, 3.3 * rows + 0.6), layout="constrained", squeeze=False)
+    fig, axes = plt.subplots(
+        rows,
+        cols,
+        figsize=(5.2 * cols + 0.5, 3.3 * rows + 0.6),
+        layout="constrained",
+        squeeze=False,
+    )
     for ax, (ylab, items) in zip(axes.flat, series.items()):
         for label, y, kw in items:
-            ax.plot(x if "x" not in kw else kw["x"], y, label=label, **{k: v for k, v in kw.items() if k != "x"})
+            ax.plot(
+                x if "x" not in kw else kw["x"],
+                y,
+                label=label,
+                **{k: v for k, v in kw.items() if k != "x"},
+            )
         ax.set_xlabel(x_label)
         ax.set_ylabel(ylab)
         if logy:
@@ -323,13 +436,23 @@ def lines(
     return fig
 
 
-def fractions(speeds: np.ndarray, panels: Sequence[tuple[str, np.ndarray]], names: Sequence[str], title: str, footnote: str | None = None) -> "Figure":
+def fractions(
+    speeds: np.ndarray,
+    panels: Sequence[tuple[str, np.ndarray]],
+    names: Sequence[str],
+    title: str,
+    footnote: str | None = None,
+) -> "Figure":
     """Fig 36: cost fractions (percent of the total) stacked over speed, one panel per
     ``(label, fractions len(speeds) x len(names))``."""
     plt = pyplot()
-    fig, axes = plt.subplots(1, len(panels), figsize=(5.5 * len(panels) + 1.5, 4.8), layout="constrained", squeeze=False)
+    fig, axes = plt.subplots(
+        1, len(panels), figsize=(5.5 * len(panels) + 1.5, 4.8), layout="constrained", squeeze=False
+    )
     for ax, (label, fr) in zip(axes[0], panels):
-        ax.stackplot(speeds, 100 * np.asarray(fr).T, labels=[n.replace("_", " ") for n in names], alpha=0.85)
+        ax.stackplot(
+            speeds, 100 * np.asarray(fr).T, labels=[n.replace("_", " ") for n in names], alpha=0.85
+        )
         ax.set_xlabel(f"flight speed V ({ND})")
         ax.set_ylabel("share of the total cost (%)")
         ax.set_ylim(0, 100)
@@ -344,20 +467,31 @@ def fractions(speeds: np.ndarray, panels: Sequence[tuple[str, np.ndarray]], name
 
 
 def table_slices(
-    fx: np.ndarray, fz: np.ndarray, speeds: Sequence[float], names: Sequence[str], values: np.ndarray, ok: np.ndarray,
-    bounds: Sequence[tuple[float, float]], title: str, footnote: str | None = None,
+    fx: np.ndarray,
+    fz: np.ndarray,
+    speeds: Sequence[float],
+    names: Sequence[str],
+    values: np.ndarray,
+    ok: np.ndarray,
+    bounds: Sequence[tuple[float, float]],
+    title: str,
+    footnote: str | None = None,
 ) -> "Figure":
     """Fig 40 / appendices 6-8: each parameter (columns) over (Fx, Fz) at several speeds
     (rows).  ``values`` is nFx x nFz x nV x d, ``ok`` nFx x nFz x nV; cells whose optimum
     misses the demand are crossed.  Each column shares its parameter's bounds as colour scale."""
     plt = pyplot()
     d, nv = len(names), len(speeds)
-    fig, axes = plt.subplots(nv, d, figsize=(2.9 * d + 1.2, 2.6 * nv + 1.0), layout="constrained", squeeze=False)
+    fig, axes = plt.subplots(
+        nv, d, figsize=(2.9 * d + 1.2, 2.6 * nv + 1.0), layout="constrained", squeeze=False
+    )
     for j, name in enumerate(names):
         lo, hi = bounds[j]
         for i, v in enumerate(speeds):
             ax = axes[i, j]
-            mesh = ax.pcolormesh(fx, fz, values[:, :, i, j].T, shading="nearest", cmap="viridis", vmin=lo, vmax=hi)
+            mesh = ax.pcolormesh(
+                fx, fz, values[:, :, i, j].T, shading="nearest", cmap="viridis", vmin=lo, vmax=hi
+            )
             bad = ~ok[:, :, i]
             if bad.any():
                 gx, gz = np.meshgrid(fx, fz, indexing="ij")
@@ -367,19 +501,36 @@ def table_slices(
                 ax.set_xlabel("Fx demand")
             if j == 0:
                 ax.set_ylabel("Fz demand (< 0 up)")
-        fig.colorbar(mesh, ax=list(axes[:, j]), location="bottom", label=f"{name} (rad)", shrink=0.9, ticks=plt.MaxNLocator(4))
+        fig.colorbar(
+            mesh,
+            ax=list(axes[:, j]),
+            location="bottom",
+            label=f"{name} (rad)",
+            shrink=0.9,
+            ticks=plt.MaxNLocator(4),
+        )
     fig.suptitle(wrap(title, 110))
-    note = f"x: cell where the optimum misses the demand by more than the reach tolerance; forces {ND}"
+    note = (
+        f"x: cell where the optimum misses the demand by more than the reach tolerance; forces {ND}"
+    )
     _footnote(fig, note + ("; " + footnote if footnote else ""))
     return fig
 
 
-def optimiser_runs(runs: Sequence[Sequence[Any]], grids: Sequence[np.ndarray], title: str) -> "Figure":
+def optimiser_runs(
+    runs: Sequence[Sequence[Any]], grids: Sequence[np.ndarray], title: str
+) -> "Figure":
     """Figs 28-30: per test function (rows) and solver (columns), the points each solver
     evaluated over the function's contours, its path, and its answer."""
     plt = pyplot()
     rows, cols = len(runs), max(len(r) for r in runs)
-    fig, axes = plt.subplots(rows, cols, figsize=(4.3 * cols + 0.8, 4.0 * rows + 0.6), layout="constrained", squeeze=False)
+    fig, axes = plt.subplots(
+        rows,
+        cols,
+        figsize=(4.3 * cols + 0.8, 4.0 * rows + 0.6),
+        layout="constrained",
+        squeeze=False,
+    )
     u = np.linspace(0, 1, grids[0].shape[0])
     for i, (row, z) in enumerate(zip(runs, grids)):
         for j in range(cols):
@@ -389,10 +540,25 @@ def optimiser_runs(runs: Sequence[Sequence[Any]], grids: Sequence[np.ndarray], t
                 continue
             run = row[j]
             cs = ax.contourf(u, u, z.T, levels=20, cmap="Greys", alpha=0.7)
-            ax.scatter(run.points[:, 0], run.points[:, 1], s=9, c=np.arange(len(run.points)), cmap="plasma", label=f"{run.evaluations} evaluations (colour: order)")
+            ax.scatter(
+                run.points[:, 0],
+                run.points[:, 1],
+                s=9,
+                c=np.arange(len(run.points)),
+                cmap="plasma",
+                label=f"{run.evaluations} evaluations (colour: order)",
+            )
             if run.method == "slsqp":
-                ax.plot(run.points[:, 0], run.points[:, 1], "-", color="tab:orange", lw=0.8, alpha=0.7)
-            ax.plot(*run.x, "r*", ms=14, mec="w", label=f"answer {run.function}({run.x[0]:.3f}, {run.x[1]:.3f}) = {run.value:.4f}")
+                ax.plot(
+                    run.points[:, 0], run.points[:, 1], "-", color="tab:orange", lw=0.8, alpha=0.7
+                )
+            ax.plot(
+                *run.x,
+                "r*",
+                ms=14,
+                mec="w",
+                label=f"answer {run.function}({run.x[0]:.3f}, {run.x[1]:.3f}) = {run.value:.4f}",
+            )
             ax.set_xlim(-0.03, 1.03)
             ax.set_ylim(-0.03, 1.03)
             ax.set_aspect("equal")

@@ -36,6 +36,7 @@ This module is the orchestration only; the parts live beside it: :mod:`.grid`
 :mod:`.runner` (executors and the task loop) and :mod:`.finish` (final check, provenance,
 the final write).  Their public names are re-exported here.
 """
+
 from __future__ import annotations
 
 import os
@@ -50,18 +51,46 @@ import numpy as np
 from birdsim.errors import BirdsimError
 from birdsim.physics.kinematics import get_model
 from birdsim.tables.checkpoints import Checkpoints
-from birdsim.tables.finish import demand_grid, final_check, finish_table, write_table
-from birdsim.tables.grid import MAX_CELLS, MAX_NODES, BuildConfig, BuildSettings, Grid, config_from_meta, sub_grid
 from birdsim.tables.cost import forces
+from birdsim.tables.finish import demand_grid, final_check, finish_table, write_table
+from birdsim.tables.grid import (
+    MAX_CELLS,
+    MAX_NODES,
+    BuildConfig,
+    BuildSettings,
+    Grid,
+    config_from_meta,
+    sub_grid,
+)
 from birdsim.tables.lookup import LookupTable
 from birdsim.tables.regularise import smooth_cells, zigzag_cells
-from birdsim.tables.runner import _InlineExecutor, _ignore_sigint, _run, _stop_workers
-from birdsim.tables.sweeps import IDLE_WRIST, canonical_params, solve_climb_line, solve_slice, solve_v_line
+from birdsim.tables.runner import _ignore_sigint, _InlineExecutor, _run, _stop_workers
+from birdsim.tables.sweeps import (
+    IDLE_WRIST,
+    canonical_params,
+    solve_climb_line,
+    solve_slice,
+    solve_v_line,
+)
 
 __all__ = [
-    "MAX_CELLS", "MAX_NODES", "IDLE_WRIST", "BuildConfig", "BuildSettings", "Checkpoints", "Grid",
-    "build_table", "canonical_params", "config_from_meta", "final_check", "finish_table",
-    "solve_climb_line", "solve_slice", "solve_v_line", "sub_grid", "write_table",
+    "MAX_CELLS",
+    "MAX_NODES",
+    "IDLE_WRIST",
+    "BuildConfig",
+    "BuildSettings",
+    "Checkpoints",
+    "Grid",
+    "build_table",
+    "canonical_params",
+    "config_from_meta",
+    "final_check",
+    "finish_table",
+    "solve_climb_line",
+    "solve_slice",
+    "solve_v_line",
+    "sub_grid",
+    "write_table",
 ]
 
 
@@ -100,7 +129,9 @@ def build_table(
     g = cfg.grid
     t0 = time.perf_counter()
     if jobs is not None and (isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 1):
-        raise BirdsimError(f"jobs={jobs!r} is invalid; allowed: an integer >= 1, or None (all cores)")
+        raise BirdsimError(
+            f"jobs={jobs!r} is invalid; allowed: an integer >= 1, or None (all cores)"
+        )
     ckpt = Checkpoints(Path(checkpoint_dir) if checkpoint_dir else None, cfg.digest(), cfg.stamp())
     if ckpt.discarded and notify is not None:
         notify(ckpt.discarded)
@@ -111,12 +142,23 @@ def build_table(
         from tqdm import tqdm
 
         # the bar counts cells (each continuation pass solves every cell once: a pass is 1/passes of a cell)
-        bar = tqdm(total=ncells, unit="cell", desc=f"tables {cfg.model}", leave=False, disable=None, bar_format="{l_bar}{bar}| {n:.0f}/{total} cells [{elapsed}<{remaining}]")
+        bar = tqdm(
+            total=ncells,
+            unit="cell",
+            desc=f"tables {cfg.model}",
+            leave=False,
+            disable=None,
+            bar_format="{l_bar}{bar}| {n:.0f}/{total} cells [{elapsed}<{remaining}]",
+        )
     tick = (lambda k: bar.update(k / passes)) if bar is not None else (lambda k: None)
     own = executor is None
     if own:
         jobs = jobs or os.cpu_count() or 1
-        executor = _InlineExecutor() if jobs == 1 else ProcessPoolExecutor(max_workers=jobs, initializer=_ignore_sigint)
+        executor = (
+            _InlineExecutor()
+            if jobs == 1
+            else ProcessPoolExecutor(max_workers=jobs, initializer=_ignore_sigint)
+        )
     assert executor is not None
     try:
         X, cost, evals, conv = _sweep(cfg, executor, ckpt, tick)
@@ -136,7 +178,11 @@ def build_table(
             bar.close()
     table = finish_table(cfg, model, X, evals, conv)
     seconds = time.perf_counter() - t0
-    table.meta.update(build_seconds=round(seconds, 3), cells_per_second=round(ncells / seconds, 2), jobs=jobs if own else executor_name)
+    table.meta.update(
+        build_seconds=round(seconds, 3),
+        cells_per_second=round(ncells / seconds, 2),
+        jobs=jobs if own else executor_name,
+    )
     if cfg.settings.smooth_tol > 0:
         table.meta["regularising_pass"] = smoothing
     if out is not None:
@@ -170,38 +216,72 @@ def _sweep(
     evals = np.zeros((nfx, nfz, nv, nc), dtype=np.int64)
     conv = np.zeros((nfx, nfz, nv, nc), dtype=bool)
     slices = _run(
-        {f"slice_V{k:03d}{sfx(c)}": (solve_slice, (cfg, k) + extra(c)) for c in climbs for k in range(nv)},
-        executor, ckpt, tick, nfx * nfz,
+        {
+            f"slice_V{k:03d}{sfx(c)}": (solve_slice, (cfg, k) + extra(c))
+            for c in climbs
+            for k in range(nv)
+        },
+        executor,
+        ckpt,
+        tick,
+        nfx * nfz,
     )
     for ci, c in enumerate(climbs):
         for k in range(nv):
             r = slices[f"slice_V{k:03d}{sfx(c)}"]
-            X[:, :, k, ci], cost[:, :, k, ci], evals[:, :, k, ci], conv[:, :, k, ci] = r["params"], r["cost"], r["evaluations"], r["converged"]
+            X[:, :, k, ci], cost[:, :, k, ci], evals[:, :, k, ci], conv[:, :, k, ci] = (
+                r["params"],
+                r["cost"],
+                r["evaluations"],
+                r["converged"],
+            )
     if cfg.settings.v_passes:
         lines = _run(
             {
-                f"line_Fx{i:03d}{sfx(c)}": (solve_v_line, (cfg, i, X[i, :, :, ci], cost[i, :, :, ci], conv[i, :, :, ci]) + extra(c))
-                for ci, c in enumerate(climbs) for i in range(nfx)
+                f"line_Fx{i:03d}{sfx(c)}": (
+                    solve_v_line,
+                    (cfg, i, X[i, :, :, ci], cost[i, :, :, ci], conv[i, :, :, ci]) + extra(c),
+                )
+                for ci, c in enumerate(climbs)
+                for i in range(nfx)
             },
-            executor, ckpt, tick, nfz * nv,
+            executor,
+            ckpt,
+            tick,
+            nfz * nv,
         )
         for ci, c in enumerate(climbs):
             for i in range(nfx):
                 r = lines[f"line_Fx{i:03d}{sfx(c)}"]
-                X[i, :, :, ci], cost[i, :, :, ci], conv[i, :, :, ci] = r["params"], r["cost"], r["converged"]
+                X[i, :, :, ci], cost[i, :, :, ci], conv[i, :, :, ci] = (
+                    r["params"],
+                    r["cost"],
+                    r["converged"],
+                )
                 evals[i, :, :, ci] += r["evaluations"]
         if g.climb is not None:
             clines = _run(
                 {
-                    f"cline_Fx{i:03d}_V{k:03d}": (solve_climb_line, (cfg, i, k, X[i, :, k], cost[i, :, k], conv[i, :, k]))
-                    for i in range(nfx) for k in range(nv)
+                    f"cline_Fx{i:03d}_V{k:03d}": (
+                        solve_climb_line,
+                        (cfg, i, k, X[i, :, k], cost[i, :, k], conv[i, :, k]),
+                    )
+                    for i in range(nfx)
+                    for k in range(nv)
                 },
-                executor, ckpt, tick, nfz * nc,
+                executor,
+                ckpt,
+                tick,
+                nfz * nc,
             )
             for i in range(nfx):
                 for k in range(nv):
                     r = clines[f"cline_Fx{i:03d}_V{k:03d}"]
-                    X[i, :, k], cost[i, :, k], conv[i, :, k] = r["params"], r["cost"], r["converged"]
+                    X[i, :, k], cost[i, :, k], conv[i, :, k] = (
+                        r["params"],
+                        r["cost"],
+                        r["converged"],
+                    )
                     evals[i, :, k] += r["evaluations"]
     if g.climb is None:
         return X[:, :, :, 0], cost[..., 0], evals[..., 0], conv[..., 0]
@@ -213,7 +293,12 @@ SMOOTH_TASK_CELLS = 8
 
 
 def _regularise(
-    cfg: BuildConfig, executor: Executor, ckpt: Checkpoints, X: np.ndarray, cost: np.ndarray, evals: np.ndarray
+    cfg: BuildConfig,
+    executor: Executor,
+    ckpt: Checkpoints,
+    X: np.ndarray,
+    cost: np.ndarray,
+    evals: np.ndarray,
 ) -> tuple[np.ndarray, np.ndarray, dict[str, Any]]:
     """The regularising pass (:mod:`birdsim.tables.regularise`): red-black rounds over
     the middle cells of zig-zags, tasks of a few cells of one colour.  Returns the new
@@ -222,11 +307,18 @@ def _regularise(
     names, st = model.param_names, cfg.settings
     X, evals = X.copy(), evals.copy()
     D = demand_grid(cfg.grid)
-    Fx, Fz, _ = forces(model, X, D[..., 2], cfg.bird, st.n_search, D[..., 3] if D.shape[-1] > 3 else 0.0)
+    Fx, Fz, _ = forces(
+        model, X, D[..., 2], cfg.bird, st.n_search, D[..., 3] if D.shape[-1] > 3 else 0.0
+    )
     ok = np.maximum(np.abs(Fx - D[..., 0]), np.abs(Fz - D[..., 1])) <= st.reach_tol
     best = np.asarray(cost, dtype=float).copy()
     t0 = time.perf_counter()
-    summary: dict[str, Any] = {"rounds": 0, "cells_resolved": 0, "cells_changed": 0, "zigzag_cells": []}
+    summary: dict[str, Any] = {
+        "rounds": 0,
+        "cells_resolved": 0,
+        "cells_changed": 0,
+        "zigzag_cells": [],
+    }
     for r in range(st.smooth_rounds):
         worked = False
         summary["zigzag_cells"].append(len(zigzag_cells(names, X, ok)))
@@ -240,7 +332,10 @@ def _regularise(
             # independent: how they are grouped does not change the result)
             groups = np.array_split(mids, -(-len(mids) // SMOOTH_TASK_CELLS))
             tasks = {
-                f"smooth_r{r}c{colour}_{k:03d}": (smooth_cells, (cfg, cells, X, ok, best[tuple(cells.T)], D))
+                f"smooth_r{r}c{colour}_{k:03d}": (
+                    smooth_cells,
+                    (cfg, cells, X, ok, best[tuple(cells.T)], D),
+                )
                 for k, cells in enumerate(groups)
             }
             done = _run(tasks, executor, ckpt, lambda k: None, 0)

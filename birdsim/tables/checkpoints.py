@@ -23,7 +23,9 @@ def _is_checkpoint_file(name: str) -> bool:
 
 
 _CHECKPOINT_PATTERNS = tuple(
-    p for stem in ("slice_V*", "line_Fx*", "cline_Fx*", "smooth_r*") for p in (f"{stem}.npz", f".{stem}.npz.*.partial.npz")
+    p
+    for stem in ("slice_V*", "line_Fx*", "cline_Fx*", "smooth_r*")
+    for p in (f"{stem}.npz", f".{stem}.npz.*.partial.npz")
 )
 
 
@@ -37,14 +39,18 @@ class Checkpoints:
     is refused, never cleared.  The folder is removed by :meth:`remove` once the table
     is safely written."""
 
-    def __init__(self, folder: Path | None, digest: str, stamp: dict[str, Any] | None = None) -> None:
+    def __init__(
+        self, folder: Path | None, digest: str, stamp: dict[str, Any] | None = None
+    ) -> None:
         self.folder = folder
         self.discarded: str | None = None
         if folder is None:
             return
         stamp_file = folder / "config.sha"
         if folder.exists() and not folder.is_dir():
-            raise BirdsimError(f"checkpoint_dir {str(folder)!r} is a file; allowed: a folder used only for checkpoints")
+            raise BirdsimError(
+                f"checkpoint_dir {str(folder)!r} is a file; allowed: a folder used only for checkpoints"
+            )
         if folder.exists():
             foreign = sorted(p.name for p in folder.iterdir() if not _is_checkpoint_file(p.name))
             if foreign:
@@ -55,7 +61,9 @@ class Checkpoints:
         if folder.exists():
             old_digest, old_stamp = _read_stamp(stamp_file)
             if old_digest != digest:
-                if any(_is_checkpoint_file(p.name) and p.name != "config.sha" for p in folder.iterdir()):
+                if any(
+                    _is_checkpoint_file(p.name) and p.name != "config.sha" for p in folder.iterdir()
+                ):
                     self.discarded = (
                         f"checkpoints in {str(folder)!r} were written by {_difference(old_stamp, stamp)}; "
                         "they are discarded and the build starts afresh"
@@ -111,4 +119,3 @@ def _difference(old: dict[str, Any], new: dict[str, Any] | None) -> str:
     if old.get("optimiser") != new.get("optimiser"):
         return f"other optimiser settings ({old.get('optimiser')})"
     return "a build of another configuration (grid, bird, cost weights or solver settings)"
-

@@ -55,18 +55,24 @@ def parse_scheduler(spec: str) -> Scheduler:
         except ValueError:
             n = -1
         if not 1 <= n <= MAX_LOCAL_WORKERS:
-            raise BirdsimError(f"--dask {spec!r} is invalid; allowed: local:N with N worker processes, 1 <= N <= {MAX_LOCAL_WORKERS}")
+            raise BirdsimError(
+                f"--dask {spec!r} is invalid; allowed: local:N with N worker processes, 1 <= N <= {MAX_LOCAL_WORKERS}"
+            )
         return Scheduler(spec, local_workers=n)
     if re.fullmatch(r"(tcp|tls)://[^\s:/]+:\d{1,5}", spec):
         return Scheduler(spec, address=spec)
-    raise BirdsimError(f"--dask {spec!r} is invalid; allowed: tcp://HOST:PORT (a running dask scheduler) or local:N")
+    raise BirdsimError(
+        f"--dask {spec!r} is invalid; allowed: tcp://HOST:PORT (a running dask scheduler) or local:N"
+    )
 
 
 def _import_distributed():  # type: ignore[no-untyped-def]
     try:
         import distributed
     except ImportError:
-        raise BirdsimError(f"--dask needs dask.distributed, which is not installed; allowed: {EXTRA_HINT}") from None
+        raise BirdsimError(
+            f"--dask needs dask.distributed, which is not installed; allowed: {EXTRA_HINT}"
+        ) from None
     return distributed
 
 
@@ -90,13 +96,18 @@ def dask_executor(spec: str, connect_timeout: float = CONNECT_TIMEOUT) -> Iterat
     try:
         if sched.local_workers is not None:
             cluster = distributed.LocalCluster(
-                n_workers=sched.local_workers, threads_per_worker=1, processes=True,
-                dashboard_address=":0", silence_logs=logging.ERROR,
+                n_workers=sched.local_workers,
+                threads_per_worker=1,
+                processes=True,
+                dashboard_address=":0",
+                silence_logs=logging.ERROR,
             )
             client = distributed.Client(cluster, set_as_default=False)
         else:
             try:
-                client = distributed.Client(sched.address, timeout=connect_timeout, set_as_default=False)
+                client = distributed.Client(
+                    sched.address, timeout=connect_timeout, set_as_default=False
+                )
             except (OSError, TimeoutError) as exc:
                 raise BirdsimError(
                     f"--dask {sched.address!r}: no scheduler answered within {connect_timeout:g} s ({type(exc).__name__}); "

@@ -22,11 +22,11 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
+from birdsim.errors import BirdsimError
 from birdsim.physics import kernel
 from birdsim.physics.aero import body_drag
 from birdsim.physics.bird import Bird
 from birdsim.physics.cycle import DEFAULT_SAMPLES, evaluate_cycle, sample_phases
-from birdsim.errors import BirdsimError
 from birdsim.physics.kinematics import KinematicModel
 
 #: Names of the cost fractions, in the order of the last axis of ``fractions``.
@@ -49,7 +49,9 @@ class CostWeights:
     def __post_init__(self) -> None:
         for name, value in asdict(self).items():
             if not (isinstance(value, (int, float)) and np.isfinite(value) and value >= 0):
-                raise BirdsimError(f"cost weight {name}={value!r} is invalid; allowed: a finite number >= 0")
+                raise BirdsimError(
+                    f"cost weight {name}={value!r} is invalid; allowed: a finite number >= 0"
+                )
 
     def to_dict(self) -> dict[str, float]:
         return {k: float(v) for k, v in asdict(self).items()}
@@ -99,7 +101,9 @@ def other_cost(
         pitch = X[..., model.param_names.index("pitch")]
         out = out + weights.orientation * pitch * (np.asarray(speed) == 0.0)
     if weights.distance > 0 and previous is not None:
-        out = out + weights.distance * np.linalg.norm(X - np.asarray(previous, dtype=float), axis=-1)
+        out = out + weights.distance * np.linalg.norm(
+            X - np.asarray(previous, dtype=float), axis=-1
+        )
     return out
 
 
@@ -122,8 +126,14 @@ def forces(
         if out is not None:
             return out
     params = {name: X[..., i] for i, name in enumerate(model.param_names)}
-    mean = evaluate_cycle(model, params, speed, climb=climb, bird=bird, n=n, check_bounds=False).mean
-    return (np.asarray(mean.Fx, dtype=float), np.asarray(mean.Fz, dtype=float), np.asarray(mean.P, dtype=float))
+    mean = evaluate_cycle(
+        model, params, speed, climb=climb, bird=bird, n=n, check_bounds=False
+    ).mean
+    return (
+        np.asarray(mean.Fx, dtype=float),
+        np.asarray(mean.Fz, dtype=float),
+        np.asarray(mean.P, dtype=float),
+    )
 
 
 #: Central-difference step (rad) of the fallback gradients (no compiled kernel, or
@@ -161,7 +171,9 @@ def forces_and_gradients(
     out = kernel.means_and_gradients(model, flat, v, vc, bird, sample_phases(n, False))
     if out is None:
         steps = FD_STEP * np.eye(d)
-        Y = np.concatenate([X, (X[:, None, :] + steps).reshape(-1, d), (X[:, None, :] - steps).reshape(-1, d)])
+        Y = np.concatenate(
+            [X, (X[:, None, :] + steps).reshape(-1, d), (X[:, None, :] - steps).reshape(-1, d)]
+        )
         rep = np.concatenate([v, np.repeat(v, d), np.repeat(v, d)])
         rep_c = np.concatenate([vc, np.repeat(vc, d), np.repeat(vc, d)])
         F = forces(model, Y, rep, bird, n, rep_c)
@@ -189,7 +201,9 @@ def _body_drag_pitch_derivative(
     dmag = 0.5 * rho * np.square(vt) * np.sign(np.sin(attack)) * np.cos(attack) * area
     unit = np.divide(1.0, vt, out=np.zeros_like(vt), where=vt > 0.0)
     level_flight = climb == 0.0
-    return np.where(level_flight, level, -dmag * unit * speed), np.where(level_flight, 0.0, dmag * unit * climb)
+    return np.where(level_flight, level, -dmag * unit * speed), np.where(
+        level_flight, 0.0, dmag * unit * climb
+    )
 
 
 def other_cost_gradient(
@@ -213,7 +227,12 @@ def other_cost_gradient(
 
 
 def _kernel_forces(
-    model: KinematicModel, X: np.ndarray, speed: np.ndarray | float, bird: Bird, n: int, climb: np.ndarray | float
+    model: KinematicModel,
+    X: np.ndarray,
+    speed: np.ndarray | float,
+    bird: Bird,
+    n: int,
+    climb: np.ndarray | float,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
     """The lean path of :func:`forces`: the kernel's means without building a Cycle
     (the same numbers as ``evaluate_cycle(...).mean``); None where the kernel cannot

@@ -22,9 +22,17 @@ from birdsim.tables.lookup import STATUS_NAMES, LookupTable
 def _git_commit() -> str:
     here = Path(__file__).resolve().parent
     try:
-        out = subprocess.run(["git", "rev-parse", "HEAD"], cwd=here, capture_output=True, text=True, timeout=10)
+        out = subprocess.run(
+            ["git", "rev-parse", "HEAD"], cwd=here, capture_output=True, text=True, timeout=10
+        )
         commit = out.stdout.strip() or "unknown"
-        dirty = subprocess.run(["git", "status", "--porcelain", "--", "."], cwd=here, capture_output=True, text=True, timeout=10)
+        dirty = subprocess.run(
+            ["git", "status", "--porcelain", "--", "."],
+            cwd=here,
+            capture_output=True,
+            text=True,
+            timeout=10,
+        )
         return commit + ("-dirty" if dirty.stdout.strip() else "")
     except (OSError, subprocess.SubprocessError):
         return "unknown"
@@ -32,17 +40,26 @@ def _git_commit() -> str:
 
 def demand_grid(grid: Any) -> np.ndarray:
     """The demand (Fx, Fz, V[, climb]) of every cell: grid shape x number of axes."""
-    return np.stack(np.meshgrid(*(np.asarray(getattr(grid, a), dtype=float) for a in grid.axis_names), indexing="ij"), axis=-1)
+    return np.stack(
+        np.meshgrid(
+            *(np.asarray(getattr(grid, a), dtype=float) for a in grid.axis_names), indexing="ij"
+        ),
+        axis=-1,
+    )
 
 
 def final_check(cfg: BuildConfig, model: KinematicModel, X: np.ndarray) -> dict[str, np.ndarray]:
     """Cost terms, achieved forces and status of parameters X (grid shape x d) at n_final."""
     D = demand_grid(cfg.grid)
-    Fx, Fz, P = forces(model, X, D[..., 2], cfg.bird, cfg.settings.n_final, D[..., 3] if D.shape[-1] > 3 else 0.0)
+    Fx, Fz, P = forces(
+        model, X, D[..., 2], cfg.bird, cfg.settings.n_final, D[..., 3] if D.shape[-1] > 3 else 0.0
+    )
     other = other_cost(model, X, D[..., 2], cfg.weights)
     b = breakdown_from_forces(Fx, Fz, P, D[..., 0], D[..., 1], cfg.weights, other)
     err = np.maximum(np.abs(Fx - D[..., 0]), np.abs(Fz - D[..., 1]))
-    status = np.where(err > cfg.settings.reach_tol, STATUS_NAMES.index("unreachable"), STATUS_NAMES.index("ok"))
+    status = np.where(
+        err > cfg.settings.reach_tol, STATUS_NAMES.index("unreachable"), STATUS_NAMES.index("ok")
+    )
     bad = ~(np.isfinite(b.total) & np.all(np.isfinite(X), axis=-1))
     status = np.where(bad, STATUS_NAMES.index("failed"), status).astype(np.uint8)
     return {
@@ -54,7 +71,11 @@ def final_check(cfg: BuildConfig, model: KinematicModel, X: np.ndarray) -> dict[
 
 
 def finish_table(
-    cfg: BuildConfig, model: KinematicModel, X: np.ndarray, evals: np.ndarray, converged: np.ndarray | None = None
+    cfg: BuildConfig,
+    model: KinematicModel,
+    X: np.ndarray,
+    evals: np.ndarray,
+    converged: np.ndarray | None = None,
 ) -> LookupTable:
     from birdsim import __version__
 
@@ -76,14 +97,17 @@ def finish_table(
         axes={a: np.asarray(getattr(cfg.grid, a), dtype=float) for a in cfg.grid.axis_names},
         params=X,
         evaluations=evals,
-        converged=np.ones(X.shape[:-1], dtype=bool) if converged is None else converged.astype(bool),
+        converged=np.ones(X.shape[:-1], dtype=bool)
+        if converged is None
+        else converged.astype(bool),
         meta=meta,
         **chk,
     )
 
 
-
-def write_table(table: LookupTable, out: str | Path, force: bool, checkpoints: Checkpoints) -> tuple[Path, Path]:
+def write_table(
+    table: LookupTable, out: str | Path, force: bool, checkpoints: Checkpoints
+) -> tuple[Path, Path]:
     """Write ``table`` to ``out`` (``.npz`` + ``.json``, each atomically: a temporary
     sibling renamed into place) and only then remove the build's checkpoints.  A write
     that fails (disk full, unwritable target, Ctrl-C) leaves the checkpoints, so the
@@ -97,7 +121,13 @@ def write_table(table: LookupTable, out: str | Path, force: bool, checkpoints: C
     try:
         paths = table.save(out, force=force)
     except OSError as exc:
-        kept = f"; the finished build is kept in {str(checkpoints.folder)!r}: run the same command again to write it" if checkpoints.folder else ""
-        raise BirdsimError(f"--out {str(out)!r} could not be written: {exc.strerror or exc}{kept}") from None
+        kept = (
+            f"; the finished build is kept in {str(checkpoints.folder)!r}: run the same command again to write it"
+            if checkpoints.folder
+            else ""
+        )
+        raise BirdsimError(
+            f"--out {str(out)!r} could not be written: {exc.strerror or exc}{kept}"
+        ) from None
     checkpoints.remove()
     return paths

@@ -51,12 +51,20 @@ class Grid:
     def __post_init__(self) -> None:
         for a in self.axis_names:
             ax = getattr(self, a)
-            if len(ax) < 2 or any(not np.isfinite(x) for x in ax) or any(b <= a_ for a_, b in zip(ax, ax[1:])):
-                raise BirdsimError(f"grid {a}={[float(x) for x in ax]} is invalid; allowed: >= 2 finite increasing values")
+            if (
+                len(ax) < 2
+                or any(not np.isfinite(x) for x in ax)
+                or any(b <= a_ for a_, b in zip(ax, ax[1:]))
+            ):
+                raise BirdsimError(
+                    f"grid {a}={[float(x) for x in ax]} is invalid; allowed: >= 2 finite increasing values"
+                )
         if self.V[0] < 0:
             raise BirdsimError(f"grid V starts at {self.V[0]:g}; allowed: speeds >= 0")
         if int(np.prod(self.shape)) > MAX_CELLS:
-            raise BirdsimError(f"grid {'x'.join(map(str, self.shape))} has too many cells; allowed: at most {MAX_CELLS} cells")
+            raise BirdsimError(
+                f"grid {'x'.join(map(str, self.shape))} has too many cells; allowed: at most {MAX_CELLS} cells"
+            )
 
     @classmethod
     def default(cls, size: int = 11) -> "Grid":
@@ -69,16 +77,22 @@ class Grid:
         values ``"V=0|0.5|1"``; axes left out take the default range with ``size`` nodes.
         A ``climb=...`` part, or ``climb=True`` (:data:`CLIMB_DEFAULT`), adds the climb axis."""
         if not isinstance(size, int) or not 2 <= size <= MAX_NODES:
-            raise BirdsimError(f"--size {size!r} is invalid; allowed: an integer in [2, {MAX_NODES}]")
+            raise BirdsimError(
+                f"--size {size!r} is invalid; allowed: an integer in [2, {MAX_NODES}]"
+            )
         defaults = {"Fx": (-0.5, 0.5), "Fz": (-0.5, 0.0), "V": (0.0, 1.0)}
-        axes: dict[str, Any] = {a: tuple(float(x) for x in np.linspace(*defaults[a], size)) for a in AXES}
+        axes: dict[str, Any] = {
+            a: tuple(float(x) for x in np.linspace(*defaults[a], size)) for a in AXES
+        }
         if climb:
             axes[CLIMB] = tuple(float(x) for x in np.linspace(*CLIMB_DEFAULT))
         for part in filter(None, (s.strip() for s in spec.split(","))):
             name, sep, value = part.partition("=")
             name = name.strip()
             if not sep or name not in AXES + (CLIMB,):
-                raise BirdsimError(f"grid {part!r} is malformed; allowed: Fx=LO:HI:COUNT, Fz=..., V=..., climb=... or NAME=A|B|C")
+                raise BirdsimError(
+                    f"grid {part!r} is malformed; allowed: Fx=LO:HI:COUNT, Fz=..., V=..., climb=... or NAME=A|B|C"
+                )
             try:
                 if ":" in value:
                     lo, hi, count = value.split(":")
@@ -89,7 +103,9 @@ class Grid:
                 else:
                     axes[name] = tuple(float(x) for x in value.split("|"))
             except ValueError:
-                raise BirdsimError(f"grid {part!r} is malformed; allowed: {name}=LO:HI:COUNT (2 <= COUNT <= {MAX_NODES}) or {name}=A|B|C") from None
+                raise BirdsimError(
+                    f"grid {part!r} is malformed; allowed: {name}=LO:HI:COUNT (2 <= COUNT <= {MAX_NODES}) or {name}=A|B|C"
+                ) from None
         return cls(**axes)
 
     @property
@@ -109,11 +125,15 @@ class BuildSettings:
     n_final: int = DEFAULT_SAMPLES  # samples per wingbeat of the final check (the stored values)
     screen: int = 1024  # space-filling candidates per V slice, shared by its cells
     starts: int = 2  # screen candidates polished where the warm start is poor
-    screen_gap: float = 0.02  # multi-start unless the warm start beats the best screen candidate by this
+    screen_gap: float = (
+        0.02  # multi-start unless the warm start beats the best screen candidate by this
+    )
     always_polish: int = 1  # screen candidates polished even after a good warm start
     switch_margin: float = 1e-4  # another branch must beat the warm-start branch by this
     polish_rule: bool = True  # skip the polishes that cannot win (docs/performance.md); False: polish every candidate
-    polish_near: float = 0.12  # ... a candidate this near the warm answer (fraction of every parameter's range)
+    polish_near: float = (
+        0.12  # ... a candidate this near the warm answer (fraction of every parameter's range)
+    )
     polish_excess: float = 0.1  # ... and costing 0 to this fraction more than the warm answer
     reach_tol: float = 0.01  # |achieved - demanded| force above which a cell is unreachable
     v_passes: bool = True  # forward and backward passes in V after the slices
@@ -130,14 +150,29 @@ class BuildSettings:
             raise BirdsimError(f"relax={self.relax!r} is invalid; allowed: 0 < relax <= 1")
         for name in ("n_search", "n_final", "screen", "maxiter"):
             if int(getattr(self, name)) < 2:
-                raise BirdsimError(f"{name}={getattr(self, name)!r} is invalid; allowed: an integer >= 2")
+                raise BirdsimError(
+                    f"{name}={getattr(self, name)!r} is invalid; allowed: an integer >= 2"
+                )
         for name in ("polish_rule", "v_passes"):
             if not isinstance(getattr(self, name), bool):
-                raise BirdsimError(f"{name}={getattr(self, name)!r} is invalid; allowed: True or False")
+                raise BirdsimError(
+                    f"{name}={getattr(self, name)!r} is invalid; allowed: True or False"
+                )
         # written as "not (ok)" so that NaN is refused too (every comparison with NaN is False)
         if not self.reach_tol > 0:
             raise BirdsimError(f"reach_tol={self.reach_tol!r} is invalid; allowed: a number > 0")
-        for name in ("starts", "always_polish", "switch_margin", "screen_gap", "polish_near", "polish_excess", "branch_tol", "smooth_tol", "smooth_nu", "smooth_rounds"):
+        for name in (
+            "starts",
+            "always_polish",
+            "switch_margin",
+            "screen_gap",
+            "polish_near",
+            "polish_excess",
+            "branch_tol",
+            "smooth_tol",
+            "smooth_nu",
+            "smooth_rounds",
+        ):
             value = getattr(self, name)
             if not value >= 0:
                 raise BirdsimError(f"{name}={value!r} is invalid; allowed: a number >= 0")
@@ -173,8 +208,13 @@ class BuildConfig:
         return {
             "package_version": __version__,
             "code": code_fingerprint(),
-            "optimiser": {"fd_step": optimize.FD_STEP, "slsqp_ftol": inspect.signature(optimize.slsqp).parameters["ftol"].default},
-            "config": hashlib.sha256(json.dumps(self.to_dict(), sort_keys=True).encode()).hexdigest()[:16],
+            "optimiser": {
+                "fd_step": optimize.FD_STEP,
+                "slsqp_ftol": inspect.signature(optimize.slsqp).parameters["ftol"].default,
+            },
+            "config": hashlib.sha256(
+                json.dumps(self.to_dict(), sort_keys=True).encode()
+            ).hexdigest()[:16],
         }
 
     def digest(self) -> str:
@@ -184,7 +224,14 @@ class BuildConfig:
 
 #: Source files whose change changes the numbers of a table (relative to birdsim/).
 NUMERICAL_SOURCES = (
-    "physics/*.py", "tables/cost.py", "tables/optimize.py", "tables/point.py", "tables/slsqp_driver.py", "tables/sweeps.py", "tables/regularise.py", "tables/finish.py",
+    "physics/*.py",
+    "tables/cost.py",
+    "tables/optimize.py",
+    "tables/point.py",
+    "tables/slsqp_driver.py",
+    "tables/sweeps.py",
+    "tables/regularise.py",
+    "tables/finish.py",
 )
 
 
@@ -212,7 +259,19 @@ def config_from_meta(table: LookupTable) -> BuildConfig:
     )
 
 
-def sub_grid(grid: Grid, Fx: Sequence[int], Fz: Sequence[int], V: Sequence[int], climb: Sequence[int] | None = None) -> Grid:
+def sub_grid(
+    grid: Grid,
+    Fx: Sequence[int],
+    Fz: Sequence[int],
+    V: Sequence[int],
+    climb: Sequence[int] | None = None,
+) -> Grid:
     """The grid restricted to the given indices (e.g. a corner for a rebuild check)."""
-    c = None if grid.climb is None else tuple(grid.climb[i] for i in (climb if climb is not None else range(len(grid.climb))))
-    return Grid(tuple(grid.Fx[i] for i in Fx), tuple(grid.Fz[i] for i in Fz), tuple(grid.V[i] for i in V), c)
+    c = (
+        None
+        if grid.climb is None
+        else tuple(grid.climb[i] for i in (climb if climb is not None else range(len(grid.climb))))
+    )
+    return Grid(
+        tuple(grid.Fx[i] for i in Fx), tuple(grid.Fz[i] for i in Fz), tuple(grid.V[i] for i in V), c
+    )

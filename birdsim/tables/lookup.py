@@ -27,11 +27,11 @@ from typing import Any
 import numpy as np
 from scipy.interpolate import RegularGridInterpolator
 
-from birdsim.physics.bird import Bird
-from birdsim.tables.cost import FRACTION_NAMES
 from birdsim.errors import BirdsimError
 from birdsim.io import check_output, write_atomic
+from birdsim.physics.bird import Bird
 from birdsim.physics.kinematics import MODELS
+from birdsim.tables.cost import FRACTION_NAMES
 
 #: Bump when the file layout changes; tables of another version are refused on load.
 TABLE_FORMAT_VERSION = 1
@@ -62,11 +62,15 @@ class LookupTable:
     status_code: np.ndarray  # nFx x nFz x nV, uint8 index into STATUS_NAMES
     evaluations: np.ndarray  # nFx x nFz x nV, cycle evaluations spent on the cell
     meta: dict[str, Any] = field(default_factory=dict)
-    converged: np.ndarray | None = None  # nFx x nFz x nV, SLSQP's own convergence flag of the kept answer
+    converged: np.ndarray | None = (
+        None  # nFx x nFz x nV, SLSQP's own convergence flag of the kept answer
+    )
 
     def __post_init__(self) -> None:
         if not all(a in self.axes for a in AXES) or set(self.axes) - set(AXES + (CLIMB,)):
-            raise TableError(f"table axes {sorted(self.axes)} are invalid; allowed: Fx, Fz, V and optionally climb")
+            raise TableError(
+                f"table axes {sorted(self.axes)} are invalid; allowed: Fx, Fz, V and optionally climb"
+            )
         shape = tuple(len(self.axes[a]) for a in self.axis_names)
         d = len(self.param_names)
         expected = {
@@ -83,11 +87,20 @@ class LookupTable:
         for name, want in expected.items():
             got = np.shape(getattr(self, name))
             if got != want:
-                raise TableError(f"table array {name} has shape {got}; expected {want} for grid {shape} and {d} parameters")
+                raise TableError(
+                    f"table array {name} has shape {got}; expected {want} for grid {shape} and {d} parameters"
+                )
         for a in self.axis_names:
             ax = np.asarray(self.axes[a], dtype=float)
-            if ax.ndim != 1 or ax.size < 2 or np.any(np.diff(ax) <= 0) or not np.all(np.isfinite(ax)):
-                raise TableError(f"table axis {a}={ax.tolist()} is invalid; allowed: >= 2 finite increasing values")
+            if (
+                ax.ndim != 1
+                or ax.size < 2
+                or np.any(np.diff(ax) <= 0)
+                or not np.all(np.isfinite(ax))
+            ):
+                raise TableError(
+                    f"table axis {a}={ax.tolist()} is invalid; allowed: >= 2 finite increasing values"
+                )
         model = MODELS.get(self.model) if isinstance(self.model, str) else None
         if model is None:
             raise TableError(f"table model {self.model!r} is unknown; allowed: {', '.join(MODELS)}")
@@ -126,24 +139,32 @@ class LookupTable:
     @property
     def demands(self) -> np.ndarray:
         """The demanded (Fx, Fz, V[, climb]) of every cell, grid shape x number of axes."""
-        return np.stack(np.meshgrid(*(self.axes[a] for a in self.axis_names), indexing="ij"), axis=-1)
+        return np.stack(
+            np.meshgrid(*(self.axes[a] for a in self.axis_names), indexing="ij"), axis=-1
+        )
 
     @property
     def force_error(self) -> np.ndarray:
         """max(|Fx - Fx_d|, |Fz - Fz_d|) per cell."""
         d = self.demands
-        return np.maximum(np.abs(self.achieved[..., 0] - d[..., 0]), np.abs(self.achieved[..., 1] - d[..., 1]))
+        return np.maximum(
+            np.abs(self.achieved[..., 0] - d[..., 0]), np.abs(self.achieved[..., 1] - d[..., 1])
+        )
 
     def param(self, name: str) -> np.ndarray:
         """One parameter over the grid (nFx x nFz x nV)."""
         if name not in self.param_names:
-            raise TableError(f"parameter {name!r} is not in this {self.model} table; allowed: {', '.join(self.param_names)}")
+            raise TableError(
+                f"parameter {name!r} is not in this {self.model} table; allowed: {', '.join(self.param_names)}"
+            )
         return self.params[..., self.param_names.index(name)]
 
     def require_model(self, model: str) -> None:
         """Refuse to drive ``model`` with a table made for another model."""
         if model != self.model:
-            raise TableError(f"table is for model {self.model!r}, asked to drive model {model!r}; allowed: a table built for {model!r}")
+            raise TableError(
+                f"table is for model {self.model!r}, asked to drive model {model!r}; allowed: a table built for {model!r}"
+            )
 
     def require_bird(self, bird: Bird) -> None:
         """Refuse to fly ``bird`` with a table built for another reduced bird (one line).
@@ -161,7 +182,9 @@ class LookupTable:
 
     # ---- interpolation ---------------------------------------------------------------
 
-    def _points(self, Fx: Any, Fz: Any, V: Any, clip: bool, climb: Any = 0.0) -> tuple[np.ndarray, tuple[int, ...]]:
+    def _points(
+        self, Fx: Any, Fz: Any, V: Any, clip: bool, climb: Any = 0.0
+    ) -> tuple[np.ndarray, tuple[int, ...]]:
         values = {"Fx": Fx, "Fz": Fz, "V": V, CLIMB: climb}
         arrays = {}
         if not self.has_climb:
@@ -173,7 +196,9 @@ class LookupTable:
                 raise TableError(f"{a}={values[a]!r} is not a number") from None
             if not np.all(np.isfinite(arr)):
                 bad = arr[~np.isfinite(arr)].flat[0] if arr.ndim else float(arr)
-                raise TableError(f"{a}={bad} is not finite; allowed: a number in [{self.axes[a][0]:g}, {self.axes[a][-1]:g}]")
+                raise TableError(
+                    f"{a}={bad} is not finite; allowed: a number in [{self.axes[a][0]:g}, {self.axes[a][-1]:g}]"
+                )
             lo, hi = float(self.axes[a][0]), float(self.axes[a][-1])
             if clip:
                 arr = np.clip(arr, lo, hi)
@@ -182,7 +207,9 @@ class LookupTable:
                 out = (arr < lo - 1e-12) | (arr > hi + 1e-12)
                 if np.any(out):
                     bad = float(arr[out].flat[0]) if arr.ndim else float(arr)
-                    raise TableError(f"{a}={bad:g} is outside the table grid; allowed: [{lo:g}, {hi:g}] (or clip=True)")
+                    raise TableError(
+                        f"{a}={bad:g} is outside the table grid; allowed: [{lo:g}, {hi:g}] (or clip=True)"
+                    )
                 arr = np.clip(arr, lo, hi)
             arrays[a] = arr
         b = np.broadcast_arrays(*(arrays[a] for a in self.axis_names))
@@ -195,7 +222,9 @@ class LookupTable:
         except (TypeError, ValueError):
             raise TableError(f"climb={climb!r} is not a number") from None
         if not np.all(np.isfinite(arr)):
-            raise TableError(f"climb={arr[~np.isfinite(arr)].flat[0] if arr.ndim else float(arr)} is not finite; allowed: 0 (this table has no climb axis)")
+            raise TableError(
+                f"climb={arr[~np.isfinite(arr)].flat[0] if arr.ndim else float(arr)} is not finite; allowed: 0 (this table has no climb axis)"
+            )
         if not clip and np.any(np.abs(arr) > 1e-12):
             bad = float(arr[np.abs(arr) > 1e-12].flat[0]) if arr.ndim else float(arr)
             raise TableError(
@@ -212,7 +241,9 @@ class LookupTable:
             object.__setattr__(self, "_rgi", cached)
         return cached
 
-    def lookup_many(self, Fx: Any, Fz: Any, V: Any, clip: bool = False, *, climb: Any = 0.0) -> dict[str, np.ndarray]:
+    def lookup_many(
+        self, Fx: Any, Fz: Any, V: Any, clip: bool = False, *, climb: Any = 0.0
+    ) -> dict[str, np.ndarray]:
         """Vectorised lookup: arrays (broadcast together) in, a dict of arrays of their
         shape out: every parameter plus ``achieved_Fx``, ``achieved_Fz``, ``achieved_P``
         and ``cost`` (interpolated).  Out-of-grid demands raise unless ``clip``;
@@ -223,7 +254,9 @@ class LookupTable:
         names = list(self.param_names) + [f"achieved_{n}" for n in ACHIEVED_NAMES] + ["cost"]
         return {n: vals[:, k].reshape(shape) for k, n in enumerate(names[: d + 4])}
 
-    def lookup(self, Fx: float, Fz: float, V: float, clip: bool = False, *, climb: float = 0.0) -> dict[str, float]:
+    def lookup(
+        self, Fx: float, Fz: float, V: float, clip: bool = False, *, climb: float = 0.0
+    ) -> dict[str, float]:
         """The interpolated optimal parameters for one demand.
 
         Args:
@@ -244,7 +277,9 @@ class LookupTable:
         out = self.lookup_many(Fx, Fz, V, clip, climb=climb)
         return {n: float(out[n]) for n in self.param_names}
 
-    def status_at(self, Fx: float, Fz: float, V: float, clip: bool = False, *, climb: float = 0.0) -> str:
+    def status_at(
+        self, Fx: float, Fz: float, V: float, clip: bool = False, *, climb: float = 0.0
+    ) -> str:
         """The worst status of the grid cells around a demand (ok < unreachable < failed)."""
         pts, _ = self._points(Fx, Fz, V, clip, climb)
         idx = []
@@ -323,7 +358,9 @@ def load_table(path: str | Path) -> LookupTable:
     npz_path, json_path = table_paths(path)
     for p in (npz_path, json_path):
         if not p.is_file():
-            raise TableError(f"table file {str(p)!r} does not exist; allowed: a table written by `birdsim tables build`")
+            raise TableError(
+                f"table file {str(p)!r} does not exist; allowed: a table written by `birdsim tables build`"
+            )
     try:
         meta = json.loads(json_path.read_text())
         if not isinstance(meta, dict):
@@ -352,7 +389,11 @@ def load_table(path: str | Path) -> LookupTable:
             model=str(meta["model"]),
             bird=Bird.from_dict(meta["bird"]),
             param_names=tuple(meta["param_names"]),
-            axes={a: arrays[f"axis_{a}"] for a in AXES + (CLIMB,) if a in AXES or f"axis_{a}" in arrays},
+            axes={
+                a: arrays[f"axis_{a}"]
+                for a in AXES + (CLIMB,)
+                if a in AXES or f"axis_{a}" in arrays
+            },
             params=arrays["params"],
             cost=arrays["cost"],
             cost_fractions=arrays["cost_fractions"],
@@ -367,7 +408,11 @@ def load_table(path: str | Path) -> LookupTable:
         raise
     except (KeyError, ValueError, TypeError, OSError, EOFError, zipfile.BadZipFile) as exc:
         why = f"missing {exc}" if isinstance(exc, KeyError) else str(exc)
-        raise TableError(f"table file {str(npz_path)!r} is unreadable or incomplete: {why}") from None
+        raise TableError(
+            f"table file {str(npz_path)!r} is unreadable or incomplete: {why}"
+        ) from None
     if npz_version != TABLE_FORMAT_VERSION:
-        raise TableError(f"table file {str(npz_path)!r} has format version {npz_version}; allowed: {TABLE_FORMAT_VERSION}")
+        raise TableError(
+            f"table file {str(npz_path)!r} has format version {npz_version}; allowed: {TABLE_FORMAT_VERSION}"
+        )
     return table

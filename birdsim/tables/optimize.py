@@ -26,12 +26,19 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import optimize as so
 
-from birdsim.physics.bird import Bird
-from birdsim.tables.cost import CostWeights, forces, forces_and_gradients, other_cost, other_cost_gradient, uses_orientation_cost
-from birdsim.tables import slsqp_driver
-from birdsim.tables.point import PointForces
 from birdsim.errors import BirdsimError, check_finite
+from birdsim.physics.bird import Bird
 from birdsim.physics.kinematics import KinematicModel, get_model
+from birdsim.tables import slsqp_driver
+from birdsim.tables.cost import (
+    CostWeights,
+    forces,
+    forces_and_gradients,
+    other_cost,
+    other_cost_gradient,
+    uses_orientation_cost,
+)
+from birdsim.tables.point import PointForces
 
 #: Central-difference step (rad) of the batched gradients: truncation error ~h^2 f''',
 #: round-off ~1e-16/h; 1e-6 keeps both below 1e-9 for these O(1) smooth functions.
@@ -76,7 +83,9 @@ class Problem:
         self.lower = np.asarray(lower, dtype=float)
         self.upper = np.asarray(upper, dtype=float)
         if self.lower.shape != self.upper.shape or np.any(self.lower > self.upper):
-            raise BirdsimError(f"bounds lower={self.lower} upper={self.upper} are invalid; allowed: lower <= upper")
+            raise BirdsimError(
+                f"bounds lower={self.lower} upper={self.upper} are invalid; allowed: lower <= upper"
+            )
         self.evaluations = 0
         self.gradient_evaluations = 0  # points whose gradient was asked for
 
@@ -97,7 +106,9 @@ class Problem:
         R, h = self.parts(X)
         return np.abs(R) @ self.weights + h
 
-    def _parts_and_jacobian(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, float, np.ndarray]:
+    def _parts_and_jacobian(
+        self, x: np.ndarray
+    ) -> tuple[np.ndarray, np.ndarray, float, np.ndarray]:
         """Central differences of :meth:`parts` in one batched call (point + 2d points)."""
         d = self.dim
         steps = FD_STEP * np.eye(d)
@@ -124,7 +135,12 @@ class Problem:
 class FunctionProblem(Problem):
     """A plain vectorised function ``fun(X: M x d) -> M`` (no absolute-value structure)."""
 
-    def __init__(self, fun: Callable[[np.ndarray], np.ndarray], lower: Sequence[float], upper: Sequence[float]) -> None:
+    def __init__(
+        self,
+        fun: Callable[[np.ndarray], np.ndarray],
+        lower: Sequence[float],
+        upper: Sequence[float],
+    ) -> None:
         super().__init__(lower, upper)
         self.fun = fun
 
@@ -161,7 +177,9 @@ class ForceProblem(Problem):
         if self.speed < 0:
             raise BirdsimError(f"speed={speed!r} is invalid; allowed: a finite number >= 0")
         self.cost_weights = weights or CostWeights()
-        self.weights = np.array([self.cost_weights.force_x, self.cost_weights.force_z, self.cost_weights.power])
+        self.weights = np.array(
+            [self.cost_weights.force_x, self.cost_weights.force_z, self.cost_weights.power]
+        )
         self.climb = check_finite("climb", climb, "a finite number (positive up)")
         self.bird = bird or Bird()
         self.previous = None if previous is None else np.asarray(previous, dtype=float)
@@ -170,19 +188,29 @@ class ForceProblem(Problem):
         self._point: PointForces | None | bool = False  # made on first use (None: no lean path)
         # other_cost of one row: the orientation term is linear in the pitch
         self._ip = self.model.param_names.index("pitch")
-        orient = self.cost_weights.orientation > 0 and uses_orientation_cost(self.model) and self.speed == 0.0
+        orient = (
+            self.cost_weights.orientation > 0
+            and uses_orientation_cost(self.model)
+            and self.speed == 0.0
+        )
         self._orientation = self.cost_weights.orientation if orient else 0.0
 
     def _point_forces(self) -> PointForces | None:
         if self._point is False:
             lean = self.evaluator is None
-            self._point = PointForces.create(self.model, self.bird, self.speed, self.climb, self.n) if lean else None
+            self._point = (
+                PointForces.create(self.model, self.bird, self.speed, self.climb, self.n)
+                if lean
+                else None
+            )
         return self._point  # type: ignore[return-value]
 
     def _other_point(self, x: np.ndarray) -> float:
         """:func:`other_cost` of one row (the orientation term is linear in the pitch)."""
         if self.cost_weights.distance > 0 and self.previous is not None:
-            return float(other_cost(self.model, x[None], self.speed, self.cost_weights, self.previous)[0])
+            return float(
+                other_cost(self.model, x[None], self.speed, self.cost_weights, self.previous)[0]
+            )
         return float(self._orientation * x[self._ip])
 
     def point_parts(self, x: np.ndarray) -> tuple[np.ndarray, float]:
@@ -209,7 +237,9 @@ class ForceProblem(Problem):
         Fx, Fz, P = self._forces(np.atleast_2d(x))
         return float(Fx[0]), float(Fz[0]), float(P[0])
 
-    def _parts_and_jacobian(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, float, np.ndarray]:
+    def _parts_and_jacobian(
+        self, x: np.ndarray
+    ) -> tuple[np.ndarray, np.ndarray, float, np.ndarray]:
         """Exact: the kernel's forward-mode gradients (or an evaluator's ``gradients``)."""
         pf = self._point_forces()
         if pf is not None:
@@ -217,7 +247,9 @@ class ForceProblem(Problem):
             vals, jr = pf.gradients(x)
             r = np.array([vals[0] - self.Fx_demand, vals[1] - self.Fz_demand, vals[2]])
             if self.cost_weights.distance > 0 and self.previous is not None:
-                gh = other_cost_gradient(self.model, x[None], self.speed, self.cost_weights, self.previous)[0]
+                gh = other_cost_gradient(
+                    self.model, x[None], self.speed, self.cost_weights, self.previous
+                )[0]
             else:
                 gh = np.zeros(self.dim)
                 gh[self._ip] = self._orientation
@@ -230,7 +262,9 @@ class ForceProblem(Problem):
         if grad_fn is not None:
             (Fx, Fz, P), (gx, gz, gp) = grad_fn(X, self.speed, climb=self.climb)
         else:
-            (Fx, Fz, P), (gx, gz, gp) = forces_and_gradients(self.model, X, self.speed, self.bird, self.n, self.climb)
+            (Fx, Fz, P), (gx, gz, gp) = forces_and_gradients(
+                self.model, X, self.speed, self.bird, self.n, self.climb
+            )
         r = np.array([Fx[0] - self.Fx_demand, Fz[0] - self.Fz_demand, P[0]])
         jr = np.stack([gx[0], gz[0], gp[0]])
         h = other_cost(self.model, X, self.speed, self.cost_weights, self.previous)
@@ -259,12 +293,30 @@ def _finish(
         parts = (R[0], float(h[0]))
     r, h0 = parts
     cost = float(np.abs(r) @ problem.weights + h0)
-    Fx, Fz, P = problem.achieved_from(r) if isinstance(problem, ForceProblem) else (float("nan"),) * 3
-    return Solution(x, cost, method, bool(converged), str(message), problem.evaluations - evals0, int(nit), Fx, Fz, P)
+    Fx, Fz, P = (
+        problem.achieved_from(r) if isinstance(problem, ForceProblem) else (float("nan"),) * 3
+    )
+    return Solution(
+        x,
+        cost,
+        method,
+        bool(converged),
+        str(message),
+        problem.evaluations - evals0,
+        int(nit),
+        Fx,
+        Fz,
+        P,
+    )
 
 
 def slsqp(
-    problem: Problem, x0: Sequence[float], *, maxiter: int = 100, ftol: float = 1e-10, stall: int = STALL_ITERATIONS
+    problem: Problem,
+    x0: Sequence[float],
+    *,
+    maxiter: int = 100,
+    ftol: float = 1e-10,
+    stall: int = STALL_ITERATIONS,
 ) -> Solution:
     """Bounded SLSQP from ``x0`` with slack variables for the absolute values.
 
@@ -346,13 +398,33 @@ def slsqp(
     track(z0)
     if K:
         res = slsqp_driver.minimize(
-            fun, jac, cons, cons_jac, z0, np.concatenate([lo, np.zeros(K)]), np.concatenate([hi, np.full(K, np.inf)]),
-            maxiter=maxiter, ftol=ftol, callback=track,
+            fun,
+            jac,
+            cons,
+            cons_jac,
+            z0,
+            np.concatenate([lo, np.zeros(K)]),
+            np.concatenate([hi, np.full(K, np.inf)]),
+            maxiter=maxiter,
+            ftol=ftol,
+            callback=track,
         )
-        stalled, success, nit, res_message, res_x = res.stopped, res.success, res.nit, res.message, res.x
+        stalled, success, nit, res_message, res_x = (
+            res.stopped,
+            res.success,
+            res.nit,
+            res.message,
+            res.x,
+        )
     else:
         sres = so.minimize(
-            fun, z0, jac=jac, method="SLSQP", bounds=list(zip(lo, hi)), options={"maxiter": maxiter, "ftol": ftol}, callback=track
+            fun,
+            z0,
+            jac=jac,
+            method="SLSQP",
+            bounds=list(zip(lo, hi)),
+            options={"maxiter": maxiter, "ftol": ftol},
+            callback=track,
         )
         stalled = sres.status == 99  # the callback raised StopIteration
         success, nit, res_message, res_x = sres.success, sres.nit, sres.message, sres.x
@@ -378,7 +450,18 @@ def multistart(problem: Problem, starts: np.ndarray, **kwargs: object) -> Soluti
 
 
 def _replace_evals(sol: Solution, evaluations: int, method: str) -> Solution:
-    return Solution(sol.x, sol.cost, method, sol.converged, sol.message, evaluations, sol.iterations, sol.Fx, sol.Fz, sol.P)
+    return Solution(
+        sol.x,
+        sol.cost,
+        method,
+        sol.converged,
+        sol.message,
+        evaluations,
+        sol.iterations,
+        sol.Fx,
+        sol.Fz,
+        sol.P,
+    )
 
 
 def random_starts(problem: Problem, count: int, seed: int | None = 0) -> np.ndarray:
@@ -408,7 +491,9 @@ def complete_search(problem: Problem, nodes: int = 12, *, chunk: int = 50_000) -
     total = int(nodes) ** problem.dim
     best_cost, best_x = np.inf, None
     for start in range(0, total, chunk):
-        idx = np.unravel_index(np.arange(start, min(start + chunk, total)), (int(nodes),) * problem.dim)
+        idx = np.unravel_index(
+            np.arange(start, min(start + chunk, total)), (int(nodes),) * problem.dim
+        )
         X = np.stack([ax[i] for ax, i in zip(axes, idx)], axis=-1)
         c = problem.cost(X)
         k = int(np.argmin(c))
@@ -418,7 +503,13 @@ def complete_search(problem: Problem, nodes: int = 12, *, chunk: int = 50_000) -
 
 
 def evolutionary(
-    problem: Problem, *, seed: int | None = 0, popsize: int = 15, maxiter: int = 200, polish: bool = True, tol: float = 1e-8
+    problem: Problem,
+    *,
+    seed: int | None = 0,
+    popsize: int = 15,
+    maxiter: int = 200,
+    polish: bool = True,
+    tol: float = 1e-8,
 ) -> Solution:
     """scipy's differential evolution (the role of the dissertation's hand-made genetic
     algorithm), the population evaluated in one batched call per generation; optionally
@@ -450,7 +541,15 @@ def evolutionary(
 SOLVERS = ("slsqp", "multistart", "complete", "evolutionary")
 
 
-def solve(problem: Problem, method: str = "multistart", *, x0: Sequence[float] | None = None, starts: int = 8, seed: int | None = 0, **kwargs: object) -> Solution:
+def solve(
+    problem: Problem,
+    method: str = "multistart",
+    *,
+    x0: Sequence[float] | None = None,
+    starts: int = 8,
+    seed: int | None = 0,
+    **kwargs: object,
+) -> Solution:
     """One entry point: ``slsqp`` (from ``x0``), ``multistart`` (``x0`` plus ``starts``
     Sobol points), ``complete`` (``nodes=``) or ``evolutionary``."""
     if method == "slsqp":

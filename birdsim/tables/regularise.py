@@ -34,7 +34,9 @@ from birdsim.tables.smoothness import ZIGZAG_RAD, effect_mask, zigzags
 SAME_TARGET_RAD = 0.02
 
 
-def zigzag_cells(param_names: tuple[str, ...], X: np.ndarray, ok: np.ndarray, ends: bool = True) -> np.ndarray:
+def zigzag_cells(
+    param_names: tuple[str, ...], X: np.ndarray, ok: np.ndarray, ends: bool = True
+) -> np.ndarray:
     """Indices (m x ndim) of the cells of zig-zag triples along some axis (the middles,
     and with ``ends`` the outer cells too: sometimes they are the odd ones), C order."""
     flagged = np.zeros(ok.shape, dtype=bool)
@@ -47,7 +49,9 @@ def zigzag_cells(param_names: tuple[str, ...], X: np.ndarray, ok: np.ndarray, en
     return np.argwhere(flagged)
 
 
-def _neighbours(cell: tuple[int, ...], shape: tuple[int, ...], ok: np.ndarray) -> list[tuple[int, tuple[int, ...]]]:
+def _neighbours(
+    cell: tuple[int, ...], shape: tuple[int, ...], ok: np.ndarray
+) -> list[tuple[int, tuple[int, ...]]]:
     out = []
     for k in range(len(shape)):
         for s in (-1, 1):
@@ -60,7 +64,11 @@ def _neighbours(cell: tuple[int, ...], shape: tuple[int, ...], ok: np.ndarray) -
 
 
 def local_score(
-    param_names: tuple[str, ...], X: np.ndarray, ok: np.ndarray, cell: tuple[int, ...], x: np.ndarray
+    param_names: tuple[str, ...],
+    X: np.ndarray,
+    ok: np.ndarray,
+    cell: tuple[int, ...],
+    x: np.ndarray,
 ) -> tuple[int, float]:
     """(zig-zag triples that involve ``cell`` if it held ``x``, sum of squared parameter
     steps to its reachable neighbours); smaller is smoother."""
@@ -99,18 +107,33 @@ def _targets(cell: tuple[int, ...], X: np.ndarray, ok: np.ndarray) -> list[np.nd
     return kept
 
 
-def _candidate(cfg: BuildConfig, model: KinematicModel, demand: tuple[float, ...], target: np.ndarray) -> tuple[np.ndarray, int, bool]:
+def _candidate(
+    cfg: BuildConfig, model: KinematicModel, demand: tuple[float, ...], target: np.ndarray
+) -> tuple[np.ndarray, int, bool]:
     fx, fz, v, vc = (tuple(demand) + (0.0,))[:4]
     weights = replace(cfg.weights, distance=cfg.weights.distance + cfg.settings.smooth_nu)
     prob = ForceProblem(
-        model, fx, fz, v, weights=weights, bird=cfg.bird, previous=target, n=cfg.settings.n_search, climb=vc
+        model,
+        fx,
+        fz,
+        v,
+        weights=weights,
+        bird=cfg.bird,
+        previous=target,
+        n=cfg.settings.n_search,
+        climb=vc,
     )
     sol = slsqp(prob, target, maxiter=cfg.settings.maxiter)
     return sol.x, prob.evaluations, sol.converged
 
 
 def smooth_cells(
-    cfg: BuildConfig, cells: np.ndarray, X: np.ndarray, ok: np.ndarray, best_cost: np.ndarray, demands: np.ndarray
+    cfg: BuildConfig,
+    cells: np.ndarray,
+    X: np.ndarray,
+    ok: np.ndarray,
+    best_cost: np.ndarray,
+    demands: np.ndarray,
 ) -> dict[str, np.ndarray]:
     """One task of the regularising pass: re-choose the wingbeat of each of ``cells``
     (m x ndim indices into the grid) given the table ``X`` (grid x d), the reachable
@@ -143,19 +166,32 @@ def smooth_cells(
     for m, cell in enumerate(cells):
         cand = np.array(pool[m])
         fx, fz, v, vc = (tuple(demands[cell]) + (0.0,))[:4]
-        prob = ForceProblem(model, fx, fz, v, weights=cfg.weights, bird=cfg.bird, n=st.n_search, climb=vc)
+        prob = ForceProblem(
+            model, fx, fz, v, weights=cfg.weights, bird=cfg.bird, n=st.n_search, climb=vc
+        )
         R, h = prob.parts(cand)
         cost = np.abs(R) @ prob.weights + h
         err = np.max(np.abs(R[:, :2]), axis=1)
         evals[m] += len(cand)
         best[m] = min(best[m], float(cost.min()))
-        admissible = (cost <= best[m] + st.smooth_tol) & ((err <= 0.5 * st.reach_tol) | (err <= err[0] + 1e-9))
+        admissible = (cost <= best[m] + st.smooth_tol) & (
+            (err <= 0.5 * st.reach_tol) | (err <= err[0] + 1e-9)
+        )
         if not admissible.any():  # the current one lost to a much cheaper candidate
             admissible = cost <= cost.min()
-        scores = [local_score(names, X, ok, cell, cand[i]) + (i,) if admissible[i] else None for i in range(len(cand))]
+        scores = [
+            local_score(names, X, ok, cell, cand[i]) + (i,) if admissible[i] else None
+            for i in range(len(cand))
+        ]
         pick = min(s for s in scores if s is not None)[2]
         out_x[m], out_cost[m] = cand[pick], cost[pick]
-    return {"params": out_x, "cost": out_cost, "best": best, "evaluations": evals, "converged": conv}
+    return {
+        "params": out_x,
+        "cost": out_cost,
+        "best": best,
+        "evaluations": evals,
+        "converged": conv,
+    }
 
 
 __all__ = ["ZIGZAG_RAD", "local_score", "smooth_cells", "zigzag_cells"]

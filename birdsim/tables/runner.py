@@ -81,7 +81,9 @@ def _stop_workers(executor: ProcessPoolExecutor) -> None:
     import threading
 
     main = threading.current_thread() is threading.main_thread()
-    previous = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None  # a second Ctrl-C cannot cut this short
+    previous = (
+        signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None
+    )  # a second Ctrl-C cannot cut this short
     try:
         terminate = getattr(executor, "terminate_workers", None)  # Python >= 3.14
         if terminate is not None:
@@ -93,4 +95,3 @@ def _stop_workers(executor: ProcessPoolExecutor) -> None:
     finally:
         if main and previous is not None:
             signal.signal(signal.SIGINT, previous)
-

@@ -51,7 +51,11 @@ def _shift(a: np.ndarray, axis: int, lo: int, hi: int | None) -> np.ndarray:
 
 
 def zigzags(
-    param_names: tuple[str, ...], params: np.ndarray, ok: np.ndarray, axis: int, threshold: float = ZIGZAG_RAD
+    param_names: tuple[str, ...],
+    params: np.ndarray,
+    ok: np.ndarray,
+    axis: int,
+    threshold: float = ZIGZAG_RAD,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The triples along ``axis`` (indexed by their middle cell).
 
@@ -73,7 +77,9 @@ def zigzags(
     reachable = _shift(ok, axis, 0, n - 2) & _shift(ok, axis, 1, n - 1) & _shift(ok, axis, 2, n)
     da, db = m - a, m - b
     out_and_back = (np.sign(da) == np.sign(db)) & (da != 0)
-    size = np.where(out_and_back & both & reachable[..., None], np.minimum(np.abs(da), np.abs(db)), 0.0)
+    size = np.where(
+        out_and_back & both & reachable[..., None], np.minimum(np.abs(da), np.abs(db)), 0.0
+    )
     zig = np.any(size > threshold, axis=-1)
     return reachable, zig, size
 
@@ -86,8 +92,12 @@ class Smoothness:
     triples: int  # reachable triples, all axes
     zigzag_triples: int
     per_axis: dict[str, float]  # zig-zag share along each axis
-    largest_jump: dict[str, float]  # per parameter: largest |step| (rad) between reachable neighbours
-    worst: list[dict[str, Any]] = field(default_factory=list)  # the largest zig-zags: where and how big
+    largest_jump: dict[
+        str, float
+    ]  # per parameter: largest |step| (rad) between reachable neighbours
+    worst: list[dict[str, Any]] = field(
+        default_factory=list
+    )  # the largest zig-zags: where and how big
 
     def to_dict(self) -> dict[str, Any]:
         return {
@@ -134,9 +144,15 @@ def measure(
         per_axis[axis_name] = float(zig.sum() / reachable.sum()) if reachable.sum() else 0.0
         n = params.shape[k]
         step = np.abs(_shift(params, k, 1, n) - _shift(params, k, 0, n - 1))
-        pair = (_shift(ok, k, 1, n) & _shift(ok, k, 0, n - 1))[..., None] & _shift(eff, k, 1, n) & _shift(eff, k, 0, n - 1)
+        pair = (
+            (_shift(ok, k, 1, n) & _shift(ok, k, 0, n - 1))[..., None]
+            & _shift(eff, k, 1, n)
+            & _shift(eff, k, 0, n - 1)
+        )
         if pair.any():
-            jumps = np.maximum(jumps, np.where(pair, step, 0.0).reshape(-1, len(param_names)).max(axis=0))
+            jumps = np.maximum(
+                jumps, np.where(pair, step, 0.0).reshape(-1, len(param_names)).max(axis=0)
+            )
         for idx in np.argwhere(zig):
             p = int(np.argmax(size[tuple(idx)]))
             middle = tuple(int(i) for i in idx)
@@ -144,7 +160,8 @@ def measure(
             found.append((float(size[tuple(idx)][p]), axis_name, param_names[p], middle))
     found.sort(key=lambda f: (-f[0], f[1], f[3]))
     listed = [
-        {"size_rad": round(s, 4), "axis": a, "param": p, "cell": list(c)} | {n: float(axes[n][c[i]]) for i, n in enumerate(names)}
+        {"size_rad": round(s, 4), "axis": a, "param": p, "cell": list(c)}
+        | {n: float(axes[n][c[i]]) for i, n in enumerate(names)}
         for s, a, p, c in found[:worst]
     ]
     return Smoothness(
@@ -159,4 +176,10 @@ def measure(
 
 def table_smoothness(table: Any, worst: int = 5) -> Smoothness:
     """:func:`measure` of a :class:`~birdsim.tables.lookup.LookupTable`."""
-    return measure(tuple(table.param_names), dict(table.axes), np.asarray(table.params), table.status == "ok", worst)
+    return measure(
+        tuple(table.param_names),
+        dict(table.axes),
+        np.asarray(table.params),
+        table.status == "ok",
+        worst,
+    )

@@ -17,17 +17,34 @@ from birdsim.tables.cost import breakdown_from_forces, forces, other_cost
 from birdsim.tables.grid import BuildConfig
 from birdsim.tables.optimize import ForceProblem, box_corners, random_starts, slsqp
 
-
 # ---- one cell -------------------------------------------------------------------------
 
 
 def _problem(
-    cfg: BuildConfig, model: KinematicModel, fx: float, fz: float, v: float, previous: np.ndarray | None, climb: float = 0.0
+    cfg: BuildConfig,
+    model: KinematicModel,
+    fx: float,
+    fz: float,
+    v: float,
+    previous: np.ndarray | None,
+    climb: float = 0.0,
 ) -> ForceProblem:
-    return ForceProblem(model, fx, fz, v, weights=cfg.weights, bird=cfg.bird, previous=previous, n=cfg.settings.n_search, climb=climb)
+    return ForceProblem(
+        model,
+        fx,
+        fz,
+        v,
+        weights=cfg.weights,
+        bird=cfg.bird,
+        previous=previous,
+        n=cfg.settings.n_search,
+        climb=climb,
+    )
 
 
-def _screen(cfg: BuildConfig, model: KinematicModel, v: float, climb: float = 0.0) -> tuple[np.ndarray, tuple[np.ndarray, ...], np.ndarray]:
+def _screen(
+    cfg: BuildConfig, model: KinematicModel, v: float, climb: float = 0.0
+) -> tuple[np.ndarray, tuple[np.ndarray, ...], np.ndarray]:
     """Candidates (S x d), their (Fx, Fz, P) and their non-force cost, one batched call:
     scrambled Sobol points, the model's hover and cruise guesses and the box corners."""
     dummy = _problem(cfg, model, 0.0, 0.0, v, None, climb=climb)
@@ -77,7 +94,9 @@ def _solve_cell(
         if best.cost < c[order[0]] - st.screen_gap:
             polish = st.always_polish  # a good warm start: still try the best screen candidate(s)
     warm_sol = best
-    floor = float(other_cost(model, prob.lower[None], v, cfg.weights)[0])  # the cost's lower bound on the box
+    floor = float(
+        other_cost(model, prob.lower[None], v, cfg.weights)[0]
+    )  # the cost's lower bound on the box
     width = np.where(prob.upper > prob.lower, prob.upper - prob.lower, 1.0)
     for rank, k in enumerate(order[:polish]):
         if st.polish_rule and warm_sol is not None and best is not None:
@@ -91,15 +110,30 @@ def _solve_cell(
             best = sol
         if POLISH_PROBE is not None:
             POLISH_PROBE(
-                cfg=cfg, prob=prob, demand=(fx, fz, v, climb), warm=warm_sol, before=before, rank=rank, candidate=S[k],
-                screen_cost=c[order], screen_force=(Fx[k], Fz[k]), sol=sol, evaluations=prob.evaluations - e0,
+                cfg=cfg,
+                prob=prob,
+                demand=(fx, fz, v, climb),
+                warm=warm_sol,
+                before=before,
+                rank=rank,
+                candidate=S[k],
+                screen_cost=c[order],
+                screen_force=(Fx[k], Fz[k]),
+                sol=sol,
+                evaluations=prob.evaluations - e0,
             )
     assert best is not None
     return best.x, best.cost, prob.evaluations, best.converged
 
 
 def _resolve_from(
-    cfg: BuildConfig, model: KinematicModel, fx: float, fz: float, v: float, start: np.ndarray, climb: float = 0.0
+    cfg: BuildConfig,
+    model: KinematicModel,
+    fx: float,
+    fz: float,
+    v: float,
+    start: np.ndarray,
+    climb: float = 0.0,
 ) -> tuple[np.ndarray, float, int, bool]:
     prob = _problem(cfg, model, fx, fz, v, start if cfg.weights.distance > 0 else None, climb)
     sol = slsqp(prob, start, maxiter=cfg.settings.maxiter)
@@ -128,7 +162,13 @@ def canonical_params(model: KinematicModel, X: np.ndarray) -> np.ndarray:
 
 
 def _improve_cell(
-    cfg: BuildConfig, model: KinematicModel, fx: float, fz: float, v: float, starts: list[np.ndarray], climb: float = 0.0
+    cfg: BuildConfig,
+    model: KinematicModel,
+    fx: float,
+    fz: float,
+    v: float,
+    starts: list[np.ndarray],
+    climb: float = 0.0,
 ) -> tuple[np.ndarray | None, float, int, bool]:
     """The best SLSQP answer from ``starts`` (None if there are none)."""
     prob = _problem(cfg, model, fx, fz, v, None, climb)
@@ -164,11 +204,15 @@ def solve_slice(cfg: BuildConfig, iv: int, ic: int | None = None) -> dict[str, n
     screen = _screen(cfg, model, v, vc)
     warm: np.ndarray | None = None
     for i in reversed(range(nfx)):  # Fx from +max down, Fz at the strongest lift demand
-        X[i, 0], cost[i, 0], evals[i, 0], conv[i, 0] = _solve_cell(cfg, model, g.Fx[i], g.Fz[0], v, warm, screen, climb=vc)
+        X[i, 0], cost[i, 0], evals[i, 0], conv[i, 0] = _solve_cell(
+            cfg, model, g.Fx[i], g.Fz[0], v, warm, screen, climb=vc
+        )
         warm = X[i, 0]
     for j in range(1, nfz):  # Fz upwards to 0 along every Fx line
         for i in range(nfx):
-            X[i, j], cost[i, j], evals[i, j], conv[i, j] = _solve_cell(cfg, model, g.Fx[i], g.Fz[j], v, X[i, j - 1], screen, vc)
+            X[i, j], cost[i, j], evals[i, j], conv[i, j] = _solve_cell(
+                cfg, model, g.Fx[i], g.Fz[j], v, X[i, j - 1], screen, vc
+            )
     X = canonical_params(model, X)
     if cfg.weights.distance == 0:
         # backward pass in Fz (0 -> strongest lift): each cell re-solved from those of its
@@ -177,8 +221,11 @@ def solve_slice(cfg: BuildConfig, iv: int, ic: int | None = None) -> dict[str, n
             for i in range(nfx):
                 near = [(i, j + 1), (i - 1, j), (i + 1, j)]
                 starts = [
-                    X[a, b].copy() for a, b in near
-                    if 0 <= a < nfx and b < nfz and np.max(np.abs(X[a, b] - X[i, j])) >= cfg.settings.branch_tol
+                    X[a, b].copy()
+                    for a, b in near
+                    if 0 <= a < nfx
+                    and b < nfz
+                    and np.max(np.abs(X[a, b] - X[i, j])) >= cfg.settings.branch_tol
                 ]
                 x, c, e, ok = _improve_cell(cfg, model, g.Fx[i], g.Fz[j], v, starts, vc)
                 evals[i, j] += e
@@ -188,7 +235,14 @@ def solve_slice(cfg: BuildConfig, iv: int, ic: int | None = None) -> dict[str, n
     return {"params": X, "cost": cost, "evaluations": evals, "converged": conv}
 
 
-def solve_v_line(cfg: BuildConfig, ifx: int, X: np.ndarray, cost: np.ndarray, conv: np.ndarray, ic: int | None = None) -> dict[str, np.ndarray]:
+def solve_v_line(
+    cfg: BuildConfig,
+    ifx: int,
+    X: np.ndarray,
+    cost: np.ndarray,
+    conv: np.ndarray,
+    ic: int | None = None,
+) -> dict[str, np.ndarray]:
     """Phase 2 for the line Fx = grid.Fx[ifx] (at climb = grid.climb[ic], else 0; arrays
     nFz x nV): a forward and a backward pass in V, each cell re-solved from its
     V-neighbour and kept if cheaper.  With
@@ -199,7 +253,9 @@ def solve_v_line(cfg: BuildConfig, ifx: int, X: np.ndarray, cost: np.ndarray, co
     return _line_passes(cfg, g.Fx[ifx], lambda j, k: (g.Fz[j], g.V[k], vc), X, cost, conv)
 
 
-def solve_climb_line(cfg: BuildConfig, ifx: int, iv: int, X: np.ndarray, cost: np.ndarray, conv: np.ndarray) -> dict[str, np.ndarray]:
+def solve_climb_line(
+    cfg: BuildConfig, ifx: int, iv: int, X: np.ndarray, cost: np.ndarray, conv: np.ndarray
+) -> dict[str, np.ndarray]:
     """Phase 3 of a grid with a climb axis, for Fx = grid.Fx[ifx] and V = grid.V[iv]
     (arrays nFz x nClimb): the passes of :func:`solve_v_line` along climb (upwards, then
     downwards), the same continuation as along V."""
@@ -222,17 +278,29 @@ def _line_passes(
     for order, step in passes:
         for k in order:
             # a neighbour this close is on the same branch: a re-solve would land here again
-            todo = [j for j in range(nfz) if not (plain and np.max(np.abs(X[j, k + step] - X[j, k])) < st.branch_tol)]
+            todo = [
+                j
+                for j in range(nfz)
+                if not (plain and np.max(np.abs(X[j, k + step] - X[j, k])) < st.branch_tol)
+            ]
             for j in todo:
                 fz, v, vc = point(j, k)
-                x_new, c_new, e, ok = _resolve_from(cfg, model, fx, fz, v, X[j, k + step].copy(), vc)
+                x_new, c_new, e, ok = _resolve_from(
+                    cfg, model, fx, fz, v, X[j, k + step].copy(), vc
+                )
                 prev = X[j, k + step]
                 evals[j, k] += e
                 if not plain:
-                    prob = _problem(cfg, model, fx, fz, v, prev if cfg.weights.distance > 0 else None, climb=vc)
+                    prob = _problem(
+                        cfg, model, fx, fz, v, prev if cfg.weights.distance > 0 else None, climb=vc
+                    )
                     if st.relax < 1.0:
                         x_new = st.relax * x_new + (1.0 - st.relax) * prev
-                        X[j, k], cost[j, k], conv[j, k] = x_new, float(prob.cost(x_new[None])[0]), ok
+                        X[j, k], cost[j, k], conv[j, k] = (
+                            x_new,
+                            float(prob.cost(x_new[None])[0]),
+                            ok,
+                        )
                         continue
                     current = float(prob.cost(X[j, k][None])[0])
                 else:

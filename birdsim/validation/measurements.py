@@ -28,8 +28,25 @@ from pathlib import Path
 from birdsim.errors import BirdsimError
 
 COLUMNS = (
-    "id", "quantity", "compare", "kind", "speed_m_s", "speed_to_m_s", "value", "uncertainty",
-    "uncertainty_kind", "unit", "n_birds", "author", "year", "journal", "volume", "pages", "where", "url", "note",
+    "id",
+    "quantity",
+    "compare",
+    "kind",
+    "speed_m_s",
+    "speed_to_m_s",
+    "value",
+    "uncertainty",
+    "uncertainty_kind",
+    "unit",
+    "n_birds",
+    "author",
+    "year",
+    "journal",
+    "volume",
+    "pages",
+    "where",
+    "url",
+    "note",
 )
 KINDS = ("value", "at_least", "at_most", "trend", "yesno", "shown")
 
@@ -53,7 +70,15 @@ COMPARE_KEYS: dict[str, str] = {
     "hover_feasible": "yes=1",
 }
 #: Keys that need a speed (``speed_m_s``); trends need a window (``speed_to_m_s`` too).
-NEEDS_SPEED = {"power", "aoa_mid_downstroke", "aoa_mid_upstroke", "stroke_plane_angle", "amplitude", "body_angle", "wing_weight_support"}
+NEEDS_SPEED = {
+    "power",
+    "aoa_mid_downstroke",
+    "aoa_mid_upstroke",
+    "stroke_plane_angle",
+    "amplitude",
+    "body_angle",
+    "wing_weight_support",
+}
 
 
 class MeasurementsError(BirdsimError):
@@ -107,9 +132,16 @@ class Measurement:
 
     def to_dict(self) -> dict[str, object]:
         return {
-            "id": self.id, "quantity": self.quantity, "kind": self.kind, "value": self.value,
-            "uncertainty": self.uncertainty, "uncertainty_kind": self.uncertainty_kind, "unit": self.unit,
-            "speed_m_s": self.speed_m_s, "speed_to_m_s": self.speed_to_m_s, "text": self.measured_text(),
+            "id": self.id,
+            "quantity": self.quantity,
+            "kind": self.kind,
+            "value": self.value,
+            "uncertainty": self.uncertainty,
+            "uncertainty_kind": self.uncertainty_kind,
+            "unit": self.unit,
+            "speed_m_s": self.speed_m_s,
+            "speed_to_m_s": self.speed_to_m_s,
+            "text": self.measured_text(),
         }
 
 
@@ -133,31 +165,43 @@ def load_measurements(path: str | Path | None = None) -> tuple[Measurement, ...]
     try:
         text = p.read_text(encoding="utf-8")
     except FileNotFoundError:
-        raise MeasurementsError(f"--data {str(p)!r} does not exist; allowed: a measurements CSV file") from None
+        raise MeasurementsError(
+            f"--data {str(p)!r} does not exist; allowed: a measurements CSV file"
+        ) from None
     except (OSError, UnicodeDecodeError) as exc:
         raise MeasurementsError(f"--data {str(p)!r} cannot be read: {exc}") from None
     reader = csv.DictReader(text.splitlines())
     missing = [c for c in COLUMNS if c not in (reader.fieldnames or [])]
     if missing:
-        raise MeasurementsError(f"measurements file {p.name}: column {missing[0]!r} is missing; allowed columns: {', '.join(COLUMNS)}")
+        raise MeasurementsError(
+            f"measurements file {p.name}: column {missing[0]!r} is missing; allowed columns: {', '.join(COLUMNS)}"
+        )
     rows: list[Measurement] = []
     seen: set[str] = set()
     for line, raw in enumerate(reader, start=2):
         rows.append(_parse_row(p.name, line, raw, seen))
     if not rows:
-        raise MeasurementsError(f"measurements file {p.name} has no rows; allowed: at least one measurement")
+        raise MeasurementsError(
+            f"measurements file {p.name} has no rows; allowed: at least one measurement"
+        )
     return tuple(rows)
 
 
 def _parse_row(name: str, line: int, raw: dict[str, str | None], seen: set[str]) -> Measurement:
     rid = (raw.get("id") or "").strip()
-    where = f"measurements file {name} row {rid!r} (line {line})" if rid else f"measurements file {name} line {line}"
+    where = (
+        f"measurements file {name} row {rid!r} (line {line})"
+        if rid
+        else f"measurements file {name} line {line}"
+    )
 
     def bad(column: str, value: object, allowed: str) -> MeasurementsError:
         return MeasurementsError(f"{where}: {column}={value!r} is invalid; allowed: {allowed}")
 
     if None in raw or any(v is None for v in raw.values()):
-        raise MeasurementsError(f"{where}: has {len([v for v in raw.values() if v is not None])} fields; allowed: the {len(COLUMNS)} columns {', '.join(COLUMNS)}")
+        raise MeasurementsError(
+            f"{where}: has {len([v for v in raw.values() if v is not None])} fields; allowed: the {len(COLUMNS)} columns {', '.join(COLUMNS)}"
+        )
     if not rid:
         raise bad("id", rid, "a non-empty identifier")
     if rid in seen:
@@ -195,7 +239,9 @@ def _parse_row(name: str, line: int, raw: dict[str, str | None], seen: set[str])
         if value not in (-1.0, 1.0):
             raise bad("value", f["value"], "-1 (decreases with speed) or 1 (increases) for a trend")
         if speed_to is None or speed is None or speed_to <= speed:
-            raise bad("speed_to_m_s", f["speed_to_m_s"], "a speed above speed_m_s (the trend's window)")
+            raise bad(
+                "speed_to_m_s", f["speed_to_m_s"], "a speed above speed_m_s (the trend's window)"
+            )
     if f["kind"] == "yesno" and value not in (0.0, 1.0):
         raise bad("value", f["value"], "1 (yes) or 0 (no)")
     try:
@@ -209,11 +255,34 @@ def _parse_row(name: str, line: int, raw: dict[str, str | None], seen: set[str])
         except ValueError:
             raise bad("n_birds", f["n_birds"], "an integer or empty") from None
     return Measurement(
-        id=rid, quantity=f["quantity"], compare=f["compare"], kind=f["kind"], value=value, unit=f["unit"],
-        author=f["author"], year=year, journal=f["journal"], volume=f["volume"], pages=f["pages"], where=f["where"],
-        url=f["url"], note=f["note"], uncertainty=unc, uncertainty_kind=f["uncertainty_kind"], n_birds=n_birds,
-        speed_m_s=speed, speed_to_m_s=speed_to,
+        id=rid,
+        quantity=f["quantity"],
+        compare=f["compare"],
+        kind=f["kind"],
+        value=value,
+        unit=f["unit"],
+        author=f["author"],
+        year=year,
+        journal=f["journal"],
+        volume=f["volume"],
+        pages=f["pages"],
+        where=f["where"],
+        url=f["url"],
+        note=f["note"],
+        uncertainty=unc,
+        uncertainty_kind=f["uncertainty_kind"],
+        n_birds=n_birds,
+        speed_m_s=speed,
+        speed_to_m_s=speed_to,
     )
 
 
-__all__ = ["COLUMNS", "COMPARE_KEYS", "KINDS", "Measurement", "MeasurementsError", "default_path", "load_measurements"]
+__all__ = [
+    "COLUMNS",
+    "COMPARE_KEYS",
+    "KINDS",
+    "Measurement",
+    "MeasurementsError",
+    "default_path",
+    "load_measurements",
+]

@@ -45,41 +45,92 @@ def check_page_folder(out: Path, force: bool) -> None:
         raise BirdsimError(f"--out {str(out)!r} is a file; allowed: a folder")
     existing = [f for f in PAGE_FILES if (out / f).exists()]
     if existing and not force:
-        raise BirdsimError(f"--out {str(out)!r} holds {existing[0]} already; allowed: a new folder, or --force to overwrite")
+        raise BirdsimError(
+            f"--out {str(out)!r} holds {existing[0]} already; allowed: a new folder, or --force to overwrite"
+        )
 
 
-def _power_figure(sweep: TrimSweep, rows: Sequence[Row], variants: dict[str, TrimSweep], title: str, table_points: Sequence[dict] = ()):  # noqa: ANN202
+def _power_figure(
+    sweep: TrimSweep,
+    rows: Sequence[Row],
+    variants: dict[str, TrimSweep],
+    title: str,
+    table_points: Sequence[dict] = (),
+):  # noqa: ANN202
     plt = pyplot()
     fig, ax = plt.subplots(figsize=(8, 5))
     ok = np.array([p.trimmed for p in sweep.points])
-    ax.plot(sweep.speeds, np.where(ok, sweep.powers, np.nan), "-o", ms=3, color="C0", label=f"birdsim {sweep.model}, {sweep.label} (whole bird)")
+    ax.plot(
+        sweep.speeds,
+        np.where(ok, sweep.powers, np.nan),
+        "-o",
+        ms=3,
+        color="C0",
+        label=f"birdsim {sweep.model}, {sweep.label} (whole bird)",
+    )
     if (~ok).any():
-        ax.plot(sweep.speeds[~ok], sweep.powers[~ok], "x", color="C3", label="cannot trim (best wingbeat)")
+        ax.plot(
+            sweep.speeds[~ok],
+            sweep.powers[~ok],
+            "x",
+            color="C3",
+            label="cannot trim (best wingbeat)",
+        )
     for i, (label, vs) in enumerate(variants.items()):
         vok = np.array([p.trimmed for p in vs.points])
-        ax.plot(vs.speeds, np.where(vok, vs.powers, np.nan), "--", color=f"C{i + 4}", label=f"birdsim, {label}")
-    tp = [(pt["speed"], pt["table_power"]) for pt in table_points if pt.get("table_power") is not None]
+        ax.plot(
+            vs.speeds,
+            np.where(vok, vs.powers, np.nan),
+            "--",
+            color=f"C{i + 4}",
+            label=f"birdsim, {label}",
+        )
+    tp = [
+        (pt["speed"], pt["table_power"]) for pt in table_points if pt.get("table_power") is not None
+    ]
     if tp:
-        ax.plot(*zip(*tp), ".", color="0.4", ms=5, label="shipped table, interpolated at the level-flight demand")
+        ax.plot(
+            *zip(*tp),
+            ".",
+            color="0.4",
+            ms=5,
+            label="shipped table, interpolated at the level-flight demand",
+        )
     mp = sweep.min_power()
     if mp is not None:
-        ax.plot([mp[0]], [mp[1]], "v", color="C0", ms=9, label=f"birdsim minimum power {mp[0]:.1f} m/s")
+        ax.plot(
+            [mp[0]], [mp[1]], "v", color="C0", ms=9, label=f"birdsim minimum power {mp[0]:.1f} m/s"
+        )
     for r in rows:
         m = r.measurement
         if m.compare in ("power", "hover_power") and m.kind in ("value", "at_most"):
             x = m.speed_m_s or 0.0
             marker = "s" if m.kind == "value" else "_"
-            ax.errorbar([x], [m.value], yerr=[m.uncertainty or 0.0], fmt=marker, color="k", ms=7, capsize=4)
-            ax.annotate(f"{m.author.split(',')[0].split(' ')[0]} {m.year}" + (" (max)" if m.kind == "at_most" else ""),
-                        (x, m.value), textcoords="offset points", xytext=(6, 4), fontsize=8)
+            ax.errorbar(
+                [x], [m.value], yerr=[m.uncertainty or 0.0], fmt=marker, color="k", ms=7, capsize=4
+            )
+            ax.annotate(
+                f"{m.author.split(',')[0].split(' ')[0]} {m.year}"
+                + (" (max)" if m.kind == "at_most" else ""),
+                (x, m.value),
+                textcoords="offset points",
+                xytext=(6, 4),
+                fontsize=8,
+            )
         if m.compare == "min_power_speed":
             lo, hi = m.value - (m.uncertainty or 0.0), m.value + (m.uncertainty or 0.0)
-            ax.axvspan(lo, hi, color="0.85", label=f"measured minimum-power speed ({m.author} {m.year})")
+            ax.axvspan(
+                lo, hi, color="0.85", label=f"measured minimum-power speed ({m.author} {m.year})"
+            )
     ax.set_xlabel("flight speed [m/s]")
     ax.set_ylabel("mechanical power, whole bird [W]")
     ax.set_title(title, fontsize=10)
     shown = [p.power for s in (sweep, *variants.values()) for p in s.points if p.trimmed]
-    shown += [r.measurement.value + (r.measurement.uncertainty or 0.0) for r in rows if r.measurement.compare in ("power", "hover_power")]
+    shown += [
+        r.measurement.value + (r.measurement.uncertainty or 0.0)
+        for r in rows
+        if r.measurement.compare in ("power", "hover_power")
+    ]
     ax.set_ylim(0, 1.45 * max(shown, default=1.0))
     ax.legend(fontsize=7, loc="upper left", framealpha=0.8)
     ax.grid(alpha=0.3)
@@ -95,9 +146,21 @@ def _kinematics_figure(sweep: TrimSweep, rows: Sequence[Row], title: str):  # no
     def series(attr: str) -> np.ndarray:
         return np.where(ok, [getattr(p, attr) for p in sweep.points], np.nan)
 
-    a1.plot(v, series("amplitude_deg"), "-o", ms=3, label="birdsim: flap amplitude 2 Phi_f (peak to peak)")
+    a1.plot(
+        v,
+        series("amplitude_deg"),
+        "-o",
+        ms=3,
+        label="birdsim: flap amplitude 2 Phi_f (peak to peak)",
+    )
     a2.plot(v, series("body_angle_deg"), "-o", ms=3, label="birdsim: body angle (pitch)")
-    a2.plot(v, series("stroke_plane_deg"), "-s", ms=3, label="birdsim: tip path to horizontal, 90 - (pitch + stroke plane)")
+    a2.plot(
+        v,
+        series("stroke_plane_deg"),
+        "-s",
+        ms=3,
+        label="birdsim: tip path to horizontal, 90 - (pitch + stroke plane)",
+    )
     notes: dict[int, list[str]] = {0: [], 1: []}
     for r in rows:
         m = r.measurement
@@ -105,14 +168,30 @@ def _kinematics_figure(sweep: TrimSweep, rows: Sequence[Row], title: str):  # no
             ax = a1 if m.compare == "amplitude_slope" else a2
             ax.axvspan(m.speed_m_s or 0.0, m.speed_to_m_s or 0.0, color="0.93")
             arrow = "decreases" if m.value < 0 else "increases"
-            what = {"amplitude_slope": "amplitude", "body_angle_slope": "body angle", "stroke_plane_slope": "stroke plane"}[m.compare]
+            what = {
+                "amplitude_slope": "amplitude",
+                "body_angle_slope": "body angle",
+                "stroke_plane_slope": "stroke plane",
+            }[m.compare]
             notes[0 if ax is a1 else 1].append(
                 f"measured {what} {arrow} with speed ({m.speed_m_s:g}-{m.speed_to_m_s:g} m/s, {m.author} {m.year}): birdsim {r.verdict.split(' (')[0]}"
             )
-        if m.compare in ("stroke_plane_angle", "body_angle", "amplitude") and m.kind in ("value", "shown"):
+        if m.compare in ("stroke_plane_angle", "body_angle", "amplitude") and m.kind in (
+            "value",
+            "shown",
+        ):
             ax = a1 if m.compare == "amplitude" else a2
-            ax.errorbar([m.speed_m_s or 0.0], [m.value], yerr=[m.uncertainty or 0.0], fmt="D", color="k", capsize=4,
-                        label=f"measured stroke plane beta ({m.author.split(',')[0]} {m.year}; convention not read)" if m.kind == "shown" else m.quantity)
+            ax.errorbar(
+                [m.speed_m_s or 0.0],
+                [m.value],
+                yerr=[m.uncertainty or 0.0],
+                fmt="D",
+                color="k",
+                capsize=4,
+                label=f"measured stroke plane beta ({m.author.split(',')[0]} {m.year}; convention not read)"
+                if m.kind == "shown"
+                else m.quantity,
+            )
     for i, (ax, ylabel) in enumerate(((a1, "amplitude [deg]"), (a2, "angle [deg]"))):
         ax.set_title("\n".join(notes[i]), fontsize=7)
         ax.set_xlabel("flight speed [m/s]")
@@ -139,16 +218,22 @@ def diagnose(row: Row) -> str:
             continue
         if m.kind == "trend":
             fixed = (v < 0) == (m.value < 0) and v != 0
-            parts.append(f"with {label} the slope is {v:+.3g} ({'right' if fixed else 'still the wrong'} sign)")
+            parts.append(
+                f"with {label} the slope is {v:+.3g} ({'right' if fixed else 'still the wrong'} sign)"
+            )
             if fixed:
                 closing.append(label)
             continue
-        base, new = abs(math.log(abs(row.birdsim or 1e-300) / abs(m.value))), abs(math.log(abs(v) or 1e-300) - math.log(abs(m.value)))
+        base, new = (
+            abs(math.log(abs(row.birdsim or 1e-300) / abs(m.value))),
+            abs(math.log(abs(v) or 1e-300) - math.log(abs(m.value))),
+        )
         parts.append(f"with {label} {v:.3g} {m.unit} ({'closer' if new < base else 'further'})")
         if new < math.log(ROUGH):
             closing.append(label)
     verdict = (
-        f"{' and '.join(closing)} close{'s' if len(closing) == 1 else ''} the gap." if closing
+        f"{' and '.join(closing)} close{'s' if len(closing) == 1 else ''} the gap."
+        if closing
         else "Neither the other polar nor induced velocity closes the gap: the cause lies in what the model leaves out "
         "(unsteady and added-mass forces, the tail, wing folding and hand rotation, the bounded kinematics)."
     )
@@ -204,7 +289,7 @@ tr.off td:nth-child(6),tr.opposite td:nth-child(6){{background:#fdd}}</style></h
 bounds agree when met; trends compare the sign of the slope only; rows marked "shown" are not compared. Powers are the whole bird's
 mechanical (aerodynamic) power, both wings. Every measured value and its citation come from the data file; see docs/validation.md.</p>
 <table><tr><th>quantity</th><th>measured</th><th>source</th><th>birdsim</th><th>ratio</th><th>verdict</th><th>other physics</th></tr>
-{''.join(trs)}</table>
+{"".join(trs)}</table>
 {off_html}
 <h2>Power curve</h2><img src="power_curve.png" alt="power curve">
 <h2>Amplitude and angles</h2><img src="kinematics.png" alt="amplitude and angles against speed">
@@ -213,7 +298,15 @@ mechanical (aerodynamic) power, both wings. Every measured value and its citatio
 """
 
 
-def write_page(out: Path, obj: dict, rows: Sequence[Row], sweep: TrimSweep, variants: dict[str, TrimSweep], *, force: bool) -> Path:
+def write_page(
+    out: Path,
+    obj: dict,
+    rows: Sequence[Row],
+    sweep: TrimSweep,
+    variants: dict[str, TrimSweep],
+    *,
+    force: bool,
+) -> Path:
     """Write the page into ``out`` (created); every file atomically.
 
     Args:
@@ -231,9 +324,15 @@ def write_page(out: Path, obj: dict, rows: Sequence[Row], sweep: TrimSweep, vari
     curve_variants = {k: v for k, v in variants.items() if len(v.points) > 2}
     figs = {
         "power_curve.png": _power_figure(
-            sweep, rows, curve_variants, "Level flight: trimmed wingbeat's mechanical power against speed", obj.get("power_curve", ())
+            sweep,
+            rows,
+            curve_variants,
+            "Level flight: trimmed wingbeat's mechanical power against speed",
+            obj.get("power_curve", ()),
         ),
-        "kinematics.png": _kinematics_figure(sweep, rows, "Trimmed wingbeat: amplitude and angles against speed"),
+        "kinematics.png": _kinematics_figure(
+            sweep, rows, "Trimmed wingbeat: amplitude and angles against speed"
+        ),
     }
     out.mkdir(parents=True, exist_ok=True)
     for name, fig in figs.items():

@@ -43,19 +43,27 @@ def load_flying_bird(path: str | Path | None, polar: str | None = None) -> Bird:
     """
     p = Path(path) if path is not None else DEFAULT_BIRD
     if path is None and not p.exists():
-        raise BirdConfigError(f"--bird: the default pigeon {str(p)!r} is missing; allowed: --bird FILE.toml with mass and gravity")
+        raise BirdConfigError(
+            f"--bird: the default pigeon {str(p)!r} is missing; allowed: --bird FILE.toml with mass and gravity"
+        )
     try:
         data = tomllib.loads(p.read_text())
     except FileNotFoundError:
-        raise BirdConfigError(f"--bird {str(p)!r} does not exist; allowed: a readable TOML file") from None
+        raise BirdConfigError(
+            f"--bird {str(p)!r} does not exist; allowed: a readable TOML file"
+        ) from None
     except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
         raise BirdConfigError(f"--bird {str(p)!r} is not valid TOML: {exc}") from None
     for key in ("mass", "gravity"):
         if key not in data:
-            raise BirdConfigError(f"--bird {str(p)!r} has no {key}; allowed: a bird file with mass and gravity > 0 (validation flies the bird's weight)")
+            raise BirdConfigError(
+                f"--bird {str(p)!r} has no {key}; allowed: a bird file with mass and gravity > 0 (validation flies the bird's weight)"
+            )
     bird = Bird.from_dict(data)
     if not bird.gravity > 0:
-        raise BirdConfigError(f"--bird {str(p)!r}: gravity={bird.gravity!r} is invalid; allowed: a number > 0")
+        raise BirdConfigError(
+            f"--bird {str(p)!r}: gravity={bird.gravity!r} is invalid; allowed: a number > 0"
+        )
     if polar is not None:
         if polar not in POLARS:
             raise BirdConfigError(f"--polar {polar!r} is unknown; allowed: {', '.join(POLARS)}")
@@ -109,9 +117,13 @@ def validate(
     if progress:
         from tqdm import tqdm
 
-        bar = tqdm(total=len(speeds), unit="speed", desc=f"validate {model}", leave=False, disable=None)
+        bar = tqdm(
+            total=len(speeds), unit="speed", desc=f"validate {model}", leave=False, disable=None
+        )
     try:
-        sweep = trim_sweep(model, bird, speeds, extra_starts=tab.starts if tab else None, progress=bar)
+        sweep = trim_sweep(
+            model, bird, speeds, extra_starts=tab.starts if tab else None, progress=bar
+        )
     finally:
         if bar is not None:
             bar.close()
@@ -125,10 +137,15 @@ def validate(
         "bird_file": bird_file,
         "polar": bird.polar.kind,
         "induced_velocity": bird.induced_velocity,
-        "units": {"speed": "m/s", "power": "W (whole bird, both wings, mechanical)", "params": "rad (table names)"},
+        "units": {
+            "speed": "m/s",
+            "power": "W (whole bird, both wings, mechanical)",
+            "params": "rad (table names)",
+        },
         "rows": [r.to_dict() for r in rows],
         "power_curve": [
-            {**p.to_dict(), "table_power": None if tab is None else tab.power[i]} for i, p in enumerate(sweep.points)
+            {**p.to_dict(), "table_power": None if tab is None else tab.power[i]}
+            for i, p in enumerate(sweep.points)
         ],
         "table": None if table is None else table_label(bird, model),
         "min_power_speed": None if mp is None else mp[0],
@@ -151,7 +168,9 @@ def scorecard_text(v: Validation) -> str:
     for r in v.rows:
         m = r.measurement
         ratio = "" if r.ratio is None else f"{r.ratio:.2f}"
-        lines.append(f"{m.quantity[:60]:60s} {m.measured_text()[:32]:32s} {r.birdsim_text:20s} {ratio:>6s}  {r.verdict}   [{m.source}]")
+        lines.append(
+            f"{m.quantity[:60]:60s} {m.measured_text()[:32]:32s} {r.birdsim_text:20s} {ratio:>6s}  {r.verdict}   [{m.source}]"
+        )
         for k, val in r.variants.items():
             lines.append(f"{'':60s} {'':32s}   with {k}: {r.value_text(val)}")
     mp, rng, pmin = v.obj["min_power_speed"], v.obj["trim_range"], v.obj["min_power"]

@@ -32,8 +32,15 @@ AGREE, ROUGH = 1.5, 2.0
 #: Speeds of the power curve [m/s]: 0 to 22 every 1 m/s (plus every speed a row names).
 DEFAULT_SPEEDS = tuple(float(v) for v in range(0, 23))
 #: Curve rows recomputed for a variant use every second speed of the curve.
-CURVE_KEYS = {"min_power_speed", "max_lift_drag", "max_trim_speed", "min_trim_speed",
-              "amplitude_slope", "body_angle_slope", "stroke_plane_slope"}
+CURVE_KEYS = {
+    "min_power_speed",
+    "max_lift_drag",
+    "max_trim_speed",
+    "min_trim_speed",
+    "amplitude_slope",
+    "body_angle_slope",
+    "stroke_plane_slope",
+}
 
 
 @dataclass(frozen=True)
@@ -64,9 +71,16 @@ class Row:
     def to_dict(self) -> dict[str, object]:
         m = self.measurement
         return {
-            "id": m.id, "quantity": m.quantity, "measured": m.to_dict(), "source": m.source, "url": m.url,
-            "birdsim": self.birdsim, "birdsim_text": self.birdsim_text, "ratio": self.ratio,
-            "verdict": self.verdict, "variants": dict(self.variants),
+            "id": m.id,
+            "quantity": m.quantity,
+            "measured": m.to_dict(),
+            "source": m.source,
+            "url": m.url,
+            "birdsim": self.birdsim,
+            "birdsim_text": self.birdsim_text,
+            "ratio": self.ratio,
+            "verdict": self.verdict,
+            "variants": dict(self.variants),
         }
 
 
@@ -117,14 +131,22 @@ def model_value(m: Measurement, sweep: TrimSweep, bird: Bird) -> float | None:
         return None if rng is None else rng[1 if key == "max_trim_speed" else 0]
     if key == "max_lift_drag":
         weight = bird.mass * bird.gravity
-        ld = [weight * p.speed / p.power for p in sweep.points if p.trimmed and p.speed > 0 and p.power > 0]
+        ld = [
+            weight * p.speed / p.power
+            for p in sweep.points
+            if p.trimmed and p.speed > 0 and p.power > 0
+        ]
         return max(ld) if ld else None
     if key.endswith("_slope"):
         lo, hi = m.speed_m_s or 0.0, m.speed_to_m_s or 0.0
         pts = [p for p in sweep.points if p.trimmed and lo - 1e-9 <= p.speed <= hi + 1e-9]
         if len(pts) < 2:
             return None
-        attr = {"amplitude_slope": "amplitude_deg", "body_angle_slope": "body_angle_deg", "stroke_plane_slope": "stroke_plane_deg"}[key]
+        attr = {
+            "amplitude_slope": "amplitude_deg",
+            "body_angle_slope": "body_angle_deg",
+            "stroke_plane_slope": "stroke_plane_deg",
+        }[key]
         x = np.array([p.speed for p in pts])
         y = np.array([getattr(p, attr) for p in pts])
         return float(np.polyfit(x, y, 1)[0])
@@ -151,7 +173,9 @@ def model_value(m: Measurement, sweep: TrimSweep, bird: Bird) -> float | None:
     raise BirdsimError(f"compare={key!r} has no birdsim value; allowed: a key of COMPARE_KEYS")
 
 
-def sweep_speeds(measurements: Sequence[Measurement], base: Sequence[float] = DEFAULT_SPEEDS) -> tuple[float, ...]:
+def sweep_speeds(
+    measurements: Sequence[Measurement], base: Sequence[float] = DEFAULT_SPEEDS
+) -> tuple[float, ...]:
     """The curve's speeds plus every speed a row is evaluated at, sorted."""
     extra = {m.speed_m_s for m in measurements if m.speed_m_s is not None and m.kind != "trend"}
     return tuple(sorted(set(base) | {float(v) for v in extra}))
@@ -162,7 +186,9 @@ def variant_birds(bird: Bird) -> dict[str, Bird]:
     other = SeedPolar() if isinstance(bird.polar, RoboflyPolar) else RoboflyPolar()
     return {
         f"{other.kind} polar": replace(bird, polar=other),
-        "induced velocity " + ("off" if bird.induced_velocity else "on"): replace(bird, induced_velocity=not bird.induced_velocity),
+        "induced velocity " + ("off" if bird.induced_velocity else "on"): replace(
+            bird, induced_velocity=not bird.induced_velocity
+        ),
     }
 
 
@@ -199,16 +225,33 @@ def score(
     if variants and off:
         starts = {p.speed: np.array([p.params[n] for n in p.params]) for p in sweep.points}
         need_curve = any(r.measurement.compare in CURVE_KEYS for r in off)
-        point_speeds = {0.0 if r.measurement.compare.startswith("hover") else (r.measurement.speed_m_s or 0.0)
-                        for r in off if r.measurement.compare not in CURVE_KEYS}
+        point_speeds = {
+            0.0 if r.measurement.compare.startswith("hover") else (r.measurement.speed_m_s or 0.0)
+            for r in off
+            if r.measurement.compare not in CURVE_KEYS
+        }
         speeds = sorted(point_speeds | (set(sweep.speeds[::2].tolist()) if need_curve else set()))
         for label, vb in variant_birds(bird).items():
             if progress is not None:
                 progress(label)
-            vsweeps[label] = trim_sweep(sweep.model, vb, speeds, start_from=[starts[s] for s in speeds], label=label, backward=False)
+            vsweeps[label] = trim_sweep(
+                sweep.model,
+                vb,
+                speeds,
+                start_from=[starts[s] for s in speeds],
+                label=label,
+                backward=False,
+            )
         rows = [
-            replace(r, variants={lab: _safe(r.measurement, vs, vb) for (lab, vs), vb in zip(vsweeps.items(), variant_birds(bird).values())})
-            if r in off else r
+            replace(
+                r,
+                variants={
+                    lab: _safe(r.measurement, vs, vb)
+                    for (lab, vs), vb in zip(vsweeps.items(), variant_birds(bird).values())
+                },
+            )
+            if r in off
+            else r
             for r in rows
         ]
     return tuple(rows), vsweeps
@@ -221,4 +264,14 @@ def _safe(m: Measurement, sweep: TrimSweep, bird: Bird) -> float | None:
         return None
 
 
-__all__ = ["AGREE", "DEFAULT_SPEEDS", "ROUGH", "Row", "model_value", "score", "sweep_speeds", "variant_birds", "verdict_for"]
+__all__ = [
+    "AGREE",
+    "DEFAULT_SPEEDS",
+    "ROUGH",
+    "Row",
+    "model_value",
+    "score",
+    "sweep_speeds",
+    "variant_birds",
+    "verdict_for",
+]

@@ -45,7 +45,9 @@ def find_table(bird: Bird, model: str) -> LookupTable | None:
     return table
 
 
-def level_flight_from_table(table: LookupTable, bird: Bird, speeds: Sequence[float], path: str | Path = "") -> TableLevelFlight:
+def level_flight_from_table(
+    table: LookupTable, bird: Bird, speeds: Sequence[float], path: str | Path = ""
+) -> TableLevelFlight:
     """Look the level-flight demand up at each speed (see the module docstring).
 
     Returns:
@@ -64,7 +66,11 @@ def level_flight_from_table(table: LookupTable, bird: Bird, speeds: Sequence[flo
             for _ in range(2):
                 out = table.lookup_many(fx, -w / 2.0, v_red)
                 pitch = float(out[table.param_names[i_pitch]])
-                fx = float(body_drag_x(np.array(v), np.array(pitch), bird.rho, bird.body_drag_area)) / 2.0 / sc.force
+                fx = (
+                    float(body_drag_x(np.array(v), np.array(pitch), bird.rho, bird.body_drag_area))
+                    / 2.0
+                    / sc.force
+                )
         except TableError:
             starts.append(None)
             powers.append(None)

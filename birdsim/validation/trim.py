@@ -31,7 +31,13 @@ from birdsim.physics.aero import body_drag_x
 from birdsim.physics.bird import Bird
 from birdsim.physics.cycle import evaluate_cycle
 from birdsim.physics.frames import earth_to_body
-from birdsim.physics.kinematics import KinematicModel, body_to_panel, get_model, joint_states, points_in_body
+from birdsim.physics.kinematics import (
+    KinematicModel,
+    body_to_panel,
+    get_model,
+    joint_states,
+    points_in_body,
+)
 from birdsim.physics.units import Scales, scales, weight_in_table_units
 from birdsim.tables.cost import forces
 from birdsim.tables.optimize import ForceProblem, Solution, box_corners, random_starts, slsqp
@@ -77,7 +83,12 @@ class TrimPoint:
         return 90.0 - math.degrees(self.params["pitch"] + self.params.get("stroke_plane", 0.0))
 
     def to_dict(self) -> dict[str, object]:
-        return {"speed": self.speed, "power": self.power, "params": dict(self.params), "trimmed": self.trimmed}
+        return {
+            "speed": self.speed,
+            "power": self.power,
+            "params": dict(self.params),
+            "trimmed": self.trimmed,
+        }
 
 
 @dataclass(frozen=True)
@@ -103,7 +114,9 @@ class TrimSweep:
         for p in self.points:
             if abs(p.speed - speed) < 1e-9:
                 return p
-        raise BirdsimError(f"speed={speed!r} m/s is not in the sweep; allowed: {', '.join(f'{p.speed:g}' for p in self.points)}")
+        raise BirdsimError(
+            f"speed={speed!r} m/s is not in the sweep; allowed: {', '.join(f'{p.speed:g}' for p in self.points)}"
+        )
 
     def min_power(self) -> tuple[float, float] | None:
         """(speed, power) of least power among trimmed points, refined by a parabola through
@@ -112,7 +125,11 @@ class TrimSweep:
         if not ok:
             return None
         i = min(ok, key=lambda j: self.points[j].power)
-        if 0 < i < len(self.points) - 1 and self.points[i - 1].trimmed and self.points[i + 1].trimmed:
+        if (
+            0 < i < len(self.points) - 1
+            and self.points[i - 1].trimmed
+            and self.points[i + 1].trimmed
+        ):
             x = np.array([self.points[j].speed for j in (i - 1, i, i + 1)])
             y = np.array([self.points[j].power for j in (i - 1, i, i + 1)])
             a, b, c = np.polyfit(x, y, 2)
@@ -140,25 +157,39 @@ class TrimProblem(ForceProblem):
     """Level flight of ``bird`` at ``speed_si``: residuals (whole-bird Fx / 2, Fz_table + w/2),
     in the reduced units of the bird (force rho omega^2 s^3 c, power rho omega^3 s^4 c)."""
 
-    def __init__(self, model: KinematicModel, bird: Bird, speed_si: float, *, n: int = N_SEARCH) -> None:
+    def __init__(
+        self, model: KinematicModel, bird: Bird, speed_si: float, *, n: int = N_SEARCH
+    ) -> None:
         self.sc: Scales = scales(bird)
         self.speed_si = float(speed_si)
         self.bird_si = bird
         w = weight_in_table_units(bird)
-        super().__init__(model, 0.0, -w / 2.0, self.speed_si / self.sc.speed, bird=bird, n=n, evaluator=self._evaluate)
+        super().__init__(
+            model,
+            0.0,
+            -w / 2.0,
+            self.speed_si / self.sc.speed,
+            bird=bird,
+            n=n,
+            evaluator=self._evaluate,
+        )
         self.weight = w
 
     def _evaluate(self, X: np.ndarray, speed: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         Fx, Fz, P = forces(self.model, X, self.speed_si, self.bird_si, self.n)
         pitch = X[:, self.model.param_names.index("pitch")]
-        drag = body_drag_x(np.full(X.shape[0], self.speed_si), pitch, self.bird_si.rho, self.bird_si.body_drag_area)
+        drag = body_drag_x(
+            np.full(X.shape[0], self.speed_si), pitch, self.bird_si.rho, self.bird_si.body_drag_area
+        )
         return (Fx - drag / 2.0) / self.sc.force, Fz / self.sc.force, P / self.sc.power
 
 
 def check_flying_bird(bird: Bird) -> None:
     """A bird validation can fly: it needs gravity (weight). Raises BirdsimError naming the field."""
     if not bird.gravity > 0:
-        raise BirdsimError(f"bird.gravity={bird.gravity!r} is invalid; allowed: a number > 0 (level flight carries the weight m g)")
+        raise BirdsimError(
+            f"bird.gravity={bird.gravity!r} is invalid; allowed: a number > 0 (level flight carries the weight m g)"
+        )
 
 
 def _point(problem: TrimProblem, sol: Solution) -> TrimPoint:
@@ -240,7 +271,9 @@ def trim_sweep(
     return TrimSweep(m.name, points, time.perf_counter() - t0, label)
 
 
-def angle_of_attack_deg(model: str | KinematicModel, bird: Bird, point: TrimPoint, phase: float) -> float:
+def angle_of_attack_deg(
+    model: str | KinematicModel, bird: Bird, point: TrimPoint, phase: float
+) -> float:
     """Geometric angle of attack [deg] of the (first) panel's control point at wingbeat
     phase ``phase`` (rad; 0 = mid-downstroke, pi = mid-upstroke), relative to the
     freestream plus flapping velocity (and the disc's inflow when induced velocity is on,
@@ -270,4 +303,12 @@ def angle_of_attack_deg(model: str | KinematicModel, bird: Bird, point: TrimPoin
     return float(np.degrees(np.arctan2(np.asarray(vz), np.asarray(vx))).ravel()[0])
 
 
-__all__ = ["TRIM_TOL", "TrimPoint", "TrimProblem", "TrimSweep", "angle_of_attack_deg", "check_flying_bird", "trim_sweep"]
+__all__ = [
+    "TRIM_TOL",
+    "TrimPoint",
+    "TrimProblem",
+    "TrimSweep",
+    "angle_of_attack_deg",
+    "check_flying_bird",
+    "trim_sweep",
+]
