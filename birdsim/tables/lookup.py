@@ -65,6 +65,9 @@ class LookupTable:
     converged: np.ndarray | None = (
         None  # nFx x nFz x nV, SLSQP's own convergence flag of the kept answer
     )
+    #: per-cell moments and Jacobians (birdsim.tables.jacobians), stored or None; see
+    #: :meth:`moment_jacobians` (computes and caches them when absent)
+    jacobians: Any = None
 
     def __post_init__(self) -> None:
         if not all(a in self.axes for a in AXES) or set(self.axes) - set(AXES + (CLIMB,)):
@@ -109,6 +112,10 @@ class LookupTable:
                 f"table param_names={list(self.param_names)} do not match model {self.model}; "
                 f"allowed: {', '.join(model.param_names)}"
             )
+        if self.jacobians is not None:
+            from birdsim.tables.jacobians import check_jacobians
+
+            check_jacobians(self, self.jacobians)
         codes = np.asarray(self.status_code)
         if codes.dtype.kind not in "iu" or np.any(codes < 0) or np.any(codes >= len(STATUS_NAMES)):
             raise TableError(
@@ -294,6 +301,24 @@ class LookupTable:
         codes = self.status_code[np.ix_(*idx)]
         return STATUS_NAMES[int(codes.max())]
 
+    # ---- moments and Jacobians (issue 22) ----------------------------------------------
+
+    def moment_jacobians(self):
+        """Every cell's moments and Jacobians (:class:`birdsim.tables.jacobians.TableJacobians`,
+        table units): the stored ones, else computed now and cached on the table."""
+        from birdsim.tables.jacobians import cached_jacobians
+
+        return cached_jacobians(self)
+
+    def lookup_jacobians(
+        self, Fx: float, Fz: float, V: float, clip: bool = False, *, climb: float = 0.0
+    ) -> dict[str, np.ndarray]:
+        """Moments and Jacobians at one demand, multilinear between the cells as
+        :meth:`lookup` (``birdsim.tables.jacobians.interpolate_jacobians``)."""
+        from birdsim.tables.jacobians import interpolate_jacobians
+
+        return interpolate_jacobians(self, self._points(Fx, Fz, V, clip, climb)[0])
+
     # ---- files -----------------------------------------------------------------------
 
     def save(self, path: str | Path, force: bool = False) -> tuple[Path, Path]:
@@ -313,6 +338,7 @@ class LookupTable:
             status_code=self.status_code.astype(np.uint8),
             evaluations=self.evaluations.astype(np.int64),
             converged=np.asarray(self.converged, dtype=bool),
+            **({} if self.jacobians is None else _jacobian_arrays(self.jacobians)),
         )
         data = buf.getvalue()
         meta = dict(self.meta)
@@ -328,9 +354,17 @@ class LookupTable:
             npz_sha256=hashlib.sha256(data).hexdigest(),
             npz_file=npz_path.name,
         )
+        if self.jacobians is not None:
+            meta["jacobians"] = self.jacobians.meta()
         write_atomic(npz_path, data)
         write_atomic(json_path, (json.dumps(meta, indent=2, sort_keys=False) + "\n").encode())
         return npz_path, json_path
+
+
+def _jacobian_arrays(jac) -> dict[str, np.ndarray]:
+    from birdsim.tables.jacobians import to_arrays
+
+    return to_arrays(jac)
 
 
 def table_paths(path: str | Path) -> tuple[Path, Path]:
@@ -402,11 +436,20 @@ def load_table(path: str | Path) -> LookupTable:
             evaluations=arrays["evaluations"],
             meta=meta,
             converged=arrays.get("converged"),
+            jacobians=_stored_jacobians(arrays, meta),
         )
         npz_version = int(arrays["format_version"])
     except TableError:
         raise
-    except (KeyError, ValueError, TypeError, OSError, EOFError, zipfile.BadZipFile) as exc:
+    except (
+        KeyError,
+        ValueError,
+        TypeError,
+        OSError,
+        EOFError,
+        zipfile.BadZipFile,
+        BirdsimError,
+    ) as exc:
         why = f"missing {exc}" if isinstance(exc, KeyError) else str(exc)
         raise TableError(
             f"table file {str(npz_path)!r} is unreadable or incomplete: {why}"
@@ -416,3 +459,9 @@ def load_table(path: str | Path) -> LookupTable:
             f"table file {str(npz_path)!r} has format version {npz_version}; allowed: {TABLE_FORMAT_VERSION}"
         )
     return table
+
+
+def _stored_jacobians(arrays: dict, meta: dict):
+    from birdsim.tables.jacobians import from_arrays
+
+    return from_arrays(arrays, meta)
