@@ -181,3 +181,18 @@ def test_bad_inputs_are_one_line(kwargs, text):
     with pytest.raises(BirdsimError, match=None) as exc:
         wingbeat_moments("m1", _params("m1"), 0.5, **kwargs)
     assert text in str(exc.value) and "\n" not in str(exc.value)
+
+
+@pytest.mark.parametrize("model", MODELS)
+@pytest.mark.parametrize("strips", [1, 3])
+def test_kernel_equals_numpy_reference(model, strips):
+    # the compiled means against the numpy path (1e-12, as every kernel mean); its exact
+    # derivatives against the reference's central differences (FD_TOL)
+    bird = Bird(strips=strips)
+    kw = dict(u=[0.02, -0.01, 0.03, 0.01], body_rate=(0.1, -0.05, 0.2), jacobians=True)
+    a = wingbeat_moments(model, _params(model, "hover"), 0.3, bird, **kw)
+    b = wingbeat_moments(model, _params(model, "hover"), 0.3, bird, backend="numpy", **kw)
+    for f in ("force_body", "moment_body"):
+        np.testing.assert_allclose(getattr(a, f), getattr(b, f), rtol=0, atol=1e-12)
+    for f in ("force_du", "moment_du", "force_drate", "moment_drate"):
+        np.testing.assert_allclose(getattr(a, f), getattr(b, f), rtol=0, atol=FD_TOL)
