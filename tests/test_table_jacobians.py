@@ -89,3 +89,19 @@ def test_command_adds_them(tiny, tmp_path, capsys):
     assert "needs --force" in capsys.readouterr().err
     assert main(["tables", "jacobians", str(tmp_path / "t.npz"), "--force"]) == 0
     assert load_table(tmp_path / "t").jacobians is not None
+
+
+def test_a_file_whose_jacobians_belong_to_another_bird_is_refused(tiny, tmp_path, capsys):
+    import json
+
+    t = replace(tiny, jacobians=table_jacobians(tiny))
+    _, js = t.save(tmp_path / "t")
+    meta = json.loads(js.read_text())
+    meta["jacobians"]["bird"]["chord"] = 0.5  # another reduced bird (the npz checksum holds)
+    js.write_text(json.dumps(meta))
+    with pytest.raises(TableError) as exc:
+        load_table(tmp_path / "t")
+    assert "reduced bird differs" in str(exc.value) and "\n" not in str(exc.value)
+    assert main(["tables", "info", str(tmp_path / "t.npz")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "reduced bird differs" in err
