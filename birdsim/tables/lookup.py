@@ -323,6 +323,8 @@ class LookupTable:
 
     def save(self, path: str | Path, force: bool = False) -> tuple[Path, Path]:
         """Write ``<stem>.npz`` and ``<stem>.json`` atomically; refuse to overwrite without ``force``."""
+        from birdsim.tables.jacobians import to_arrays
+
         npz_path, json_path = table_paths(path)
         check_output(npz_path, force)
         check_output(json_path, force, arg="path (json)")
@@ -338,7 +340,7 @@ class LookupTable:
             status_code=self.status_code.astype(np.uint8),
             evaluations=self.evaluations.astype(np.int64),
             converged=np.asarray(self.converged, dtype=bool),
-            **({} if self.jacobians is None else _jacobian_arrays(self.jacobians)),
+            **({} if self.jacobians is None else to_arrays(self.jacobians)),
         )
         data = buf.getvalue()
         meta = dict(self.meta)
@@ -359,12 +361,6 @@ class LookupTable:
         write_atomic(npz_path, data)
         write_atomic(json_path, (json.dumps(meta, indent=2, sort_keys=False) + "\n").encode())
         return npz_path, json_path
-
-
-def _jacobian_arrays(jac) -> dict[str, np.ndarray]:
-    from birdsim.tables.jacobians import to_arrays
-
-    return to_arrays(jac)
 
 
 def table_paths(path: str | Path) -> tuple[Path, Path]:
@@ -389,6 +385,8 @@ def load_table(path: str | Path) -> LookupTable:
             truncated, not a table, of another format version, or when the two do not
             belong together (checksum).
     """
+    from birdsim.tables.jacobians import from_arrays
+
     npz_path, json_path = table_paths(path)
     for p in (npz_path, json_path):
         if not p.is_file():
@@ -436,20 +434,12 @@ def load_table(path: str | Path) -> LookupTable:
             evaluations=arrays["evaluations"],
             meta=meta,
             converged=arrays.get("converged"),
-            jacobians=_stored_jacobians(arrays, meta),
+            jacobians=from_arrays(arrays, meta),
         )
         npz_version = int(arrays["format_version"])
     except TableError:
         raise
-    except (
-        KeyError,
-        ValueError,
-        TypeError,
-        OSError,
-        EOFError,
-        zipfile.BadZipFile,
-        BirdsimError,
-    ) as exc:
+    except (KeyError, ValueError, TypeError, OSError, EOFError, zipfile.BadZipFile) as exc:
         why = f"missing {exc}" if isinstance(exc, KeyError) else str(exc)
         raise TableError(
             f"table file {str(npz_path)!r} is unreadable or incomplete: {why}"
@@ -459,9 +449,3 @@ def load_table(path: str | Path) -> LookupTable:
             f"table file {str(npz_path)!r} has format version {npz_version}; allowed: {TABLE_FORMAT_VERSION}"
         )
     return table
-
-
-def _stored_jacobians(arrays: dict, meta: dict):
-    from birdsim.tables.jacobians import from_arrays
-
-    return from_arrays(arrays, meta)
