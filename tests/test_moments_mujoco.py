@@ -1,4 +1,5 @@
-"""MuJoCo cross-check of the whole-bird mean moment with an asymmetric wingbeat.
+"""MuJoCo cross-check of the whole-bird mean moment with an asymmetric wingbeat, with
+and without a body rate.
 
 The torso is held at the wingbeat's pitch (gravity and contacts off, the freestream as
 ``opt.wind``), the two wings follow different prescriptions (the right and left wings of
@@ -51,8 +52,21 @@ def _left_indices(m):
     return np.array(qpos), np.array(dof)
 
 
-@pytest.mark.parametrize("model, V", [("m1", 0.5), ("m3", 0.0), ("m3", 0.6), ("m4", 0.4)])
-def test_mean_moment_matches_mujoco_with_asymmetric_wings(model, V):
+@pytest.mark.parametrize(
+    "model, V, rate",
+    [
+        ("m1", 0.5, (0.0, 0.0, 0.0)),
+        ("m3", 0.0, (0.0, 0.0, 0.0)),
+        ("m3", 0.6, (0.0, 0.0, 0.0)),
+        ("m4", 0.4, (0.0, 0.0, 0.0)),
+        ("m3", 0.5, (0.3, -0.2, 0.25)),
+        ("m4", 0.0, (-0.2, 0.1, 0.3)),
+    ],
+)
+def test_mean_moment_matches_mujoco_with_asymmetric_wings(model, V, rate):
+    # with a body rate the torso turns at omega at its pitched attitude in every sample
+    # (the free joint's angular velocity is in the body frame, MuJoCo axes: C omega); the
+    # callback's site velocities then carry omega x r, as the core's elements do
     bird = Bird()
     params = get_model(model).guess("hover" if V == 0 else "cruise")
     u = np.array([0.06, 0.08, -0.05, 0.1])
@@ -66,6 +80,7 @@ def test_mean_moment_matches_mujoco_with_asymmetric_wings(model, V):
     iq, iv = _left_indices(m)
     qpos[:, iq], qvel[:, iv], qacc[:, iv] = lq[:, iq], lv[:, iv], lacc[:, iv]
     set_root(m, qpos, qvel, pitch=params["pitch"], position_seed=HOLD_POSITION_SEED)
+    qvel[:, 3:6] = C * np.asarray(rate)
     d = mujoco.MjData(m)
 
     def held_torque() -> np.ndarray:
@@ -80,6 +95,6 @@ def test_mean_moment_matches_mujoco_with_asymmetric_wings(model, V):
     with aero_forces(m, model, bird):
         on = held_torque()
     mujoco_moment = -(on - off) * C
-    core = wingbeat_moments(model, params, V, bird, u=u, n=n)
+    core = wingbeat_moments(model, params, V, bird, u=u, n=n, body_rate=rate)
     assert np.abs(core.moment_body[[0, 2]]).max() > 1e-3  # the asymmetry rolls and yaws
     np.testing.assert_allclose(mujoco_moment, core.moment_body, rtol=0, atol=1e-12)
