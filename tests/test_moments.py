@@ -196,3 +196,12 @@ def test_kernel_equals_numpy_reference(model, strips):
         np.testing.assert_allclose(getattr(a, f), getattr(b, f), rtol=0, atol=1e-12)
     for f in ("force_du", "moment_du", "force_drate", "moment_drate"):
         np.testing.assert_allclose(getattr(a, f), getattr(b, f), rtol=0, atol=FD_TOL)
+
+
+def test_a_symmetric_sweep_may_be_part_of_the_baseline():
+    # m3 with sweep 0.1 given in params is m3 with u = sweep(sym) 0.1 from sweep 0
+    p = _params("m3")
+    a = wingbeat_moments("m3", {**p, "sweep": 0.1}, 0.5)
+    b = wingbeat_moments("m3", p, 0.5, u=[0.0, 0.0, 0.0, 0.1])
+    np.testing.assert_allclose(a.moment_body, b.moment_body, rtol=0, atol=1e-15)
+    assert abs(a.moment_body[1]) > 1e-3

@@ -133,6 +133,9 @@ def wing_params(
     """The right and left wings' parameters for the symmetric wingbeat ``params`` and the
     control inputs ``u`` (len k, :data:`CONTROL_INPUTS` order; None = zeros).
 
+    ``params``: every parameter of the model; an input parameter the model does not
+    optimise (``sweep`` for m3) may be given too (default 0).
+
     Returns:
         ``(params_right, params_left)``: the model's parameters plus any input parameter
         it does not optimise (e.g. ``sweep`` for m3, 0 without input); ``pitch`` is the
@@ -143,14 +146,15 @@ def wing_params(
     """
     mx = input_model(model)
     base = get_model(mx.name)
-    p = validate_params(base, params, check_bounds=False)
+    extra = {n: 0.0 for n in mx.param_names if n not in base.param_names}
+    p = validate_params(
+        mx, {**extra, **params} if isinstance(params, Mapping) else params, check_bounds=False
+    )
     if any(a.ndim for a in p.values()):
         raise BirdsimError("params must be floats here; allowed: one wingbeat (floats)")
     inputs = CONTROL_INPUTS[mx.name]
     uu = _check_u(u, len(inputs))
     right = {k: float(v) for k, v in p.items()}
-    for name in mx.param_names:  # an input parameter the model does not optimise
-        right.setdefault(name, 0.0)
     left = dict(right)
     for (name, kind), ui in zip(inputs, uu):
         if kind == "diff":
@@ -190,7 +194,8 @@ def wingbeat_moments(
 
     Args:
         model: a model name or :class:`KinematicModel`.
-        params: the symmetric wingbeat (every parameter of the model, floats) [rad].
+        params: the symmetric wingbeat (every parameter of the model, floats, plus
+            optionally an input parameter it does not optimise, default 0) [rad].
         V: flight speed relative to the air (>= 0), bird units.
         bird: the bird (default: the seed bird).
         u: the control inputs (k,) of :data:`CONTROL_INPUTS` (None: zeros).
