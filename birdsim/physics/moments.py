@@ -21,8 +21,9 @@ gives the right wing ``+u/2`` and the left ``-u/2`` of that wingbeat parameter,
 (``sweep`` for base, m1, m3, m4; ``stroke_plane`` for base, m1, m2; default 0): the
 core then evaluates the model's chain with that constant joint added where MuJoCo's
 shoulder (a ball joint composing sweep, stroke, flap, twist) has it; at 0 it is the
-model's own wingbeat.  Why these inputs:
-docs/moments.md.
+model's own wingbeat.  Why these inputs: docs/moments.md.
+
+The moments ignore the optional induced velocity (``Bird.induced_velocity``).
 """
 
 from __future__ import annotations
@@ -39,6 +40,7 @@ from birdsim.physics.inputs import _check_climb, check_body_rate
 from birdsim.physics.kinematics import (
     _PARAMS,
     JOINTS,
+    MODELS,
     KinematicModel,
     get_model,
     validate_params,
@@ -51,7 +53,7 @@ from birdsim.physics.kinematics import (
 #: inputs of this model at sweep 0 and in hover, are not among them).
 CONTROL_INPUTS: dict[str, tuple[tuple[str, str], ...]] = {
     m: (("stroke_plane", "diff"), ("flap_amp", "diff"), ("twist_amp", "diff"), ("sweep", "sym"))
-    for m in ("base", "m1", "m2", "m3", "m4")
+    for m in MODELS
 }
 KINDS = ("diff", "sym")
 
@@ -99,9 +101,7 @@ def input_model(model: str | KinematicModel) -> KinematicModel:
         for chain in m.chains:
             for n in missing:  # before the first joint that comes later in MuJoCo's order
                 rank = _ORDER.index(_ADDABLE[n])
-                at = next(
-                    i for i, el in enumerate(chain) if _ORDER.index(getattr(el, "name", "|")) > rank
-                )
+                at = next(i for i, el in enumerate(chain) if _rank(getattr(el, "name", "|")) > rank)
                 chain = chain[:at] + (JOINTS[_ADDABLE[n]],) + chain[at:]
             chains.append(chain)
         params = m.params + tuple(_PARAMS[n] for n in missing)
@@ -113,6 +113,11 @@ def input_model(model: str | KinematicModel) -> KinematicModel:
 _ADDABLE = {"sweep": "sweep", "stroke_plane": "stroke"}
 _EXTENDED: dict[tuple[str, tuple[str, ...]], KinematicModel] = {}
 _ORDER = ("heave", "sweep", "stroke", "flap", "twist", "|", "wrist_flap", "wrist_twist")
+
+
+def _rank(joint: str) -> int:
+    """A joint's place in MuJoCo's order (a joint it does not list: after the stroke)."""
+    return _ORDER.index(joint) if joint in _ORDER else _ORDER.index("flap")
 
 
 def _check_u(u: object, k: int) -> np.ndarray:
