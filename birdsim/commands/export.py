@@ -12,7 +12,7 @@ from pathlib import Path
 
 from birdsim.commands.common import add_bird_arguments, bird_from_args
 from birdsim.commands.render_flight import add_flight_arguments
-from birdsim.errors import BirdsimError
+from birdsim.errors import BirdsimError, limits_text, magnitude_ok
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -78,14 +78,16 @@ def _positive(arg: str, raw: str | None) -> float | None:
         v = float(raw)
     except ValueError:
         raise BirdsimError(f"{arg} {raw!r} is not a number; allowed: a number > 0") from None
-    if not (math.isfinite(v) and v > 0):
-        raise BirdsimError(f"{arg} {raw!r} is invalid; allowed: a number > 0")
+    if not (math.isfinite(v) and magnitude_ok(v, positive=True)):
+        raise BirdsimError(
+            f"{arg} {raw!r} is invalid; allowed: a number > 0, {limits_text(positive=True)}"
+        )
     return v
 
 
 def run(args: argparse.Namespace) -> int:
     from birdsim import export
-    from birdsim.commands.render import _load_table, check_writable, require_bird
+    from birdsim.commands.common import check_writable, load_model_table, require_bird
     from birdsim.export.frames import check_fps
 
     # every cheap check first: a mistake costs nothing and writes nothing
@@ -134,7 +136,7 @@ def run(args: argparse.Namespace) -> int:
             source=f"flight log {Path(args.source).name}",
         )  # type: ignore[arg-type]
     elif not args.kinematic:  # free flight, the default: flown as `birdsim render` flies it
-        from birdsim.commands.fly import load_bird
+        from birdsim.commands.common import load_bird
         from birdsim.commands.render_flight import flight_reference, fly_reference
         from birdsim.export.flightlog import frames_from_log
         from birdsim.export.frames import time_per_second
@@ -174,7 +176,7 @@ def run(args: argparse.Namespace) -> int:
         from birdsim.tables.shipped import table_folder
 
         table_path = Path(args.table) if args.table else table_folder() / f"{model}.npz"
-        table = _load_table(table_path, model, explicit=bool(args.table))
+        table = load_model_table(table_path, model, explicit=bool(args.table))
         bird = bird_from_args(args) if (args.bird or args.set) else None
         if bird is not None:
             require_bird(table, bird, table_path)

@@ -7,7 +7,7 @@ import json
 import math
 
 from birdsim.commands.common import add_bird_arguments, bird_from_args, parse_pairs
-from birdsim.errors import BirdsimError
+from birdsim.errors import BirdsimError, check_number
 from birdsim.physics.cycle import DEFAULT_SAMPLES, evaluate_cycle
 from birdsim.physics.kinematics import get_model
 
@@ -74,6 +74,7 @@ def run(args: argparse.Namespace) -> int:
         raise BirdsimError(
             f"--climb {args.climb} is invalid; allowed: a finite number (positive up)"
         )
+    check_number("--climb", climb, "a finite number (positive up)")
     if not args.appendix_grid and not 2 <= args.samples <= MAX_SAMPLES:
         raise BirdsimError(
             f"--samples {args.samples} is invalid; allowed: an integer >= 2 and <= {MAX_SAMPLES}"

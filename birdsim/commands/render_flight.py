@@ -8,6 +8,14 @@ import argparse
 import dataclasses
 from pathlib import Path
 
+from birdsim.commands.common import (
+    check_still,
+    check_writable,
+    load_bird,
+    load_table_for,
+    parse_pairs,
+    slug,
+)
 from birdsim.errors import BirdsimError
 
 
@@ -68,8 +76,6 @@ def fly_reference(
     Raises:
         BirdsimError: a bird without gravity, a table for another model or bird.
     """
-    from birdsim.commands.common import parse_pairs
-    from birdsim.commands.fly import load_bird, load_table_for
     from birdsim.flight.flightlog import log_arrays
     from birdsim.flight.freeflight import fly
 
@@ -92,7 +98,6 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
 
     ``options_from_args(args, seconds=None)`` builds the RenderOptions as the kinematic
     path does (one place for size, fps, camera, quality...)."""
-    from birdsim.commands.render import _slug, check_still, check_writable
     from birdsim.flight.flightlog import load_log
     from birdsim.flight.flightstates import flight_states
     from birdsim.render.gl import select_gl
@@ -105,12 +110,12 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
             )
         log = load_log(args.manoeuvre, "LOG")
         name = str(log.get("manoeuvre", "")) or Path(args.manoeuvre).stem
-        default_out = Path("renders") / f"{_slug(Path(args.manoeuvre).stem)}.mp4"
+        default_out = Path("renders") / f"{slug(Path(args.manoeuvre).stem)}.mp4"
         reference = None
     else:
         reference, model, gusts = flight_reference(args.manoeuvre, args.model, args.gust)
         name = reference.name
-        default_out = Path("renders") / f"{_slug(name)}-{model}.mp4"
+        default_out = Path("renders") / f"{slug(name)}-{model}.mp4"
     if options.seconds is None:  # the whole flight: one line when it would exceed the longest video
         from birdsim.render.options import MAX_SECONDS, RenderError
 

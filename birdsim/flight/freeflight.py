@@ -16,7 +16,7 @@ from typing import Any
 
 import numpy as np
 
-from birdsim.errors import BirdsimError
+from birdsim.errors import BirdsimError, limits_text, magnitude_ok
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.simulate import FreeBird, SimConfig
 from birdsim.flight.wingbeat import WingbeatSchedule
@@ -48,9 +48,9 @@ class Gust:
     def __post_init__(self) -> None:
         for name in ("t0", "duration", "wx", "wz"):
             v = getattr(self, name)
-            if not (isinstance(v, (int, float)) and math.isfinite(v)):
+            if not (isinstance(v, (int, float)) and math.isfinite(v) and magnitude_ok(v)):
                 raise GustError(
-                    f"--gust {name}={v!r} is not finite; allowed: T0:DURATION:WX:WZ, four finite numbers"
+                    f"--gust {name}={v!r} is invalid; allowed: T0:DURATION:WX:WZ, four finite numbers, {limits_text()}"
                 )
         if self.t0 < 0 or self.duration < 0:
             raise GustError(

@@ -34,7 +34,7 @@ from typing import Any
 import numpy as np
 from scipy.interpolate import PPoly
 
-from birdsim.errors import BirdsimError
+from birdsim.errors import BirdsimError, limits_text, magnitude_ok
 
 #: Where the torso origin sits when the bird is perched (semispans, x forward, z up):
 #: the scene's perch post at x = 6 s, its top site at 1.54 s, plus the torso's half
@@ -188,6 +188,10 @@ def _validate(p: FlightPath) -> None:
             f"{where}: duration={p.duration_beats!r}; allowed: a number of wingbeats in (0, "
             f"{MAX_BEATS:g}]"
         )
+    if not (isinstance(p.x0, (int, float)) and math.isfinite(p.x0) and magnitude_ok(p.x0)):
+        raise PathError(
+            f"{where}: x0={p.x0!r} is invalid; allowed: a finite number, {limits_text()}"
+        )
     forms = {k.x is not None for k in p.keyframes}
     if len(forms) != 1 or any((k.x is None) == (k.V is None) for k in p.keyframes):
         bad = next(
@@ -204,6 +208,10 @@ def _validate(p: FlightPath) -> None:
             v = getattr(k, name)
             if v is not None and not (isinstance(v, (int, float)) and math.isfinite(v)):
                 raise PathError(f"{where}: keyframe {i} {name}={v!r} is not a finite number")
+            if v is not None and not magnitude_ok(v):
+                raise PathError(
+                    f"{where}: keyframe {i} {name}={v!r} is invalid; allowed: {limits_text()}"
+                )
         if k.t < 0 or k.t > MAX_BEATS:
             raise PathError(
                 f"{where}: keyframe {i} t={k.t:g}; allowed: 0 <= t <= {MAX_BEATS:g} wingbeats"

@@ -22,7 +22,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from birdsim.errors import BirdsimError
+from birdsim.errors import BirdsimError, check_numbers
 from birdsim.physics.aero import body_drag, induced_velocity
 from birdsim.physics.bird import Bird
 from birdsim.physics.cycle_result import Cycle, MeanForces, PanelMeans, _Histories, cycle_mean  # noqa: F401 (re-exported)
@@ -174,15 +174,7 @@ def evaluate_cycle(
             f"bird={bird!r} is invalid; allowed: a birdsim.Bird (Bird.from_toml(path) reads a bird file) or None"
         )
     p = validate_params(m, params, check_bounds=check_bounds)
-    try:
-        v = np.asarray(speed, dtype=float)
-    except (TypeError, ValueError):
-        raise BirdsimError(
-            f"speed={speed!r} is not a number; allowed: a finite number >= 0"
-        ) from None
-    if not np.all(np.isfinite(v)) or np.any(v < 0):
-        bad = float(v[~(np.isfinite(v) & (v >= 0))].flat[0]) if v.ndim else float(v)
-        raise BirdsimError(f"speed={bad} is invalid; allowed: a finite number >= 0")
+    v = check_numbers("speed", speed, "a finite number >= 0", minimum=0.0)
     vc = _check_climb(climb)
     try:
         batch = np.broadcast_shapes(v.shape, vc.shape, *(a.shape for a in p.values()))
@@ -258,7 +250,7 @@ def evaluate_cycle(
         panel_means=means,
     )
     if means is None:
-        cyc._hist  # the numpy path computes its histories now (errors surface here)
+        _ = cyc._hist  # the numpy path computes its histories now (errors surface here)
     return cyc
 
 
@@ -302,16 +294,7 @@ def _kernel_means(
 
 def _check_climb(climb: object) -> np.ndarray:
     """``climb`` as a float array; one line naming a non-number or non-finite value."""
-    try:
-        vc = np.asarray(climb, dtype=float)
-    except (TypeError, ValueError):
-        raise BirdsimError(
-            f"climb={climb!r} is not a number; allowed: a finite number (positive up)"
-        ) from None
-    if not np.all(np.isfinite(vc)):
-        bad = float(vc[~np.isfinite(vc)].flat[0]) if vc.ndim else float(vc)
-        raise BirdsimError(f"climb={bad} is invalid; allowed: a finite number (positive up)")
-    return vc
+    return check_numbers("climb", climb, "a finite number (positive up)")
 
 
 #: The induced-velocity coupling stops when the disc's inflow changes by less than this

@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import optimize as so
 
-from birdsim.errors import BirdsimError, check_finite
+from birdsim.errors import BirdsimError, check_number
 from birdsim.physics.bird import Bird
 from birdsim.physics.kinematics import KinematicModel, get_model
 from birdsim.tables import slsqp_driver
@@ -171,16 +171,14 @@ class ForceProblem(Problem):
     ) -> None:
         self.model = model if isinstance(model, KinematicModel) else get_model(model)
         super().__init__(*self.model.bounds)
-        self.Fx_demand = check_finite("Fx_demand", Fx_demand)
-        self.Fz_demand = check_finite("Fz_demand", Fz_demand)
-        self.speed = check_finite("speed", speed, "a finite number >= 0")
-        if self.speed < 0:
-            raise BirdsimError(f"speed={speed!r} is invalid; allowed: a finite number >= 0")
+        self.Fx_demand = check_number("Fx_demand", Fx_demand)
+        self.Fz_demand = check_number("Fz_demand", Fz_demand)
+        self.speed = check_number("speed", speed, "a finite number >= 0", minimum=0.0)
         self.cost_weights = weights or CostWeights()
         self.weights = np.array(
             [self.cost_weights.force_x, self.cost_weights.force_z, self.cost_weights.power]
         )
-        self.climb = check_finite("climb", climb, "a finite number (positive up)")
+        self.climb = check_number("climb", climb, "a finite number (positive up)")
         self.bird = bird or Bird()
         self.previous = None if previous is None else np.asarray(previous, dtype=float)
         self.n = n
