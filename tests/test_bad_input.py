@@ -12,7 +12,8 @@ Each row of :data:`CASES` is ``(case id, call, text)``:
   command line, the Python argument in the API).
 
 Every case asserts: exit status 2 (a Python row: a :class:`BirdsimError`), exactly one
-line on stderr, no traceback, nothing written or changed in the work folder.  A Ctrl-C
+line on stderr, no traceback, no RuntimeWarning (numpy's overflow warnings are errors
+here), nothing written or changed in the work folder.  A Ctrl-C
 row expects status 130 and one line instead (and keeps nothing but a build's
 checkpoints).  Python rows also assert that the message names no command-line flag.
 
@@ -37,9 +38,13 @@ import pytest
 from birdsim import Bird, LookupTable, evaluate_cycle, load_table
 from birdsim.cli import main
 from birdsim.errors import BirdsimError
-from birdsim.flight.manoeuvre import get_manoeuvre, load_manoeuvre
+from birdsim.flight.freeflight import Gust
+from birdsim.flight.manoeuvre import Keyframe, Manoeuvre, get_manoeuvre, load_manoeuvre
+from birdsim.flight.path_file import get_flight
+from birdsim.mujoco.crosscheck import crosscheck
 from birdsim.physics.kinematics import get_model
 from birdsim.tables.build import BuildConfig, BuildSettings, Grid, build_table
+from birdsim.tables.optimize import ForceProblem
 
 # fmt: off
 HOVER = ["--param", "pitch=1.5", "--param", "flap_amp=1.5", "--param", "twist_amp=0.7"]
@@ -107,6 +112,15 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("forces/set-unknown-polar", [*FORCES, *HOVER, "--set", "polar.kind=magic"], "--set polar.kind='magic' is unknown"),
     ("forces/set-malformed", [*FORCES, *HOVER, "--set", "strips"], "--set 'strips' is malformed"),
     ("forces/unknown-option", [*FORCES, *HOVER, "--sped", "1"], "unrecognized arguments: --sped"),
+    # absurd but finite numbers (issue 21 item 4): birdsim.errors.MAX_MAGNITUDE / MIN_POSITIVE
+    ("forces/speed-huge", ["forces", "--model", "m3", "--speed", "1e300"], "--speed=1e+300 is invalid; allowed: a finite number >= 0, at most 1e+06 in magnitude"),
+    ("forces/speed-overflows", ["forces", "--model", "m1", "--speed", "1e160", *HOVER], "--speed=1e+160 is invalid"),
+    ("forces/climb-huge", [*FORCES, *HOVER, "--climb=-1e300"], "--climb=-1e+300 is invalid"),
+    ("forces/set-mass-huge", [*FORCES, *HOVER, "--set", "mass=1e300"], "--set mass=1e+300 is invalid; allowed: a finite number > 0, at least 1e-06 and at most 1e+06"),
+    ("forces/set-semispan-huge", [*FORCES, *HOVER, "--set", "semispan=1e300"], "--set semispan=1e+300 is invalid"),
+    ("forces/set-omega-tiny", [*FORCES, *HOVER, "--set", "omega=1e-300"], "--set omega=1e-300 is invalid"),
+    ("forces/set-gravity-huge", [*FORCES, *HOVER, "--set", "gravity=1e300"], "--set gravity=1e+300 is invalid"),
+    ("forces/bird-huge", [*FORCES, *HOVER, "--bird", "{w}/bird_huge.toml"], "--bird '{w}/bird_huge.toml': bird.chord=1e+300 is invalid"),
     # ---- birdsim examples ---------------------------------------------------------------
     ("examples/unknown-option", ["examples", "--model", "m1"], "unrecognized arguments: --model"),
     # ---- birdsim tables build -----------------------------------------------------------
@@ -115,6 +129,9 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("build/grid-nan", [*BUILD, "--grid", "Fx=nan:1:3"], "--grid"),
     ("build/grid-negative-V", [*BUILD, "--grid", "V=-1:1:3"], "--grid V starts at -1"),
     ("build/grid-huge", [*BUILD, "--grid", "Fx=-1:1:1000,Fz=-1:0:1000,V=0:1:1000"], "--grid"),
+    ("build/grid-value-huge", [*BUILD, "--grid", "Fx=-1e300:1e300:2,Fz=-0.5:0:2,V=0:1:2"], "--grid Fx=[-1e+300, 1e+300] is invalid"),
+    ("build/grid-speed-huge", [*BUILD, "--grid", "Fx=0:0.2:2,Fz=-0.5:0:2,V=0:1e300:2"], "--grid V=[0.0, 1e+300] is invalid"),
+    ("build/set-chord-huge", [*BUILD, "--set", "chord=1e300"], "--set chord=1e+300 is invalid"),
     ("build/size-zero", ["tables", "build", "--model", "base", "--size", "0"], "--size 0 is invalid"),
     ("build/jobs-zero", [*BUILD, "--jobs", "0"], "--jobs 0 is invalid"),
     ("build/screen-zero", [*BUILD, "--screen", "0"], "--screen"),
@@ -157,6 +174,25 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("crosscheck/figure-exists", ["crosscheck", "--model", "base", "--figure", "{w}/exists.png"], "--figure '{w}/exists.png' exists"),
     ("crosscheck/figure-unwritable", ["crosscheck", "--model", "base", "--figure", "/proc/f.png"], "--figure '/proc/f.png'"),
     ("crosscheck/bird-missing", ["crosscheck", "--model", "base", "--bird", "{w}/nope.toml"], "--bird '{w}/nope.toml' does not exist"),
+    ("crosscheck/set-semispan-huge", ["crosscheck", "--model", "base", "--set", "semispan=1e300"], "--set semispan=1e+300 is invalid"),
+    ("envelope/set-mass-huge", ["envelope", "--set", "mass=1e300"], "--set mass=1e+300 is invalid"),
+    ("envelope/bird-huge", ["envelope", "--bird", "{w}/bird_huge.toml"], "--bird '{w}/bird_huge.toml': bird.chord=1e+300 is invalid"),
+    ("fly/gust-wind-huge", ["fly", "cruise", "--quiet", "--gust", "0:1:1e300:0"], "--gust '0:1:1e300:0': gust wx=1e+300 is invalid"),
+    ("fly/gust-duration-huge", ["fly", "cruise", "--quiet", "--gust", "0:1e300:1:0"], "gust duration=1e+300 is invalid"),
+    ("fly/gust-start-huge", ["fly", "cruise", "--quiet", "--gust", "1e300:1:1:0"], "gust t0=1e+300 is invalid"),
+    ("fly/manoeuvre-speed-huge", ["fly", "{w}/man_huge_v.toml", "--quiet"], "keyframe 1 V=1e+300 is invalid"),
+    ("fly/manoeuvre-height-huge", ["fly", "{w}/man_huge_z.toml", "--quiet"], "keyframe 1 z=1e+300 is invalid"),
+    ("fly/path-speed-huge", ["fly", "{w}/path_huge_v.toml", "--quiet"], "keyframe 2 V=1e+300 is invalid"),
+    ("fly/bird-huge", ["fly", "cruise", "--quiet", "--bird", "{w}/bird_huge.toml"], "--bird '{w}/bird_huge.toml': bird.chord=1e+300 is invalid"),
+    ("fly/seconds-huge", ["fly", "cruise", "--quiet", "--seconds", "1e300"], "--seconds 1e300 is"),
+    ("render/gust-huge", [*RENDER, "--gust", "0:1:0:1e300"], "gust wz=1e+300 is invalid"),
+    ("export/metres-per-unit-huge", ["export", "cruise", "--format", "csv", "--out", "{w}/x.csv", "--metres-per-unit", "1e300"], "--metres-per-unit '1e300' is invalid"),
+    ("export/beat-rate-tiny", ["export", "cruise", "--format", "csv", "--out", "{w}/x.csv", "--beat-rate", "1e-300"], "--beat-rate '1e-300' is invalid"),
+    ("export/gust-huge", ["export", "cruise", "--format", "csv", "--out", "{w}/x.csv", "--gust", "0:1:1e300:0"], "gust wx=1e+300 is invalid"),
+    ("bird/mass-huge", ["bird", "new", "big", "--mass", "1e300", "--span", "1", "--mean-chord", "0.1", "--frequency", "5", "--out", "{w}/b.toml"], "--mass 1e+300 is invalid"),
+    ("bird/span-huge", ["bird", "new", "big", "--mass", "1", "--span", "1e300", "--mean-chord", "0.1", "--frequency", "5", "--out", "{w}/b.toml"], "--span 1e+300 is invalid"),
+    ("bird/frequency-tiny", ["bird", "new", "big", "--mass", "1", "--span", "1", "--mean-chord", "0.1", "--frequency", "1e-300", "--out", "{w}/b.toml"], "--frequency 1e-300 is invalid"),
+    ("validate/bird-mass-huge", ["validate", "--bird", "{w}/bird_heavy.toml"], "bird.mass=1e+300 is invalid"),
     ("crosscheck/ctrl-c", Interrupt(["crosscheck", "--model", "base", "--forward", "none", "--samples", "8", "--figure", "{w}/new.png"],
                                     "birdsim.mujoco.crosscheck:crosscheck", after=1), "interrupted"),
     # ---- birdsim render (every mistake is found before any rendering) --------------------
@@ -210,6 +246,14 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("py/evaluate_cycle-n-one", lambda w: evaluate_cycle("base", HOVER_PARAMS, 0.0, n=1), "n=1 is invalid"),
     ("py/evaluate_cycle-no-broadcast", lambda w: evaluate_cycle("base", {**HOVER_PARAMS, "pitch": np.zeros(2), "flap_amp": np.ones(3)}, 0.0), "do not broadcast"),
     ("py/evaluate_cycle-bird-not-a-bird", lambda w: evaluate_cycle("base", HOVER_PARAMS, 0.0, bird="pigeon"), "bird='pigeon'"),
+    ("py/evaluate_cycle-speed-huge", lambda w: evaluate_cycle("base", HOVER_PARAMS, 1e300), "speed=1e+300 is invalid; allowed: a finite number >= 0, at most 1e+06 in magnitude"),
+    ("py/evaluate_cycle-speed-array-huge", lambda w: evaluate_cycle("base", HOVER_PARAMS, np.array([0.5, 1e200])), "speed=1e+200 is invalid"),
+    ("py/evaluate_cycle-climb-huge", lambda w: evaluate_cycle("base", HOVER_PARAMS, 0.0, climb=1e300), "climb=1e+300 is invalid"),
+    ("py/ForceProblem-demand-huge", lambda w: ForceProblem("base", 1e300, -0.3, 0.0), "Fx_demand=1e+300 is invalid"),
+    ("py/ForceProblem-speed-huge", lambda w: ForceProblem("base", 0.0, -0.3, 1e300), "speed=1e+300 is invalid"),
+    ("py/crosscheck-speed-huge", lambda w: crosscheck("base", HOVER_PARAMS, 1e300), "speed=1e+300 is invalid"),
+    ("py/Gust-huge", lambda w: Gust(0.0, 1.0, 1e300, 0.0), "gust wx=1e+300 is invalid"),
+    ("py/Grid-huge", lambda w: Grid(Fx=np.array([0.0, 1e300]), Fz=np.array([-0.5, 0.0]), V=np.array([0.0, 1.0])), "grid Fx=[0.0, 1e+300] is invalid"),
     # ---- Python: tables ---------------------------------------------------------------
     ("py/load_table-missing", lambda w: load_table(w / "nope.npz"), "table file"),
     ("py/load_table-folder", lambda w: load_table(w / "folder.npz"), "does not exist"),
@@ -230,6 +274,10 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("py/Bird-strips-huge", lambda w: Bird(strips=10**9), "bird.strips=1000000000 is invalid"),
     ("py/Bird-fraction", lambda w: Bird(hand_span_fraction=2.0), "bird.hand_span_fraction=2.0 is invalid"),
     ("py/Bird-bool", lambda w: Bird(mass=True), "bird.mass=True is invalid"),
+    ("py/Bird-mass-huge", lambda w: Bird(mass=1e300), "bird.mass=1e+300 is invalid; allowed: a finite number > 0, at least 1e-06 and at most 1e+06"),
+    ("py/Bird-omega-tiny", lambda w: Bird(omega=1e-300), "bird.omega=1e-300 is invalid"),
+    ("py/Bird-drag-area-huge", lambda w: Bird(body_drag_area=1e300), "bird.body_drag_area=1e+300 is invalid"),
+    ("py/Bird.from_toml-huge", lambda w: Bird.from_toml(w / "bird_huge.toml"), "bird.chord=1e+300 is invalid"),
     ("py/Bird.from_toml-missing", lambda w: Bird.from_toml(w / "nope.toml"), "path='"),
     ("py/Bird.from_toml-malformed", lambda w: Bird.from_toml(w / "malformed.toml"), "is not valid TOML"),
     ("py/Bird.from_toml-folder", lambda w: Bird.from_toml(w / "folder"), "is a folder"),
@@ -240,6 +288,9 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("py/load_manoeuvre-missing", lambda w: load_manoeuvre(w / "nope.toml"), "does not exist"),
     ("py/load_manoeuvre-malformed", lambda w: load_manoeuvre(w / "malformed.toml"), "is not valid TOML"),
     ("py/load_manoeuvre-no-keyframes", lambda w: load_manoeuvre(w / "man_empty.toml"), "give either [[keyframe]] tables or one [demands] table"),
+    ("py/load_manoeuvre-speed-huge", lambda w: load_manoeuvre(w / "man_huge_v.toml"), "keyframe 1 V=1e+300 is invalid"),
+    ("py/Manoeuvre-force-huge", lambda w: Manoeuvre("m", (Keyframe(0.0, 1e300, -0.3, 0.0, 6.0),), 1.0), "keyframe 1 Fx=1e+300 is invalid"),
+    ("py/get_flight-path-huge", lambda w: get_flight(str(w / "path_huge_v.toml")), "keyframe 2 V=1e+300 is invalid"),
     ("py/get_model-unknown", lambda w: get_model("m5"), "model 'm5' is unknown"),
 ]
 # fmt: on
@@ -297,6 +348,13 @@ def template(tmp_path_factory: pytest.TempPathFactory) -> Path:
     (w / "bird_type.toml").write_text('semispan = "long"\n')
     (w / "bird_bool.toml").write_text("semispan = true\n")
     (w / "bird_polar.toml").write_text('[polar]\nkind = "magic"\n')
+    (w / "bird_huge.toml").write_text("chord = 1e300\n")
+    (w / "bird_heavy.toml").write_text("mass = 1e300\ngravity = 0.012\n")
+    (w / "man_huge_v.toml").write_text("[[keyframe]]\nt = 0\nFx = 0\nFz = -0.3\nV = 1e300\n")
+    (w / "man_huge_z.toml").write_text("[[keyframe]]\nt = 0\nFx = 0\nFz = -0.3\nV = 0\nz = 1e300\n")
+    (w / "path_huge_v.toml").write_text(
+        "[[keyframe]]\nt = 0\nz = 6\nV = 0.5\n[[keyframe]]\nt = 4\nz = 6\nV = 1e300\n"
+    )
     (w / "man_unknown_key.toml").write_text(
         "speed = 2\n[[keyframe]]\nt = 0\nFx = 0\nFz = -0.3\nV = 0\n"
     )
@@ -400,6 +458,7 @@ def _ids(cases: list) -> list:
     return out
 
 
+@pytest.mark.filterwarnings("error::RuntimeWarning")  # no numpy overflow warning on the way
 @pytest.mark.parametrize("case_id, call, text", _ids(CASES))
 def test_bad_input(
     case_id: str,
@@ -457,6 +516,11 @@ def test_the_matrix_covers_every_subcommand_and_function() -> None:
         "render",
         "report",
         "py",
+        "fly",
+        "export",
+        "bird",
+        "envelope",
+        "validate",
     ):
         assert part in prefixes, part
     for fn in (

@@ -73,10 +73,14 @@ def flag_names(starts: Mapping[str, str], hints: Mapping[str, str] | None = None
         raise
 
 
-def bird_from_args(args: argparse.Namespace) -> Bird:
-    """The bird of ``--bird FILE.toml`` (default: the seed bird) with ``--set`` applied."""
+def bird_from_args(args: argparse.Namespace, default: Bird | None = None) -> Bird:
+    """The bird of ``--bird FILE.toml`` (else ``default``, else the seed bird) with
+    ``--set`` applied; a bad file or value is one line naming ``--bird`` or ``--set``."""
     with flag_names({"path=": "--bird "}):
-        bird = Bird.from_toml(args.bird) if getattr(args, "bird", None) is not None else Bird()
+        if getattr(args, "bird", None) is not None:
+            bird = Bird.from_toml(args.bird)
+        else:
+            bird = Bird() if default is None else default
     overrides = parse_pairs(getattr(args, "set", None), "--set")
     with flag_names({"overrides: ": "--set "}):
         return bird.with_overrides(overrides) if overrides else bird
@@ -177,11 +181,12 @@ def default_bird_path() -> Path:
     )
 
 
-def load_bird(arg: str | None):
-    from birdsim.physics.bird import Bird
-
+def load_bird(arg: str | None) -> Bird:
+    """The bird of ``--bird`` (a bad file: one line naming ``--bird``), else the demo bird
+    ``models/seed-bird.toml``."""
     if arg:
-        return Bird.from_toml(arg)
+        with flag_names({"path=": "--bird "}):
+            return Bird.from_toml(arg)
     path = default_bird_path()
     return Bird.from_toml(path) if path.is_file() else Bird()
 

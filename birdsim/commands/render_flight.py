@@ -9,11 +9,11 @@ import dataclasses
 from pathlib import Path
 
 from birdsim.commands.common import (
+    bird_from_args,
     check_still,
     check_writable,
     load_bird,
     load_table_for,
-    parse_pairs,
     slug,
 )
 from birdsim.errors import BirdsimError
@@ -79,9 +79,7 @@ def fly_reference(
     from birdsim.flight.flightlog import log_arrays
     from birdsim.flight.freeflight import fly
 
-    bird = load_bird(args.bird)
-    overrides = parse_pairs(getattr(args, "set", None), "--set")
-    bird = bird.with_overrides(overrides) if overrides else bird
+    bird = bird_from_args(args, default=None if args.bird else load_bird(None))
     if bird.gravity <= 0:
         raise BirdsimError(
             f"--bird {bird.name!r} has gravity={bird.gravity:g}; allowed: a bird file with gravity > 0 for free flight (or --kinematic)"

@@ -50,11 +50,11 @@ class Gust:
             v = getattr(self, name)
             if not (isinstance(v, (int, float)) and math.isfinite(v) and magnitude_ok(v)):
                 raise GustError(
-                    f"--gust {name}={v!r} is invalid; allowed: T0:DURATION:WX:WZ, four finite numbers, {limits_text()}"
+                    f"gust {name}={v!r} is invalid; allowed: a finite number, {limits_text()}"
                 )
         if self.t0 < 0 or self.duration < 0:
             raise GustError(
-                f"--gust T0={self.t0:g}, DURATION={self.duration:g}; allowed: times >= 0 (wingbeats)"
+                f"gust t0={self.t0:g}, duration={self.duration:g}; allowed: times >= 0 (wingbeats)"
             )
 
 
@@ -75,7 +75,10 @@ def parse_gust(text: str) -> Gust:
         raise GustError(
             f"--gust {text!r} is not finite; allowed: T0:DURATION:WX:WZ, four finite numbers"
         )
-    return Gust(*vals)
+    try:
+        return Gust(*vals)
+    except GustError as exc:
+        raise GustError(f"--gust {text!r}: {exc}") from None
 
 
 def wind_at(gusts: Sequence[Gust], t_beats: float, speed_scale: float = 1.0) -> np.ndarray:

@@ -356,7 +356,7 @@ def cp_paths(
         if v == 0:
             ax.legend(loc="best", fontsize=7)
     ax3 = fig.add_subplot(2, 2, 4, projection="3d")
-    for k, pname in enumerate(paths.panel_names):
+    for k in range(len(paths.panel_names)):
         p, le, te = centre[k], lead[k], trail[k]
         ax3.plot(
             _closed(p[:, 0], 0), _closed(p[:, 1], 0), _closed(-p[:, 2], 0), color=colours[k], lw=2
