@@ -205,6 +205,13 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("render/manoeuvre-nan", ["render", "{w}/man_nan.toml", "--table", "{w}/table.npz"], "keyframe 1: Fz=nan is not a finite number"),
     ("render/manoeuvre-below-floor", ["render", "{w}/man_below.toml", "--kinematic", "--table", "{w}/table.npz"], "keyframe 2 (t=3) has z=-1, below the floor"),
     ("fly/manoeuvre-below-floor", ["fly", "{w}/man_below.toml"], "keyframe 2 (t=3) has z=-1, below the floor"),
+    # issue 28 item 3: the keyframe that is itself below the floor is named, else the segment
+    ("fly/path-keyframe-below-floor", ["fly", "{w}/path_kf2_low.toml", "--quiet"], "path 'path_kf2_low': keyframe 2 (t=4) is below the floor clearance"),
+    ("fly/path-segment-below-floor", ["fly", "{w}/path_dip.toml", "--quiet"], "the segment from keyframe 2 (t=4) to keyframe 3 (t=8) goes below the floor clearance"),
+    ("fly/bird-missing", ["fly", "cruise", "--quiet", "--bird", "{w}/nope.toml"], "--bird '{w}/nope.toml' does not exist"),
+    ("render/bird-missing", [*RENDER, "--bird", "{w}/nope.toml"], "--bird '{w}/nope.toml' does not exist"),
+    ("export/bird-missing", ["export", "cruise", "--format", "csv", "--out", "{w}/x.csv", "--bird", "{w}/nope.toml"], "--bird '{w}/nope.toml' does not exist"),
+    ("envelope/bird-missing", ["envelope", "--bird", "{w}/nope.toml"], "--bird '{w}/nope.toml' does not exist"),
     ("render/manoeuvre-huge-t", ["render", "{w}/man_huge_t.toml", "--table", "{w}/table.npz"], "keyframe t=1e+12"),
     ("render/unknown-model", [*RENDER, "--model", "m9"], "--model 'm9' is unknown"),
     ("render/size-odd", [*RENDER, "--size", "100x100"], "--size"),
@@ -349,6 +356,14 @@ def template(tmp_path_factory: pytest.TempPathFactory) -> Path:
     (w / "bird_bool.toml").write_text("semispan = true\n")
     (w / "bird_polar.toml").write_text('[polar]\nkind = "magic"\n')
     (w / "bird_huge.toml").write_text("chord = 1e300\n")
+    (w / "path_kf2_low.toml").write_text(
+        "duration = 8\n[[keyframe]]\nt = 0\nV = 0.5\nz = 6\n[[keyframe]]\nt = 4\nV = 0.5\nz = 0.3\n"
+        "[[keyframe]]\nt = 8\nV = 0.5\nz = 6\n"
+    )
+    (w / "path_dip.toml").write_text(
+        "duration = 8\n[[keyframe]]\nt = 0\nx = 0\nz = 1.2\n[[keyframe]]\nt = 4\nx = 1\nz = 1.2\nvz = -2\n"
+        "[[keyframe]]\nt = 8\nx = 2\nz = 6\n"
+    )
     (w / "bird_heavy.toml").write_text("mass = 1e300\ngravity = 0.012\n")
     (w / "man_huge_v.toml").write_text("[[keyframe]]\nt = 0\nFx = 0\nFz = -0.3\nV = 1e300\n")
     (w / "man_huge_z.toml").write_text("[[keyframe]]\nt = 0\nFx = 0\nFz = -0.3\nV = 0\nz = 1e300\n")

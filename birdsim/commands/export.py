@@ -136,14 +136,18 @@ def run(args: argparse.Namespace) -> int:
             source=f"flight log {Path(args.source).name}",
         )  # type: ignore[arg-type]
     elif not args.kinematic:  # free flight, the default: flown as `birdsim render` flies it
-        from birdsim.commands.common import load_bird
-        from birdsim.commands.render_flight import flight_reference, fly_reference
+        from birdsim.commands.render_flight import (
+            flight_bird_and_table,
+            flight_reference,
+            fly_reference,
+        )
         from birdsim.export.flightlog import frames_from_log
         from birdsim.export.frames import time_per_second
         from birdsim.flight.manoeuvre import MAX_BEATS
 
         reference, model, gusts = flight_reference(args.source, args.model, args.gust)
-        bird = load_bird(args.bird)
+        bird_and_table = flight_bird_and_table(args, model)  # --bird and --set, as flown
+        bird = bird_and_table[0]
         per_s = time_per_second(bird, beat_rate)
         if seconds is None:
             seconds = float(reference.duration_beats) * bird.period / per_s
@@ -153,7 +157,9 @@ def run(args: argparse.Namespace) -> int:
             raise BirdsimError(
                 f"--seconds {args.seconds} is {beats:g} wingbeats of flight; allowed: at most {MAX_BEATS:g} wingbeats"
             )
-        log = fly_reference(reference, model, args, beats=beats, gusts=gusts)
+        log = fly_reference(
+            reference, model, args, beats=beats, gusts=gusts, bird_and_table=bird_and_table
+        )
         frames = frames_from_log(
             log,
             fps=fps,

@@ -66,12 +66,34 @@ def flight_reference(source: str, model_arg: str | None, gust_args: list[str]):
     return reference, model, gusts
 
 
+def flight_bird_and_table(args: argparse.Namespace, model: str) -> tuple:
+    """The bird of ``--bird``/``--set`` (default the demo bird) and the table of
+    ``--table`` (else the shipped one for that bird), checked for free flight.
+
+    Raises:
+        BirdsimError: a bad bird file or value, a bird without gravity, a table missing
+            or built for another model or bird (one line).
+    """
+    bird = bird_from_args(args, default=None if args.bird else load_bird(None))
+    if bird.gravity <= 0:
+        raise BirdsimError(
+            f"--bird {bird.name!r} has gravity={bird.gravity:g}; allowed: a bird file with gravity > 0 for free flight (or --kinematic)"
+        )
+    return bird, load_table_for(bird, model, args.table)
+
+
 def fly_reference(
-    reference, model: str, args: argparse.Namespace, *, beats: float, gusts: list
+    reference,
+    model: str,
+    args: argparse.Namespace,
+    *,
+    beats: float,
+    gusts: list,
+    bird_and_table: tuple | None = None,
 ) -> dict:
-    """Fly ``reference`` in MuJoCo for ``beats`` wingbeats with the bird of ``--bird``/
-    ``--set`` and the table of ``--table`` (else the shipped one for that bird), as
-    ``birdsim render`` and ``birdsim export`` do; the flight log's arrays (bird units).
+    """Fly ``reference`` in MuJoCo for ``beats`` wingbeats with ``bird_and_table``
+    (default :func:`flight_bird_and_table`), as ``birdsim render`` and ``birdsim
+    export`` do; the flight log's arrays (bird units).
 
     Raises:
         BirdsimError: a bird without gravity, a table for another model or bird.
@@ -79,12 +101,7 @@ def fly_reference(
     from birdsim.flight.flightlog import log_arrays
     from birdsim.flight.freeflight import fly
 
-    bird = bird_from_args(args, default=None if args.bird else load_bird(None))
-    if bird.gravity <= 0:
-        raise BirdsimError(
-            f"--bird {bird.name!r} has gravity={bird.gravity:g}; allowed: a bird file with gravity > 0 for free flight (or --kinematic)"
-        )
-    table = load_table_for(bird, model, args.table)
+    bird, table = bird_and_table or flight_bird_and_table(args, model)
     result = fly(reference, table, bird, model, beats=beats, gusts=gusts, open_loop=args.open_loop)
     log = log_arrays(result, reference.name)
     log["bird_obj"] = bird
@@ -137,6 +154,8 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
     else:
         clip_beats = float(log["t"][-1]) * float(log["omega"]) / (2 * 3.141592653589793)
     at = check_still(args, clip_beats)
+    # the bird and the table before any output is checked (checking makes its folder)
+    bird_and_table = flight_bird_and_table(args, model) if reference is not None else None
     out = Path(args.out) if args.out else default_out
     if at is None:
         if out.suffix.lower() != ".mp4":
@@ -153,7 +172,9 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
             if options.seconds is None
             else options.seconds * options.beats_per_second
         )
-        log = fly_reference(reference, model, args, beats=beats, gusts=gusts)
+        log = fly_reference(
+            reference, model, args, beats=beats, gusts=gusts, bird_and_table=bird_and_table
+        )
     states = flight_states(
         log,
         dataclasses.replace(options, seconds=None) if reference is not None else options,
