@@ -112,6 +112,15 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("forces/set-unknown-polar", [*FORCES, *HOVER, "--set", "polar.kind=magic"], "--set polar.kind='magic' is unknown"),
     ("forces/set-malformed", [*FORCES, *HOVER, "--set", "strips"], "--set 'strips' is malformed"),
     ("forces/unknown-option", [*FORCES, *HOVER, "--sped", "1"], "unrecognized arguments: --sped"),
+    # issue 28 item 6: a single-valued option given twice is refused (argparse keeps the last)
+    ("forces/model-twice", ["forces", "--model", "m1", "--model", "m3", "--speed", "0", *HOVER], "--model is given twice ('m1', 'm3'); allowed: once"),
+    ("forces/bird-twice", [*FORCES, *HOVER, "--bird", "{w}/a.toml", "--bird", "{w}/b.toml"], "--bird is given twice"),
+    ("forces/speed-twice", [*FORCES, *HOVER, "--speed", "0.5"], "--speed is given twice ('0', '0.5')"),
+    ("fly/bird-twice", ["fly", "cruise", "--bird", "{w}/a.toml", "--bird", "{w}/b.toml"], "--bird is given twice"),
+    ("fly/out-twice", ["fly", "cruise", "--out", "{w}/a.npz", "--out", "{w}/b.npz"], "--out is given twice"),
+    ("render/camera-twice", [*RENDER, "--camera", "side", "--camera", "top"], "--camera is given twice"),
+    ("export/format-twice", ["export", "cruise", "--format", "csv", "--format", "bvh", "--out", "{w}/x.csv"], "--format is given twice"),
+    ("build/grid-twice", [*BUILD, "--grid", "V=0|1"], "--grid is given twice"),
     # absurd but finite numbers (issue 21 item 4): birdsim.errors.MAX_MAGNITUDE / MIN_POSITIVE
     ("forces/speed-huge", ["forces", "--model", "m3", "--speed", "1e300"], "--speed=1e+300 is invalid; allowed: a finite number >= 0, at most 1e+06 in magnitude"),
     ("forces/speed-overflows", ["forces", "--model", "m1", "--speed", "1e160", *HOVER], "--speed=1e+160 is invalid"),

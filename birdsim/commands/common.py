@@ -30,6 +30,32 @@ def parse_pairs(pairs: list[str] | None, arg: str) -> dict[str, str]:
     return out
 
 
+#: Where :class:`StoreOnce` keeps the options given so far in one parse (removed by
+#: :func:`forget_given`).
+_GIVEN = "_options_given"
+
+
+class StoreOnce(argparse._StoreAction):
+    """argparse's ``store``, refusing a single-valued option given twice (argparse itself
+    silently keeps the last: ``--bird a.toml --bird b.toml`` would fly b)."""
+
+    def __call__(self, parser, namespace, values, option_string=None):  # type: ignore[no-untyped-def]
+        given = namespace.__dict__.setdefault(_GIVEN, {})
+        if option_string is not None and self.dest in given:
+            parser.error(
+                f"{option_string} is given twice ({given[self.dest]!r}, {values!r}); allowed: "
+                "once (the last would win silently)"
+            )
+        given[self.dest] = values
+        setattr(namespace, self.dest, values)
+
+
+def forget_given(args: argparse.Namespace) -> argparse.Namespace:
+    """``args`` without :class:`StoreOnce`'s bookkeeping."""
+    vars(args).pop(_GIVEN, None)
+    return args
+
+
 def add_bird_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument(
         "--bird",
@@ -220,3 +246,39 @@ def load_table_for(bird, model: str, table_arg: str | None):
     except BirdsimError as exc:
         raise BirdsimError(f"--table {str(path)!r}: {exc}") from None
     return table
+
+
+# ---- units of what a command prints ----
+
+#: The reduced units (the seed bird's, and every table's): s = semispan, c = chord.
+REDUCED_UNITS = {
+    "length": "semispans (s)",
+    "time": "1/omega (a wingbeat is 2 pi)",
+    "speed": "omega s",
+    "force": "rho omega^2 s^3 c",
+    "power": "rho omega^3 s^4 c",
+    "mass": "rho s^2 c",
+    "angle": "rad",
+}
+#: A bird file in SI (models/pigeon.toml, ``birdsim bird new``).
+SI_UNITS = {
+    "length": "m",
+    "time": "s",
+    "speed": "m/s",
+    "force": "N",
+    "power": "W",
+    "mass": "kg",
+    "angle": "rad",
+}
+
+
+def units_of(bird: Bird) -> dict[str, str]:
+    """The units of ``bird``'s own figures: SI when its file is in SI (rho, omega, semispan
+    or chord other than 1, as ``birdsim bird new`` writes), else :data:`REDUCED_UNITS`."""
+    si = bird.rho != 1.0 or bird.omega != 1.0 or bird.semispan != 1.0 or bird.chord != 1.0
+    return dict(SI_UNITS if si else REDUCED_UNITS)
+
+
+def short_length(units: Mapping[str, str]) -> str:
+    """The length unit as a one-line summary prints it ("m" or "semispans")."""
+    return units["length"].split(" (")[0]

@@ -9,7 +9,7 @@ import json
 import math
 from pathlib import Path
 
-from birdsim.commands.common import add_bird_arguments, bird_from_args
+from birdsim.commands.common import REDUCED_UNITS, SI_UNITS, add_bird_arguments, bird_from_args
 from birdsim.flight.envelope import envelope
 from birdsim.flight.presets import DEMO_MODEL, demo_bird
 from birdsim.physics.kinematics import get_model
@@ -62,7 +62,17 @@ def run(args: argparse.Namespace) -> int:
     table.require_bird(bird)
     env = envelope(table, bird)
     if args.json:
-        print(json.dumps({"table": str(path), "force": FORCE_NOTE, **env.to_dict()}, indent=2))
+        units = {
+            "reduced": REDUCED_UNITS,
+            "si": {k: v for k, v in SI_UNITS.items()},
+            "note": "plain keys in reduced units (table units); *_si keys in the bird file's units",
+        }
+        print(
+            json.dumps(
+                {"table": str(path), "force": FORCE_NOTE, "units": units, **env.to_dict()},
+                indent=2,
+            )
+        )
         return 0
     sc = scales(bird)
     si = bird.rho != 1.0 or bird.omega != 1.0 or bird.semispan != 1.0 or bird.chord != 1.0

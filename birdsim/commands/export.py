@@ -101,6 +101,11 @@ def run(args: argparse.Namespace) -> int:
         from birdsim.export.usd import require_usd
 
         require_usd()
+        if usd_assets(out).exists() and not args.force:
+            raise BirdsimError(
+                f"--out {str(out)!r}: its texture folder {str(usd_assets(out))!r} exists; "
+                "allowed: a new path, or --force to overwrite"
+            )
     if args.format == "bvh":
         from birdsim.export.bvh import require_bvh
 
@@ -201,5 +206,24 @@ def run(args: argparse.Namespace) -> int:
     print(
         f"wrote {path} ({args.format}, {frames.frames} frames @ {fps:g} fps = {(frames.frames - 1) / fps:.2f} s, "
         f"{size / 1e6:.2f} MB, model {frames.model}, bird {frames.bird.name}, in {time.perf_counter() - wall0:.1f} s)"
+        + (assets_note(path) if args.format == "usd" else "")
     )
     return 0
+
+
+def usd_assets(out: Path) -> Path:
+    """The folder beside a USD file that holds the textures it references (``c.usd`` ->
+    ``c_assets/``; :func:`birdsim.export.usd.write_usd`)."""
+    return out.with_name(out.stem + "_assets")
+
+
+def assets_note(out: Path) -> str:
+    """The end of the output line: the texture folder that must travel with the file."""
+    folder = usd_assets(out)
+    files = sorted(p.name for p in folder.iterdir()) if folder.is_dir() else []
+    if not files:
+        return ""
+    return (
+        f"; and {folder}/ ({len(files)} textures the file references by relative path: "
+        "move or copy it together with the file)"
+    )

@@ -9,7 +9,13 @@ import math
 import sys
 from pathlib import Path
 
-from birdsim.commands.common import check_writable, load_bird, load_table_for
+from birdsim.commands.common import (
+    check_writable,
+    load_bird,
+    load_table_for,
+    short_length,
+    units_of,
+)
 from birdsim.errors import BirdsimError
 from birdsim.flight.presets import DEMO_MODEL as DEFAULT_MODEL
 
@@ -148,6 +154,7 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         print(json.dumps(info, indent=2))
     else:
+        m = short_length(units_of(bird))
         sat = (
             f", saturated in {info['wingbeats_saturated']} wingbeat(s)"
             if info["wingbeats_saturated"]
@@ -155,9 +162,10 @@ def run(args: argparse.Namespace) -> int:
         )
         print(
             f"flew {reference.name} ({model}, {bird.name}, {'open loop' if result.open_loop else 'closed loop'}): "
-            f"{info['wingbeats']:.1f} wingbeats, position error RMS {info['rms_error']:.3g} max {info['max_error']:.3g}"
+            f"{info['wingbeats']:.1f} wingbeats, position error RMS {info['rms_error']:.3g} {m}, "
+            f"max {info['max_error']:.3g} {m}"
             + (
-                f" (after 2 wingbeats RMS {info['rms_error_after_start']:.3g})"
+                f" (after 2 wingbeats RMS {info['rms_error_after_start']:.3g} {m})"
                 if info["wingbeats"] > 2
                 else ""
             )

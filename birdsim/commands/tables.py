@@ -20,6 +20,14 @@ from birdsim.tables.build import BuildConfig, BuildSettings, Grid, build_table
 from birdsim.tables.cost import CostWeights
 from birdsim.tables.lookup import table_paths
 
+#: The flight grid (``make flight-tables``, docs/flight.md): Fx, Fz in table force units,
+#: V in omega s; 21 x 17 x 17 cells over what the presets ask.  ``tables build --bird``
+#: builds it unless ``--grid`` or ``--size`` says otherwise, so that the command the
+#: table finder suggests for a new bird builds a table that flies the presets.
+FLIGHT_GRID = "Fx=-0.2:0.3:21,Fz=-0.4:0:17,V=0:0.8:17"
+#: Nodes per axis of the general grid (Fx=-0.5:0.5, Fz=-0.5:0, V=0:1), as ``make tables``.
+DEFAULT_SIZE = 11
+
 
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser(
@@ -37,13 +45,15 @@ def register(sub: argparse._SubParsersAction) -> None:
         "--grid",
         default="",
         help='e.g. "Fx=-0.5:0.5:11,Fz=-0.5:0:11,V=0:1:11" or "V=0|0.5|1"; '
-        "axes left out take the default range (Fx=-0.5:0.5, Fz=-0.5:0, V=0:1)",
+        "axes left out take the default range (Fx=-0.5:0.5, Fz=-0.5:0, V=0:1); "
+        f'default with --bird: the flight grid "{FLIGHT_GRID}" (flies the presets)',
     )
     b.add_argument(
         "--size",
         type=int,
-        default=11,
-        help="nodes per axis for axes not given in --grid (default 11)",
+        default=None,
+        help=f"nodes per axis for axes not given in --grid (default {DEFAULT_SIZE}; "
+        "given with --bird: the general grid instead of the flight grid)",
     )
     b.add_argument(
         "--climb",
@@ -163,6 +173,17 @@ def _check_build_options(args: argparse.Namespace) -> None:
         raise BirdsimError(f"--starts {args.starts} is invalid; allowed: an integer >= 0")
 
 
+def _grid_spec(args: argparse.Namespace) -> str:
+    """``--grid``; with ``--bird`` and neither ``--grid`` nor ``--size``, the flight grid."""
+    if not args.grid and args.bird is not None and args.size is None:
+        return FLIGHT_GRID
+    return args.grid
+
+
+def _size(args: argparse.Namespace) -> int:
+    return DEFAULT_SIZE if args.size is None else args.size
+
+
 def run_build(args: argparse.Namespace) -> int:
     import sys
 
@@ -176,7 +197,7 @@ def run_build(args: argparse.Namespace) -> int:
             raise BirdsimError(
                 f"--jobs {args.jobs} with --dask {args.dask!r}; allowed: one of them (the cluster has its own workers)"
             )
-    grid = Grid.parse(args.grid, args.size, climb=args.climb)
+    grid = Grid.parse(_grid_spec(args), _size(args), climb=args.climb)
     # an SI bird gets a table in table units: the table records the reduced bird
     bird = reduced_bird(bird_from_args(args))
     _check_build_options(args)
@@ -237,4 +258,12 @@ def run_build(args: argparse.Namespace) -> int:
     return 0
 
 
-__all__ = ["FORCE_NOTE", "register", "run_build", "run_info", "run_lookup"]
+__all__ = [
+    "DEFAULT_SIZE",
+    "FLIGHT_GRID",
+    "FORCE_NOTE",
+    "register",
+    "run_build",
+    "run_info",
+    "run_lookup",
+]

@@ -11,12 +11,18 @@ import json
 
 import numpy as np
 
+from birdsim.commands.common import REDUCED_UNITS
 from birdsim.errors import check_finite
 from birdsim.tables.cost import FRACTION_NAMES
 from birdsim.tables.lookup import STATUS_NAMES, load_table, table_paths
 from birdsim.tables.smoothness import table_smoothness
 
 FORCE_NOTE = "right wing + body drag (the dissertation's flapcost force), Fz < 0 is up"
+#: Tables are non-dimensional whatever bird they were built for (docs/flight.md).
+TABLE_UNITS = {
+    **REDUCED_UNITS,
+    "cost": "force units (|dFx| + |dFz| + 0.5 |P| and the small terms, docs/tables.md)",
+}
 
 
 def table_summary(path: str) -> dict:
@@ -34,6 +40,7 @@ def table_summary(path: str) -> dict:
         "model": t.model,
         "bird": t.bird.name,
         "force": FORCE_NOTE,
+        "units": TABLE_UNITS,
         "param_names": list(t.param_names),
         "grid": {
             a: {"min": float(t.axes[a][0]), "max": float(t.axes[a][-1]), "count": len(t.axes[a])}
@@ -167,15 +174,20 @@ def run_lookup(args: argparse.Namespace) -> int:
         "achieved_interpolated": {k: float(out[f"achieved_{k}"]) for k in ("Fx", "Fz", "P")},
         "status": t.status_at(fx, fz, v, clip=args.clip, climb=vc),
         "force": FORCE_NOTE,
+        "units": TABLE_UNITS,
     }
     if args.json:
         print(json.dumps(result, indent=2))
         return 0
     print(
-        f"model {t.model}, demand Fx={fx:g} Fz={fz:g} V={v:g} climb={vc:g} ({FORCE_NOTE}); cell status: {result['status']}"
+        f"model {t.model}, demand Fx={fx:g} Fz={fz:g} ({TABLE_UNITS['force']}) V={v:g} climb={vc:g} "
+        f"({TABLE_UNITS['speed']}; {FORCE_NOTE}); cell status: {result['status']}"
     )
     for n, val in params.items():
         print(f"  {n:14s} {val:+.4f} rad")
     a = result["achieved_interpolated"]
-    print(f"  achieved (interpolated): Fx={a['Fx']:+.4f} Fz={a['Fz']:+.4f} P={a['P']:+.4f}")
+    print(
+        f"  achieved (interpolated): Fx={a['Fx']:+.4f} Fz={a['Fz']:+.4f} {TABLE_UNITS['force']}, "
+        f"P={a['P']:+.4f} {TABLE_UNITS['power']}"
+    )
     return 0
