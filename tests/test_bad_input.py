@@ -38,9 +38,10 @@ import pytest
 from birdsim import Bird, LookupTable, evaluate_cycle, load_table
 from birdsim.cli import main
 from birdsim.errors import BirdsimError
-from birdsim.flight.freeflight import Gust
+from birdsim.flight.freeflight import Gust, fly
 from birdsim.flight.manoeuvre import Keyframe, Manoeuvre, get_manoeuvre, load_manoeuvre
 from birdsim.flight.path_file import get_flight
+from birdsim.flight.presets import PATH_PRESETS, demo_bird
 from birdsim.mujoco.crosscheck import crosscheck
 from birdsim.physics.kinematics import get_model
 from birdsim.tables.build import BuildConfig, BuildSettings, Grid, build_table
@@ -53,6 +54,7 @@ HOVER_PARAMS = dict(pitch=1.5, flap_amp=1.5, twist_amp=0.7)
 BUILD = ["tables", "build", "--model", "base", "--grid", "Fx=0|0.2,Fz=-0.5|-0.2,V=0|0.9", "--jobs", "1", "--quiet"]
 RENDER = ["render", "hover", "--model", "base", "--table", "{w}/table.npz", "--quiet"]
 TINY = Grid.parse("Fx=0|0.2,Fz=-0.5|-0.2,V=0|0.9")
+SEED_TABLE = Path(__file__).resolve().parent.parent / "tables" / "seed-m3.npz"
 # fmt: on
 
 
@@ -268,6 +270,7 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("py/ForceProblem-demand-huge", lambda w: ForceProblem("base", 1e300, -0.3, 0.0), "Fx_demand=1e+300 is invalid"),
     ("py/ForceProblem-speed-huge", lambda w: ForceProblem("base", 0.0, -0.3, 1e300), "speed=1e+300 is invalid"),
     ("py/crosscheck-speed-huge", lambda w: crosscheck("base", HOVER_PARAMS, 1e300), "speed=1e+300 is invalid"),
+    ("py/fly-beats-huge", lambda w: fly(PATH_PRESETS["cruise"], load_table(SEED_TABLE), demo_bird(), "m3", beats=1e300), "beats=1e+300 is invalid"),
     ("py/Gust-huge", lambda w: Gust(0.0, 1.0, 1e300, 0.0), "gust wx=1e+300 is invalid"),
     ("py/Grid-huge", lambda w: Grid(Fx=np.array([0.0, 1e300]), Fz=np.array([-0.5, 0.0]), V=np.array([0.0, 1.0])), "grid Fx=[0.0, 1e+300] is invalid"),
     # ---- Python: tables ---------------------------------------------------------------

@@ -189,8 +189,10 @@ def fly(
     red = reduced_bird(bird)
     speed = scales(bird).speed
     beats = float(reference.duration_beats if beats is None else beats)
-    if not (math.isfinite(beats) and beats > 0):
-        raise BirdsimError(f"--seconds gives {beats!r} wingbeats; allowed: a positive finite time")
+    if not (math.isfinite(beats) and beats > 0 and magnitude_ok(beats)):
+        raise BirdsimError(
+            f"beats={beats!r} is invalid; allowed: a positive finite number of wingbeats, {limits_text()}"
+        )
     gains = gains or gains_for(red)
     demands_only = bool(getattr(reference, "open_loop_demands", False))
     ctl = Controller(
