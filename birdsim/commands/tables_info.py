@@ -21,7 +21,7 @@ FORCE_NOTE = "right wing + body drag (the dissertation's flapcost force), Fz < 0
 #: Tables are non-dimensional whatever bird they were built for (docs/flight.md).
 TABLE_UNITS = {
     **REDUCED_UNITS,
-    "cost": "force units (|dFx| + |dFz| + 0.5 |P| and the small terms, docs/tables.md)",
+    "cost": "reduced units: |dFx| + |dFz| + 0.5 |P| (+ the small terms of docs/tables.md)",
 }
 
 
@@ -98,6 +98,11 @@ def run_info(args: argparse.Namespace) -> int:
         print(json.dumps(s, indent=2))
         return 0
     print(f"{s['file']}: model {s['model']}, bird {s['bird']}; force: {s['force']}")
+    u = s["units"]
+    print(
+        f"units (tables are non-dimensional): Fx, Fz in {u['force']}, P in {u['power']}, "
+        f"V in {u['speed']}, wingbeat parameters in {u['angle']}; cost in {u['cost']}"
+    )
     print(
         "grid: "
         + ", ".join(
