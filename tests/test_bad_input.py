@@ -203,6 +203,7 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("bird/mass-huge", ["bird", "new", "big", "--mass", "1e300", "--span", "1", "--mean-chord", "0.1", "--frequency", "5", "--out", "{w}/b.toml"], "--mass 1e+300 is invalid"),
     ("bird/span-huge", ["bird", "new", "big", "--mass", "1", "--span", "1e300", "--mean-chord", "0.1", "--frequency", "5", "--out", "{w}/b.toml"], "--span 1e+300 is invalid"),
     ("bird/frequency-tiny", ["bird", "new", "big", "--mass", "1", "--span", "1", "--mean-chord", "0.1", "--frequency", "1e-300", "--out", "{w}/b.toml"], "--frequency 1e-300 is invalid"),
+    ("validate/data-speed-huge", ["validate", "--data", "{w}/measurements_huge.csv"], "speed_m_s='1e300' is invalid"),
     ("validate/bird-mass-huge", ["validate", "--bird", "{w}/bird_heavy.toml"], "bird.mass=1e+300 is invalid"),
     ("crosscheck/ctrl-c", Interrupt(["crosscheck", "--model", "base", "--forward", "none", "--samples", "8", "--figure", "{w}/new.png"],
                                     "birdsim.mujoco.crosscheck:crosscheck", after=1), "interrupted"),
@@ -368,6 +369,10 @@ def template(tmp_path_factory: pytest.TempPathFactory) -> Path:
     (w / "bird_bool.toml").write_text("semispan = true\n")
     (w / "bird_polar.toml").write_text('[polar]\nkind = "magic"\n')
     (w / "bird_huge.toml").write_text("chord = 1e300\n")
+    shipped = (
+        Path(__file__).resolve().parent.parent / "birdsim" / "data" / "pigeon_measurements.csv"
+    )
+    (w / "measurements_huge.csv").write_text(shipped.read_text().replace(",4.46,,", ",1e300,,", 1))
     (w / "path_kf2_low.toml").write_text(
         "duration = 8\n[[keyframe]]\nt = 0\nV = 0.5\nz = 6\n[[keyframe]]\nt = 4\nV = 0.5\nz = 0.3\n"
         "[[keyframe]]\nt = 8\nV = 0.5\nz = 6\n"
