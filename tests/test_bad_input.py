@@ -51,8 +51,12 @@ from birdsim.tables.optimize import ForceProblem
 HOVER = ["--param", "pitch=1.5", "--param", "flap_amp=1.5", "--param", "twist_amp=0.7"]
 FORCES = ["forces", "--model", "m1", "--speed", "0"]
 HOVER_PARAMS = dict(pitch=1.5, flap_amp=1.5, twist_amp=0.7)
-BUILD = ["tables", "build", "--model", "base", "--grid", "Fx=0|0.2,Fz=-0.5|-0.2,V=0|0.9", "--jobs", "1", "--quiet"]
-RENDER = ["render", "hover", "--model", "base", "--table", "{w}/table.npz", "--quiet"]
+BUILD_BASE = ["tables", "build", "--model", "base", "--quiet"]  # a single-valued option is given once
+TINY_GRID = ["--grid", "Fx=0|0.2,Fz=-0.5|-0.2,V=0|0.9"]
+BUILD = [*BUILD_BASE, *TINY_GRID, "--jobs", "1"]
+BUILD_NO_GRID = [*BUILD_BASE, "--jobs", "1"]
+RENDER_NO_MODEL = ["render", "hover", "--table", "{w}/table.npz", "--quiet"]
+RENDER = [*RENDER_NO_MODEL, "--model", "base"]
 TINY = Grid.parse("Fx=0|0.2,Fz=-0.5|-0.2,V=0|0.9")
 SEED_TABLE = Path(__file__).resolve().parent.parent / "tables" / "seed-m3.npz"
 # fmt: on
@@ -136,15 +140,15 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("examples/unknown-option", ["examples", "--model", "m1"], "unrecognized arguments: --model"),
     # ---- birdsim tables build -----------------------------------------------------------
     ("build/unknown-model", ["tables", "build", "--model", "m9"], "--model 'm9' is unknown"),
-    ("build/grid-malformed", [*BUILD, "--grid", "Fx=1:2"], "--grid 'Fx=1:2' is malformed"),
-    ("build/grid-nan", [*BUILD, "--grid", "Fx=nan:1:3"], "--grid"),
-    ("build/grid-negative-V", [*BUILD, "--grid", "V=-1:1:3"], "--grid V starts at -1"),
-    ("build/grid-huge", [*BUILD, "--grid", "Fx=-1:1:1000,Fz=-1:0:1000,V=0:1:1000"], "--grid"),
-    ("build/grid-value-huge", [*BUILD, "--grid", "Fx=-1e300:1e300:2,Fz=-0.5:0:2,V=0:1:2"], "--grid Fx=[-1e+300, 1e+300] is invalid"),
-    ("build/grid-speed-huge", [*BUILD, "--grid", "Fx=0:0.2:2,Fz=-0.5:0:2,V=0:1e300:2"], "--grid V=[0.0, 1e+300] is invalid"),
+    ("build/grid-malformed", [*BUILD_NO_GRID, "--grid", "Fx=1:2"], "--grid 'Fx=1:2' is malformed"),
+    ("build/grid-nan", [*BUILD_NO_GRID, "--grid", "Fx=nan:1:3"], "--grid"),
+    ("build/grid-negative-V", [*BUILD_NO_GRID, "--grid", "V=-1:1:3"], "--grid V starts at -1"),
+    ("build/grid-huge", [*BUILD_NO_GRID, "--grid", "Fx=-1:1:1000,Fz=-1:0:1000,V=0:1:1000"], "--grid"),
+    ("build/grid-value-huge", [*BUILD_NO_GRID, "--grid", "Fx=-1e300:1e300:2,Fz=-0.5:0:2,V=0:1:2"], "--grid Fx=[-1e+300, 1e+300] is invalid"),
+    ("build/grid-speed-huge", [*BUILD_NO_GRID, "--grid", "Fx=0:0.2:2,Fz=-0.5:0:2,V=0:1e300:2"], "--grid V=[0.0, 1e+300] is invalid"),
     ("build/set-chord-huge", [*BUILD, "--set", "chord=1e300"], "--set chord=1e+300 is invalid"),
     ("build/size-zero", ["tables", "build", "--model", "base", "--size", "0"], "--size 0 is invalid"),
-    ("build/jobs-zero", [*BUILD, "--jobs", "0"], "--jobs 0 is invalid"),
+    ("build/jobs-zero", [*BUILD_BASE, *TINY_GRID, "--jobs", "0"], "--jobs 0 is invalid"),
     ("build/screen-zero", [*BUILD, "--screen", "0"], "--screen"),
     ("build/starts-negative", [*BUILD, "--starts", "-1"], "--starts"),
     ("build/relax-too-large", [*BUILD, "--relax", "2"], "--relax"),
@@ -225,7 +229,7 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("export/bird-missing", ["export", "cruise", "--format", "csv", "--out", "{w}/x.csv", "--bird", "{w}/nope.toml"], "--bird '{w}/nope.toml' does not exist"),
     ("envelope/bird-missing", ["envelope", "--bird", "{w}/nope.toml"], "--bird '{w}/nope.toml' does not exist"),
     ("render/manoeuvre-huge-t", ["render", "{w}/man_huge_t.toml", "--table", "{w}/table.npz"], "keyframe t=1e+12"),
-    ("render/unknown-model", [*RENDER, "--model", "m9"], "--model 'm9' is unknown"),
+    ("render/unknown-model", [*RENDER_NO_MODEL, "--model", "m9"], "--model 'm9' is unknown"),
     ("render/size-odd", [*RENDER, "--size", "100x100"], "--size"),
     ("render/size-malformed", [*RENDER, "--size", "big"], "--size 'big' is malformed"),
     ("render/fps-zero", [*RENDER, "--fps", "0"], "--fps 0 is invalid"),

@@ -154,6 +154,7 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
     else:
         clip_beats = float(log["t"][-1]) * float(log["omega"]) / (2 * 3.141592653589793)
     at = check_still(args, clip_beats)
+    select_gl(args.gl)  # a missing GL library -> one line; MUJOCO_GL set before the renderer starts
     # the bird and the table before any output is checked (checking makes its folder)
     bird_and_table = flight_bird_and_table(args, model) if reference is not None else None
     out = Path(args.out) if args.out else default_out
@@ -165,7 +166,6 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
         if Path(args.sheet).suffix.lower() != ".png":
             raise BirdsimError(f"--sheet {args.sheet!r} does not end in .png; allowed: a .png path")
         check_writable(Path(args.sheet), args.force, "--sheet")
-    select_gl(args.gl)  # a missing GL library -> one line; MUJOCO_GL set before the renderer starts
     if reference is not None:
         beats = (
             reference.duration_beats
