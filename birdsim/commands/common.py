@@ -1,4 +1,6 @@
-"""What several subcommands share, in one module below them (no command imports another):
+"""What several subcommands share, in one module below them (no command module imports
+another command's module; the free flight that render and export both fly is
+``render_flight``, and ``tables_info`` is the tables command's second half):
 arguments (bird, NAME=VALUE pairs), the translation of the library's Python argument
 names into the flags the user typed, output checks (``--out``, ``--still``), and the
 bird and table a flying command reads."""
