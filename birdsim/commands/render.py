@@ -4,10 +4,17 @@ rendered headlessly to an MP4 (H.264, yuv420p)."""
 from __future__ import annotations
 
 import argparse
-import re
 from pathlib import Path
 
-from birdsim.commands.common import add_bird_arguments, bird_from_args
+from birdsim.commands.common import (
+    add_bird_arguments,
+    bird_from_args,
+    check_still,
+    check_writable,
+    load_model_table,
+    require_bird,
+    slug,
+)
 from birdsim.commands.render_flight import add_flight_arguments, is_log, run_flight
 from birdsim.errors import BirdsimError
 from birdsim.flight.manoeuvre import PRESETS
@@ -102,10 +109,6 @@ def _number(arg: str, raw: str | None, kind: type = float) -> float | int | None
         raise BirdsimError(f"{arg} {raw!r} is not {what}") from None
 
 
-def _slug(text: str) -> str:
-    return re.sub(r"[^A-Za-z0-9_.-]+", "_", text).strip("_") or "manoeuvre"
-
-
 def _options(args: argparse.Namespace):
     """RenderOptions from the command line (one clear line for a bad value)."""
     from birdsim.render.renderer import RenderOptions, parse_size
@@ -129,22 +132,6 @@ def _options(args: argparse.Namespace):
     )
 
 
-def check_still(args: argparse.Namespace, clip_beats: float) -> float | None:
-    """``--still``/``--at``/``--sheet`` checked before any work; the still's time in
-    wingbeats (None when no still is asked for)."""
-    if args.at is not None and not args.still:
-        raise BirdsimError(f"--at {args.at!r} needs --still FILE.png; allowed: --at with --still")
-    if args.sheet and args.still:
-        raise BirdsimError("--sheet needs a video; allowed: --sheet without --still")
-    if not args.still:
-        return None
-    at = _at_beats(args.at, clip_beats)
-    if Path(args.still).suffix.lower() != ".png":
-        raise BirdsimError(f"--still {args.still!r} does not end in .png; allowed: a .png path")
-    check_writable(Path(args.still), args.force, "--still")
-    return at
-
-
 def run(args: argparse.Namespace) -> int:
     # every cheap check first, so that a mistake costs nothing and writes nothing
     from birdsim.flight.manoeuvre import get_manoeuvre
@@ -166,7 +153,7 @@ def run(args: argparse.Namespace) -> int:
     at = check_still(args, seconds * options.beats_per_second)
     if at is None:
         out = (
-            Path(args.out) if args.out else Path("renders") / f"{_slug(manoeuvre.name)}-{model}.mp4"
+            Path(args.out) if args.out else Path("renders") / f"{slug(manoeuvre.name)}-{model}.mp4"
         )
         if out.suffix.lower() != ".mp4":
             raise BirdsimError(f"--out {str(out)!r} does not end in .mp4; allowed: a .mp4 path")
@@ -179,7 +166,7 @@ def run(args: argparse.Namespace) -> int:
     from birdsim.tables.shipped import table_folder
 
     table_path = Path(args.table) if args.table else table_folder() / f"{model}.npz"
-    table = _load_table(table_path, model, explicit=bool(args.table))
+    table = load_model_table(table_path, model, explicit=bool(args.table))
     bird = bird_from_args(args) if (args.bird or args.set) else None
     if bird is not None:
         require_bird(table, bird, table_path)
@@ -223,65 +210,3 @@ def _forces_scale(raw: str | None) -> float | None:
             f"--forces {raw!r} is not a positive number; allowed: semispans per weight in (0, 1e6], e.g. --forces 1.5"
         )
     return value
-
-
-def _at_beats(raw: str | None, clip_beats: float) -> float:
-    """``--at BEATS`` inside the clip [0, clip_beats] (default: the middle)."""
-    if raw is None:
-        return 0.5 * clip_beats
-    try:
-        value = float(raw)
-    except ValueError:
-        value = float("nan")
-    if not (0.0 <= value <= clip_beats):
-        raise BirdsimError(
-            f"--at {raw!r} is outside the clip; allowed: a time in wingbeats in [0, {clip_beats:g}]"
-        )
-    return value
-
-
-def check_writable(out: Path, force: bool, arg: str = "--out") -> None:
-    """Refuse an existing file without --force and a folder we cannot write into
-    (probed by creating and removing the temporary sibling the writer will use)."""
-    import os
-
-    from birdsim.io import check_output, temporary_sibling
-
-    check_output(out, force, arg)
-    try:
-        os.unlink(temporary_sibling(out))
-    except OSError as exc:
-        raise BirdsimError(
-            f"{arg} {str(out)!r} is not writable: {exc.strerror}; allowed: a path in a writable folder"
-        ) from None
-
-
-def require_bird(table, bird, table_path: Path) -> None:
-    """Refuse, in one line naming the table and both birds, a bird whose reduced bird is
-    not the one the table was built for (:meth:`LookupTable.require_bird`; the same line
-    as free flight's ``birdsim.commands.fly.load_table_for``)."""
-    try:
-        table.require_bird(bird)
-    except BirdsimError as exc:
-        raise BirdsimError(f"--table {str(table_path)!r}: {exc}") from None
-
-
-def _load_table(path: Path, model: str, *, explicit: bool):
-    from birdsim.flight.playback import check_table_model
-
-    if not path.exists():
-        hint = (
-            f"build it with `birdsim tables build --model {model}`"
-            if not explicit
-            else "a table file (.npz)"
-        )
-        raise BirdsimError(f"--table {str(path)!r} does not exist; allowed: {hint}")
-    try:
-        from birdsim.tables.lookup import load_table
-    except ImportError:  # pragma: no cover - tables land with issue 3
-        raise BirdsimError(
-            "--table: this birdsim has no table support (birdsim.tables.lookup is missing)"
-        ) from None
-    table = load_table(path)
-    check_table_model(table, model)
-    return table

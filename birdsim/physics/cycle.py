@@ -22,7 +22,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from birdsim.errors import BirdsimError
+from birdsim.errors import BirdsimError, check_numbers
 from birdsim.physics.aero import body_drag, induced_velocity
 from birdsim.physics.bird import Bird
 from birdsim.physics.cycle_result import Cycle, MeanForces, PanelMeans, _Histories, cycle_mean  # noqa: F401 (re-exported)
@@ -184,15 +184,7 @@ def evaluate_cycle(
             f"bird={bird!r} is invalid; allowed: a birdsim.Bird (Bird.from_toml(path) reads a bird file) or None"
         )
     p = validate_params(m, params, check_bounds=check_bounds)
-    try:
-        v = np.asarray(speed, dtype=float)
-    except (TypeError, ValueError):
-        raise BirdsimError(
-            f"speed={speed!r} is not a number; allowed: a finite number >= 0"
-        ) from None
-    if not np.all(np.isfinite(v)) or np.any(v < 0):
-        bad = float(v[~(np.isfinite(v) & (v >= 0))].flat[0]) if v.ndim else float(v)
-        raise BirdsimError(f"speed={bad} is invalid; allowed: a finite number >= 0")
+    v = check_numbers("speed", speed, "a finite number >= 0", minimum=0.0)
     vc = _check_climb(climb)
     rate = check_body_rate(body_rate)
     try:
@@ -271,7 +263,7 @@ def evaluate_cycle(
         panel_means=means,
     )
     if means is None:
-        cyc._hist  # the numpy path computes its histories now (errors surface here)
+        _ = cyc._hist  # the numpy path computes its histories now (errors surface here)
     return cyc
 
 

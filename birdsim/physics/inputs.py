@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from birdsim.errors import BirdsimError
+from birdsim.errors import BirdsimError, check_numbers
 from birdsim.physics.frames import Vec3
 
 
@@ -27,22 +27,9 @@ def check_body_rate(body_rate: object) -> np.ndarray:
         raise BirdsimError(
             f"body_rate has shape {w.shape}; allowed: (3,) or (..., 3): (p, q, r) in body axes"
         )
-    if not np.all(np.isfinite(w)):
-        raise BirdsimError(
-            f"body_rate={float(w[~np.isfinite(w)].flat[0])} is not finite; allowed: finite rates"
-        )
-    return w
+    return check_numbers("body_rate", w, "finite rates (p, q, r) in rad per unit time")
 
 
 def _check_climb(climb: object) -> np.ndarray:
-    """``climb`` as a float array; one line naming a non-number or non-finite value."""
-    try:
-        vc = np.asarray(climb, dtype=float)
-    except (TypeError, ValueError):
-        raise BirdsimError(
-            f"climb={climb!r} is not a number; allowed: a finite number (positive up)"
-        ) from None
-    if not np.all(np.isfinite(vc)):
-        bad = float(vc[~np.isfinite(vc)].flat[0]) if vc.ndim else float(vc)
-        raise BirdsimError(f"climb={bad} is invalid; allowed: a finite number (positive up)")
-    return vc
+    """``climb`` as a float array; one line naming a non-number, non-finite or absurd value."""
+    return check_numbers("climb", climb, "a finite number (positive up)")

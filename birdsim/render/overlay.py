@@ -192,7 +192,7 @@ class PlotStrip:
         draw = ImageDraw.Draw(layer)
         y0 = self._y(0.0)
         draw.line([(0, y0), (width, y0)], fill=(200, 200, 200, 140), width=1)
-        for label, v, rgb in series:
+        for _label, v, rgb in series:
             if len(v) < 2:  # a label only
                 continue
             pts = list(

@@ -339,7 +339,7 @@ def _regularise(
                 for k, cells in enumerate(groups)
             }
             done = _run(tasks, executor, ckpt, lambda k: None, 0)
-            for name, (fn, args) in tasks.items():
+            for name, (_fn, args) in tasks.items():
                 cells, res = args[1], done[name]
                 idx = tuple(cells.T)
                 summary["cells_resolved"] += len(cells)

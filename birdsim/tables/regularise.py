@@ -157,7 +157,8 @@ def smooth_cells(
     pool: list[list[np.ndarray]] = [[X[c].copy()] for c in cells]
     evals = np.zeros(len(cells), dtype=np.int64)
     conv = np.ones(len(cells), dtype=bool)
-    for m, (x, e, ok_flag) in zip(owner, results):
+    # the candidates' SLSQP flags are not used: `converged` stays True (kept as it was)
+    for m, (x, e, _converged) in zip(owner, results):
         pool[m].append(canonical_params(model, x))
         evals[m] += e
     out_x = np.array([X[c] for c in cells], dtype=float).reshape(len(cells), -1)

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
 
-from birdsim.errors import BirdsimError
+from birdsim.errors import BirdsimError, limits_text, magnitude_ok
 
 COLUMNS = (
     "id",
@@ -229,8 +229,10 @@ def _parse_row(name: str, line: int, raw: dict[str, str | None], seen: set[str])
             v = float(s)
         except ValueError:
             raise bad(col, s, "a finite number") from None
-        if not math.isfinite(v) or (positive and v < 0):
-            raise bad(col, s, "a finite number" + (" >= 0" if positive else ""))
+        if not math.isfinite(v) or (positive and v < 0) or not magnitude_ok(v):
+            raise bad(
+                col, s, "a finite number" + (" >= 0" if positive else "") + f", {limits_text()}"
+            )
         return v
 
     value = number("value", True)
