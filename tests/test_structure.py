@@ -26,7 +26,6 @@ MAX_LINES = 400
 #: Modules over 400 lines that other engineers are changing on their branches right now
 #: (they keep them under 400 there); the lead removes these exemptions after merging.
 OVER_LIMIT_ELSEWHERE = {
-    "tables/lookup.py",
     "physics/kernel.py",
     "physics/kinematics.py",
     "mujoco/model.py",
