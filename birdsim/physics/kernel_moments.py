@@ -5,11 +5,10 @@ forward-mode dual numbers (:mod:`birdsim.physics.kernel_dual`) with one slot per
 wingbeat parameter of the input model and three for the body rate (p, q, r): each
 element's air velocity is the body's, plus its flapping velocity, plus ``omega x r``;
 the mean force and the mean moment ``r x F`` (body axes, about the shoulder = torso
-origin) of a right wing come out with their derivatives (:func:`right_wings`).
-:mod:`birdsim.physics.moments_eval` evaluates both wings with it (the left as a
-mirrored right wing, :mod:`birdsim.physics.moments`) and assembles the whole bird's
-values and Jacobians; None where the kernel cannot run (the caller then uses the numpy
-reference of :mod:`birdsim.physics.moments_eval`).
+origin) of a right wing come out with their derivatives.  :func:`whole_bird` evaluates
+both wings (the left as a mirrored right wing, :mod:`birdsim.physics.moments`) and
+assembles the whole bird's values and Jacobians.  None where the kernel cannot run
+(the caller then uses the numpy reference of :mod:`birdsim.physics.moments_eval`).
 """
 
 from __future__ import annotations
@@ -65,6 +64,42 @@ def right_wings(mx, p, speed, climb, rate, bird, phases) -> np.ndarray | None:
     if not kernel._run(_moments_kernel, B, args):
         return None
     return out
+
+
+def whole_bird(mx, sym, speed, climb, rate, u, bird, phases, signs) -> dict | None:
+    """Whole-bird values and Jacobians (see :func:`birdsim.physics.moments_eval.whole_bird`)."""
+    from birdsim.physics.moments_eval import MIRROR_F, MIRROR_M, _drag_body, _sides
+
+    right, left = _sides(mx, sym, u, signs)
+    B, d = len(speed), len(mx.param_names)
+    both = {k: np.concatenate([right[k], left[k]]) for k in mx.param_names}
+    rates = np.concatenate([rate, MIRROR_M * rate])
+    out = right_wings(
+        mx,
+        both,
+        np.concatenate([speed, speed]),
+        np.concatenate([climb, climb]),
+        rates,
+        bird,
+        phases,
+    )
+    if out is None:
+        return None
+    mirror = np.concatenate([MIRROR_F, MIRROR_M])[None, :, None]
+    r_, l_ = out[:B], mirror * out[B:]  # the left wing's rows mirrored back
+    val = r_[..., 0] + l_[..., 0]
+    sr, sl, idx = signs
+    cols = 1 + np.asarray(idx)
+    du = r_[..., cols] * sr + l_[..., cols] * sl
+    drate = r_[..., 1 + d :] + l_[..., 1 + d :] * MIRROR_M  # the left sees (-p, q, -r)
+    return {
+        "force_body": val[:, :3] + _drag_body(sym, speed, climb, bird),
+        "moment_body": val[:, 3:],
+        "force_du": du[:, :3],
+        "moment_du": du[:, 3:],
+        "force_drate": drate[:, :3],
+        "moment_drate": drate[:, 3:],
+    }
 
 
 @_jit

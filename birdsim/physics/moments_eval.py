@@ -15,7 +15,6 @@ import numpy as np
 from birdsim.errors import BirdsimError
 from birdsim.physics.aero import body_drag
 from birdsim.physics.bird import Bird
-from birdsim.physics.control_inputs import CONTROL_INPUTS, input_signs
 from birdsim.physics.cycle import element_forces
 from birdsim.physics.frames import earth_to_body
 from birdsim.physics.inputs import cross
@@ -59,6 +58,8 @@ def right_wing_numpy(
 
 def _sides(mx, sym, u, signs):
     """Right and left parameters (dicts of B arrays) from the symmetric ones and u (B x k)."""
+    from birdsim.physics.moments import CONTROL_INPUTS
+
     right = {k: np.array(v, dtype=float) for k, v in sym.items()}
     left = {k: np.array(v, dtype=float) for k, v in sym.items()}
     for i, (name, _) in enumerate(CONTROL_INPUTS[mx.name]):
@@ -82,43 +83,6 @@ def _means_numpy(mx, sym, speed, climb, rate, u, bird, phases, signs):
     f, m = right_wing_numpy(mx, both, v2, c2, rates, bird, phases)
     force = f[:B] + MIRROR_F * f[B:] + _drag_body(sym, speed, climb, bird)
     return force, m[:B] + MIRROR_M * m[B:]
-
-
-def _whole_bird_kernel(mx, sym, speed, climb, rate, u, bird, phases, signs) -> dict | None:
-    """Whole-bird values and Jacobians by the compiled kernel (see :func:`whole_bird`),
-    None where it cannot run."""
-    from birdsim.physics import kernel_moments
-
-    right, left = _sides(mx, sym, u, signs)
-    B, d = len(speed), len(mx.param_names)
-    both = {k: np.concatenate([right[k], left[k]]) for k in mx.param_names}
-    rates = np.concatenate([rate, MIRROR_M * rate])
-    out = kernel_moments.right_wings(
-        mx,
-        both,
-        np.concatenate([speed, speed]),
-        np.concatenate([climb, climb]),
-        rates,
-        bird,
-        phases,
-    )
-    if out is None:
-        return None
-    mirror = np.concatenate([MIRROR_F, MIRROR_M])[None, :, None]
-    r_, l_ = out[:B], mirror * out[B:]  # the left wing's rows mirrored back
-    val = r_[..., 0] + l_[..., 0]
-    sr, sl, idx = signs
-    cols = 1 + np.asarray(idx)
-    du = r_[..., cols] * sr + l_[..., cols] * sl
-    drate = r_[..., 1 + d :] + l_[..., 1 + d :] * MIRROR_M  # the left sees (-p, q, -r)
-    return {
-        "force_body": val[:, :3] + _drag_body(sym, speed, climb, bird),
-        "moment_body": val[:, 3:],
-        "force_du": du[:, :3],
-        "moment_du": du[:, 3:],
-        "force_drate": drate[:, :3],
-        "moment_drate": drate[:, 3:],
-    }
 
 
 def whole_bird(
@@ -145,11 +109,15 @@ def whole_bird(
         ``force_body``, ``moment_body`` (B x 3) and with ``jacobians`` ``force_du``,
         ``moment_du`` (B x 3 x k), ``force_drate``, ``moment_drate`` (B x 3 x 3).
     """
+    from birdsim.physics.moments import input_signs
+
     if backend not in BACKENDS:
         raise BirdsimError(f"backend={backend!r} is unknown; allowed: {', '.join(BACKENDS)}")
     signs = input_signs(mx)
     if backend == "kernel":
-        out = _whole_bird_kernel(mx, sym, speed, climb, rate, u, bird, phases, signs)
+        from birdsim.physics import kernel_moments
+
+        out = kernel_moments.whole_bird(mx, sym, speed, climb, rate, u, bird, phases, signs)
         if out is not None:
             if not jacobians:
                 out = {k: out[k] for k in ("force_body", "moment_body")}
