@@ -187,6 +187,18 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("render/table-missing", ["render", "hover", "--model", "base", "--table", "{w}/nope.npz", "--out", "{w}/x.mp4"], "--table '{w}/nope.npz' does not exist"),
     ("render/table-corrupt", ["render", "hover", "--model", "base", "--table", "{w}/corrupt.npz", "--out", "{w}/x.mp4"], "do not belong together"),
     ("render/table-other-model", ["render", "hover", "--model", "m4", "--table", "{w}/table.npz", "--out", "{w}/x.mp4"], "--table"),
+    # ---- birdsim view / studio -------------------------------------------------------------
+    ("view/out-not-html", ["view", "hover", "--out", "{w}/x.png"], "--out '{w}/x.png' does not end in .html"),
+    ("view/out-exists", ["view", "hover", "--out", "{w}/done/index.html"], "--out '{w}/done/index.html' exists"),
+    ("view/fps-zero", ["view", "hover", "--out", "{w}/x.html", "--fps", "0"], "--fps '0' is out of range; allowed: 1 to 240"),
+    ("view/fps-text", ["view", "hover", "--out", "{w}/x.html", "--fps", "fast"], "--fps 'fast' is not a number"),
+    ("view/source-unknown", ["view", "loop", "--out", "{w}/x.html"], "manoeuvre 'loop' is unknown"),
+    ("view/source-malformed", ["view", "{w}/malformed.toml", "--out", "{w}/x.html"], "is not valid TOML"),
+    ("view/log-not-a-log", ["view", "{w}/table.npz", "--out", "{w}/x.html"], "is not a birdsim flight log"),
+    ("view/log-with-model", ["view", "{w}/table.npz", "--out", "{w}/x.html", "--model", "m4"], "--model does not apply to a flight log"),
+    ("view/model-unknown", ["view", "hover", "--out", "{w}/x.html", "--model", "m9"], "model 'm9' is unknown"),
+    ("studio/port-out-of-range", ["studio", "--port", "70000"], "--port '70000' is out of range; allowed: 1 to 65535"),
+    ("studio/port-text", ["studio", "--port", "web"], "--port 'web' is not a whole number"),
     # ---- birdsim report -------------------------------------------------------------------
     ("report/only-unknown", ["report", "--out", "{w}/r", "--only", "nonsense"], "--only 'nonsense' is unknown"),
     ("report/out-exists", ["report", "--out", "{w}/done", "--only", "thrust"], "--out '{w}/done' already holds a report"),

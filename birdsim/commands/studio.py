@@ -67,23 +67,23 @@ def make_server(host: str, port: int, root: Path):
     import socket
 
     try:
-        return _make_server(host, port, app, threaded=True)
-    except socket.gaierror:
+        family, _, _, _, address = socket.getaddrinfo(host, port, type=socket.SOCK_STREAM)[0]
+    except (socket.gaierror, UnicodeError, OverflowError):
         raise BirdsimError(
             f"--host {host!r} is not an address; allowed: an address of this machine (default 127.0.0.1)"
         ) from None
-    except OSError as exc:
+    try:  # bind once ourselves: werkzeug would print several lines and exit on its own
+        with socket.socket(family, socket.SOCK_STREAM) as probe:
+            probe.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+            probe.bind(address)
+        return _make_server(host, port, app, threaded=True)
+    except (OSError, SystemExit) as exc:
+        in_use = getattr(exc, "errno", None) in (98, 48, 10048) or isinstance(exc, SystemExit)
         reason = (
-            "is in use"
-            if getattr(exc, "errno", None) in (98, 48, 10048)
-            else f"cannot be used ({exc.strerror or exc})"
+            "is in use" if in_use else f"cannot be used ({getattr(exc, 'strerror', None) or exc})"
         )
         raise BirdsimError(
             f"--port {port} on {host} {reason}; allowed: a free port (e.g. --port {port + 1})"
-        ) from None
-    except (OverflowError, ValueError) as exc:
-        raise BirdsimError(
-            f"--host {host!r} cannot be used ({exc}); allowed: an address of this machine"
         ) from None
 
 

@@ -4,12 +4,12 @@
 import * as THREE from "three";
 
 function material(rgba, opts = {}) {
-  return new THREE.MeshStandardMaterial({
+  // Lambert, not the physically based material: software WebGL (SwiftShader) draws it
+  // several times faster, and matte plumage needs no more
+  return new THREE.MeshLambertMaterial({
     color: new THREE.Color(rgba[0], rgba[1], rgba[2]),
     transparent: rgba[3] < 1,
     opacity: rgba[3],
-    roughness: 0.8,
-    metalness: 0.0,
     side: THREE.DoubleSide,
     ...opts,
   });
@@ -92,7 +92,7 @@ export function buildWorld(scene, data) {
   const size = Math.max(40, Math.ceil((xmax - xmin + 30) / 10) * 10);
   const floor = new THREE.Mesh(
     new THREE.PlaneGeometry(size, size),
-    new THREE.MeshStandardMaterial({ color: floorColour(data), roughness: 1 }),
+    new THREE.MeshLambertMaterial({ color: floorColour(data) }),
   );
   floor.position.set((xmin + xmax) / 2, 0, -0.001);
   scene.add(floor);

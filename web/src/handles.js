@@ -24,7 +24,7 @@ export class Handles {
     this.items = points.map((p) => {
       const m = new THREE.Mesh(
         new THREE.SphereGeometry(0.18, 16, 12),
-        new THREE.MeshStandardMaterial({ color: p.xFree ? 0xe0218a : 0x8a21e0 }),
+        new THREE.MeshLambertMaterial({ color: p.xFree ? 0xe0218a : 0x8a21e0 }),
       );
       m.position.set(p.x, 0, p.z);
       m.userData = p;

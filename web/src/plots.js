@@ -43,24 +43,13 @@ export function buildPlots(container, data, viewer) {
       cursor: { drag: { x: false, y: false } },
       scales: { x: { time: false } },
       axes: [{ size: 30 }, { size: 50 }],
-      hooks: {
-        draw: [
-          (u) => {
-            const x = u.valToPos(viewer.time, "x", true);
-            const ctx = u.ctx;
-            ctx.save();
-            ctx.strokeStyle = "#000";
-            ctx.lineWidth = 1.5;
-            ctx.beginPath();
-            ctx.moveTo(x, u.bbox.top);
-            ctx.lineTo(x, u.bbox.top + u.bbox.height);
-            ctx.stroke();
-            ctx.restore();
-          },
-        ],
-      },
     };
     const u = new uPlot(opts, columns, div);
+    // the time cursor: a DOM line over the plot, moved without redrawing the plot
+    const line = document.createElement("div");
+    line.className = "bv-time";
+    u.over.appendChild(line);
+    u.timeLine = line;
     u.over.addEventListener("click", () => {
       if (u.cursor.left != null && u.cursor.left >= 0) viewer.seek(u.posToVal(u.cursor.left, "x"));
     });
@@ -69,7 +58,10 @@ export function buildPlots(container, data, viewer) {
   return {
     plots,
     redraw() {
-      for (const u of plots) u.redraw(false, false);
+      for (const u of plots) {
+        const x = u.valToPos(viewer.time, "x");
+        u.timeLine.style.transform = `translateX(${x}px)`;
+      }
     },
   };
 }

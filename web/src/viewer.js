@@ -56,8 +56,8 @@ export class Viewer {
     this._controls(el("div", { class: "bv-controls" }, this.root));
     this.plotBox = el("div", { class: "bv-plots" }, main);
 
-    this.renderer = new THREE.WebGLRenderer({ canvas: this.canvas, antialias: true, preserveDrawingBuffer: true });
-    this.renderer.setPixelRatio(1);
+    this.renderer = new THREE.WebGLRenderer({ canvas: this.canvas, antialias: false, preserveDrawingBuffer: true });
+    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2)); // no MSAA: software GL
     this.renderer.setSize(width, height, false);
     this.scene = new THREE.Scene();
     this.camera = new THREE.PerspectiveCamera(45, width / height, 0.05, 2000);
