@@ -136,7 +136,7 @@ def test_the_bird_moves_where_the_log_says(studio, server):
         f"(() => {{ const v = {v}; const gl = v.renderer.getContext(); const px = new Uint8Array(4); const t0 = performance.now(); for (let k = 0; k < 20; k++) {{ v.seek(v.duration * k / 20); gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px); }} return (performance.now() - t0) / 20; }})()"
     )
     print(
-        f"studio: scrub redraw {ms:.1f} ms per frame (470x320 canvas, drawing finished: readPixels)"
+        f"studio: scrub redraw {ms:.1f} ms per frame (430x300 canvas, drawing finished: readPixels)"
     )
     studio.evaluate(f"{v}.setCamera('follow'); {v}.seek({0.5 * duration})")
 

@@ -96,7 +96,7 @@ export function buildWorld(scene, data) {
   );
   floor.position.set((xmin + xmax) / 2, 0, -0.001);
   scene.add(floor);
-  const grid = new THREE.GridHelper(size, size, 0x5f7450, 0x7a9166);
+  const grid = new THREE.GridHelper(size, size / 2, 0x6f8460, 0x7f9670); // 2-semispan squares
   grid.rotation.x = Math.PI / 2; // GridHelper lies in x-z; our floor is x-y
   grid.position.set(floor.position.x, 0, 0.003);
   scene.add(grid);

@@ -182,7 +182,7 @@ async function openFlight(fid, body) {
     el("a", { class: `st-download download-${kind}`, href: `/api/flight/${fid}/download/${kind}` }, bar, kind.toUpperCase());
   }
   const close = el("button", { type: "button", class: "st-close" }, bar, "close");
-  const viewer = publish(new Viewer(box, scene, { width: 470, height: 320 }));
+  const viewer = publish(new Viewer(box, scene, { width: 430, height: 300 }));
   close.addEventListener("click", () => {
     viewer.dispose();
     box.remove();
