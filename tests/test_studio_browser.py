@@ -109,7 +109,7 @@ def test_the_bird_moves_where_the_log_says(studio, server):
     duration = studio.evaluate(f"{v}.duration")
     assert duration == pytest.approx(float(log["t"][-1] - log["t"][0]), rel=1e-6)
     studio.evaluate(f"{v}.setCamera('overview')")  # a camera that does not follow
-    canvas = studio.locator(".st-flight canvas").first
+    canvas = studio.locator(".st-flight .bv-canvas canvas").first
     shots, where = [], []
     for t in (0.2 * duration, 0.8 * duration):
         studio.evaluate(f"{v}.seek({t})")
@@ -161,6 +161,27 @@ def test_editing_a_keyframe_changes_the_flight(studio, server):
     _shoot(studio, "studio.png", clip={"x": 0, "y": 0, "width": 1400, "height": 720})
     z_in.fill("6")
     assert _errors(studio.messages) == []
+
+
+def test_dragging_a_keyframe_handle_edits_the_table(studio):
+    """The newest flight's view shows the path's keyframes as handles; dragging one up
+    in the flight's plane raises its z in the table (cruise: a speed-form keyframe)."""
+    v = "window.birdsimViewer"
+    studio.evaluate(f"{v}.setCamera('side'); {v}.seek(0)")
+    handle = studio.evaluate(
+        f"{v}.project([{v}.handles.items[0].position.x, 0, {v}.handles.items[0].position.z])"
+    )
+    box = studio.locator(".st-flight .bv-canvas canvas").last.bounding_box()
+    x, y = box["x"] + handle["x"], box["y"] + handle["y"]
+    z_in = studio.locator('#keyframes tbody tr >> nth=0 >> input[data-key="z"]')
+    before = float(z_in.input_value())
+    studio.mouse.move(x, y)
+    studio.mouse.down()
+    studio.mouse.move(x, y - 40, steps=5)
+    studio.mouse.up()
+    after = float(z_in.input_value())
+    assert after > before + 0.2, (before, after)  # 40 px up at the side camera: ~1 semispan
+    z_in.fill(str(before))
 
 
 def test_a_bad_file_shows_the_one_line_message(studio):

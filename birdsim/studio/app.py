@@ -4,8 +4,8 @@ the page; files are read only inside ``root`` (:mod:`birdsim.studio.safety`)."""
 
 from __future__ import annotations
 
-import html
 import math
+import re
 from pathlib import Path
 from typing import Any
 
@@ -199,7 +199,8 @@ def create_app(root: str | Path) -> Flask:
             kind, f.log, lambda: view_html(_scene(f)), size=request.args.get("size", "")
         )
         suffix, mime = downloads.KINDS[kind]
-        name = html.escape(f"{f.label or 'flight'}-{fid}{suffix}").replace('"', "")
+        stem = re.sub(r"[^A-Za-z0-9_.-]+", "_", Path(f.label or "flight").stem).strip("_.")
+        name = f"{stem or 'flight'}-{fid}{suffix}"
         return Response(
             data, mimetype=mime, headers={"Content-Disposition": f'attachment; filename="{name}"'}
         )

@@ -130,6 +130,7 @@ function showHandles(viewer) {
     }),
   );
   state.handles = h;
+  viewer.handles = h; // for scripts and tests
 }
 
 async function fly() {
@@ -166,6 +167,8 @@ async function fly() {
   }
 }
 
+const fmt = (v) => (v == null ? "n/a" : Number(v).toPrecision(3));
+
 async function openFlight(fid, body) {
   const scene = await api(`/api/flight/${fid}/scene`);
   const box = el("div", { class: "st-flight", "data-flight": fid }, document.getElementById("flights"));
@@ -175,7 +178,7 @@ async function openFlight(fid, body) {
     "span",
     { class: "st-summary" },
     bar,
-    `${fid}: ${body.label} (${body.bird || "seed"}) error RMS ${s.rms_error.toPrecision(3)} max ${s.max_error.toPrecision(3)} ${scene.units.length}` +
+    `${fid}: ${body.label} (${body.bird || "seed"}) error RMS ${fmt(s.rms_error)} max ${fmt(s.max_error)} ${scene.units.length}` +
       (s.wingbeats_saturated ? `, saturated in ${s.wingbeats_saturated} wingbeat(s)` : ""),
   );
   for (const kind of DOWNLOADS) {
