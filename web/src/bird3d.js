@@ -78,6 +78,7 @@ function floorColour(data) {
 // The world: sky, lights, a floor with a grid (1 semispan squares), the arena's geoms.
 export function buildWorld(scene, data) {
   scene.background = new THREE.Color(0xbfd8ee);
+  scene.fog = new THREE.Fog(0xbfd8ee, 25, 90); // the far floor fades (no grid moire at the horizon)
   scene.add(new THREE.HemisphereLight(0xffffff, 0x667755, 1.6));
   const sun = new THREE.DirectionalLight(0xffffff, 1.8);
   sun.position.set(-3, -5, 10);

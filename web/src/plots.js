@@ -42,7 +42,7 @@ export function buildPlots(container, data, viewer) {
       legend: { show: true, live: false },
       cursor: { drag: { x: false, y: false } },
       scales: { x: { time: false } },
-      axes: [{ size: 30 }, { size: 50 }],
+      axes: [{ size: 30 }, { size: 60 }],
     };
     const u = new uPlot(opts, columns, div);
     // the time cursor: a DOM line over the plot, moved without redrawing the plot
