@@ -161,7 +161,9 @@ def fly_request(
     )
     log = log_arrays(result, reference.name)
     phases = flight.regime if isinstance(flight, Manoeuvre) else getattr(reference, "regime", None)
-    info = summary(log, phases=phases)
+    from birdsim.flight.summary_units import with_units
+
+    info = with_units(summary(log, phases=phases), bird)
     log["bird_obj"] = bird
     return log, info
 
