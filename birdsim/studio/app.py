@@ -23,9 +23,10 @@ MODELS = ("base", "m1", "m2", "m3", "m4")
 
 _PAGE = """<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><title>birdsim studio</title>
-<style>{css}</style></head>
+<style>{view_css}</style><style>{css}</style></head>
 <body><div id="studio"></div>
 <script type="application/json" id="birdsim-options">{options}</script>
+<script>{view_js}</script>
 <script>{js}</script></body></html>
 """
 
@@ -100,6 +101,8 @@ def create_app(root: str | Path) -> Flask:
     @app.get("/")
     def page():
         text = _PAGE.format(
+            view_css=static_text("view.css"),
+            view_js=static_text("view.js").replace("</script", "<\\/script"),
             css=static_text("studio.css"),
             options=scene_json(options()),
             js=static_text("studio.js").replace("</script", "<\\/script"),

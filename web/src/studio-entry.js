@@ -1,8 +1,9 @@
 // The studio page: choose bird, model and path; edit keyframes and gusts; fly; watch
-// the flights side by side; download them. Talks to birdsim/studio/app.py.
-import { Handles } from "./handles.js";
+// the flights side by side; download them. Talks to birdsim/studio/app.py. The viewer
+// (three.js, uPlot) comes from view.js, inlined before this script (window.BirdsimViewer).
 import "./studio.css";
-import { Viewer, publish } from "./viewer.js";
+
+const { Handles, Viewer, publish } = window.BirdsimViewer;
 
 const OPTIONS = JSON.parse(document.getElementById("birdsim-options").textContent);
 const KEY_COLUMNS = ["t", "x", "V", "z", "vx", "vz", "regime"];

@@ -1,5 +1,10 @@
-// The self-contained view (birdsim view): the scene is inlined in the page as JSON.
+// The viewer bundle (view.js): three.js, uPlot and the viewer, exposed as
+// window.BirdsimViewer for the studio page (studio.js, which carries no copy of them);
+// on the self-contained view (birdsim view) it starts on the inlined scene.
+import { Handles } from "./handles.js";
 import { Viewer, publish } from "./viewer.js";
+
+window.BirdsimViewer = { Viewer, publish, Handles };
 
 function start() {
   const app = document.getElementById("app");
@@ -15,5 +20,9 @@ function start() {
   }
 }
 
-if (document.readyState === "loading") document.addEventListener("DOMContentLoaded", start);
-else start();
+function maybeStart() {
+  if (document.getElementById("birdsim-scene")) start();
+}
+
+if (document.readyState === "loading") document.addEventListener("DOMContentLoaded", maybeStart);
+else maybeStart();
