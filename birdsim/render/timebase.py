@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import math
 
-from birdsim.errors import BirdsimError
+from birdsim.errors import MIN_POSITIVE, BirdsimError
 from birdsim.physics.bird import Bird
 from birdsim.physics.units import scales
 
@@ -21,7 +21,8 @@ def is_si(bird: Bird) -> bool:
 
 
 def _positive(arg: str, raw: str | float | None, upper: float = 100.0) -> float | None:
-    """A rate or factor in (0, upper] (one line naming the flag otherwise)."""
+    """A rate or factor in (0, upper], at least MIN_POSITIVE (one line naming the flag
+    otherwise)."""
     if raw is None:
         return None
     try:
@@ -30,8 +31,10 @@ def _positive(arg: str, raw: str | float | None, upper: float = 100.0) -> float 
         raise BirdsimError(
             f"{arg} {raw!r} is not a number; allowed: a number in (0, {upper:g}]"
         ) from None
-    if not (math.isfinite(v) and 0 < v <= upper):
-        raise BirdsimError(f"{arg} {raw} is invalid; allowed: a number in (0, {upper:g}]")
+    if not (math.isfinite(v) and MIN_POSITIVE <= v <= upper):
+        raise BirdsimError(
+            f"{arg} {raw} is invalid; allowed: a number in (0, {upper:g}], at least {MIN_POSITIVE:g}"
+        )
     return v
 
 
