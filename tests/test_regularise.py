@@ -72,11 +72,11 @@ def _perturbed_build(monkeypatch, *, cost_eps=0.0, param_eps=0.0, seed=0):
     sweep, costs = build._sweep, reg.candidate_costs
 
     def noisy_sweep(*a, **k):
-        X, cost, evals, conv = sweep(*a, **k)
+        X, cost, evals, conv, X_slices = sweep(*a, **k)
         hit = rng.random(cost.shape) < 0.5
         cost = cost + np.where(hit, rng.choice([-1.0, 1.0], cost.shape) * cost_eps, 0.0)
         X = X + np.where(hit[..., None], rng.choice([-1.0, 1.0], X.shape) * param_eps, 0.0)
-        return X, cost, evals, conv
+        return X, cost, evals, conv, X_slices
 
     def noisy_costs(prob, cand):
         cost, err = costs(prob, cand)
