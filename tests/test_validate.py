@@ -282,8 +282,8 @@ def test_shipped_table_agrees_with_the_direct_solve(result) -> None:  # noqa: AN
     rad), and
     the regularising pass, which may keep a wingbeat that costs up to smooth_tol = 5e-3
     more than the best found: up to 0.01 in one wing's power in table units, 4.4 W for the
-    pigeon, 30-60 % of its level-flight power (it used 10 % of P at one cell next to 10.8
-    m/s to remove a zig-zag).  So no few-percent bound follows from the construction; 10 %
+    pigeon, 30-60 % of its level-flight power (two cells at 10.8 m/s hold wingbeats
+    needing 10 % and 5 % more power than the previous build's: all of the rise).  So no few-percent bound follows from the construction; 10 %
     is 1.6x the worst measured anywhere on the fine grid, and leaves room for a rebuild
     whose pass chooses differently (the code change from the previous build moved the
     worst speed from 4.1 to 6.2 %), while a wrong check is far outside it (a factor 2 in
