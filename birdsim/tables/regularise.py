@@ -37,8 +37,9 @@ order, never by which of two near-equal numbers happens to be smaller:
   their fixed order.
 
 So a 1e-9 change of any cost changes no choice unless a cost lies within 1e-9 of the
-``smooth_tol`` edge or of a tie band's edge (``tests/test_regularise.py`` perturbs every
-cost by +-1e-9 and gets the identical table).
+``smooth_tol`` edge or of a tie band's edge (``tests/test_regularise.py`` perturbs the
+costs the pass reads, in a random half of the cells and candidates, by +-1e-9 and gets
+the identical table).
 """
 
 from __future__ import annotations
