@@ -24,6 +24,8 @@ COMMAND_MODULES = (
     "birdsim.commands.params",
     "birdsim.commands.envelope",
     "birdsim.commands.validate",
+    "birdsim.commands.view",
+    "birdsim.commands.studio",
 )
 
 

@@ -64,7 +64,10 @@ def test_rates_of_a_still_wing_give_the_expected_velocities():
 
 def test_bad_body_rate_is_one_line():
     p = get_model("m1").guess("cruise")
-    for rate, text in (((1, 2), "body_rate has shape (2,)"), ((0, np.nan, 0), "not finite")):
+    for rate, text in (
+        ((1, 2), "body_rate has shape (2,)"),
+        ((0, np.nan, 0), "body_rate=nan is invalid"),
+    ):
         with pytest.raises(BirdsimError) as exc:
             evaluate_cycle("m1", p, 0.5, body_rate=rate)
         assert text in str(exc.value)

@@ -93,7 +93,7 @@ def test_the_readme_check_catches_a_missing_preset_or_flag() -> None:
     with pytest.raises(AssertionError):
         _check_command("birdsim fly --loop")
     with pytest.raises(AssertionError):
-        _check_command("birdsim studio")
+        _check_command("birdsim teleport")
     with pytest.raises(AssertionError):
         _check_command("birdsim tables destroy")
     _check_command("birdsim tables build --bird")

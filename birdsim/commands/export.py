@@ -55,7 +55,12 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--beat-rate",
         metavar="HZ",
-        help="wingbeats per second of animation (default: real time for an SI bird, 2 for the seed bird)",
+        help="wingbeats per second of animation (default: real time for an SI bird, 2 for the seed bird; as birdsim render)",
+    )
+    p.add_argument(
+        "--slow-motion",
+        metavar="F",
+        help="F times slower than the default time base (e.g. 4 for the pigeon's 8 Hz wingbeat)",
     )
     p.add_argument(
         "--metres-per-unit",
@@ -93,7 +98,17 @@ def run(args: argparse.Namespace) -> int:
     # every cheap check first: a mistake costs nothing and writes nothing
     export.check_format(args.format, Path(args.out))
     fps = check_fps(args.fps)
-    beat_rate = _positive("--beat-rate", args.beat_rate)
+    from birdsim.render.timebase import beat_rate_for, check_time_flags, describe
+
+    check_time_flags(args.beat_rate, args.slow_motion)
+
+    def rate_for(bird) -> float:  # the time base of birdsim render; printed
+        from birdsim.physics.bird import Bird
+
+        rate, words = beat_rate_for(bird or Bird(), args.beat_rate, args.slow_motion)
+        print(f"birdsim export: {describe(rate, words, fps)}", flush=True)
+        return rate
+
     metres = _positive("--metres-per-unit", args.metres_per_unit)
     seconds = _positive("--seconds", args.seconds)
     out = Path(args.out)
@@ -136,7 +151,7 @@ def run(args: argparse.Namespace) -> int:
         frames = frames_from_log(
             log,
             fps=fps,
-            beat_rate=beat_rate,
+            beat_rate=rate_for(log["bird_obj"]),
             metres_per_unit=metres,
             source=f"flight log {Path(args.source).name}",
         )  # type: ignore[arg-type]
@@ -153,6 +168,7 @@ def run(args: argparse.Namespace) -> int:
         reference, model, gusts = flight_reference(args.source, args.model, args.gust)
         bird_and_table = flight_bird_and_table(args, model)  # --bird and --set, as flown
         bird = bird_and_table[0]
+        beat_rate = rate_for(bird)
         per_s = time_per_second(bird, beat_rate)
         if seconds is None:
             seconds = float(reference.duration_beats) * bird.period / per_s
@@ -197,7 +213,7 @@ def run(args: argparse.Namespace) -> int:
             bird=bird,
             model=model,
             fps=fps,
-            beat_rate=beat_rate,
+            beat_rate=rate_for(bird),
             seconds=seconds,
             metres_per_unit=metres,
         )  # type: ignore[arg-type]

@@ -65,6 +65,11 @@ def register(sub: argparse._SubParsersAction) -> None:
         metavar="S",
         help="simulated time in the bird's time units (default: the manoeuvre's length)",
     )
+    p.add_argument(
+        "--strict",
+        action="store_true",
+        help="a flight with saturated wingbeats is an error (exit 2, nothing written); else one warning line on stderr",
+    )
     p.add_argument("--force", action="store_true", help="overwrite an existing --out")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.set_defaults(func=run)
@@ -148,6 +153,11 @@ def run(args: argparse.Namespace) -> int:
     if isinstance(flight, Manoeuvre):
         phases = flight.regime
     info = summary(arrays, phases=phases)
+    from birdsim.flight.saturation import report_saturation
+    from birdsim.flight.summary_units import with_units
+
+    report_saturation(arrays, command="fly", bird_arg=args.bird, model=model, strict=args.strict)
+    info = with_units(info, bird)
     if out is not None:
         save_log(arrays, out, args.force)
         info["log"] = str(out)

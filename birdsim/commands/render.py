@@ -37,7 +37,11 @@ def register(sub: argparse._SubParsersAction) -> None:
         default=None,
         help="kinematic model: base, m1, m2, m3 or m4 (default: the demo model m3 in free flight, m4 with --kinematic)",
     )
-    p.add_argument("--table", metavar="FILE", help="lookup table (default tables/<model>.npz)")
+    p.add_argument(
+        "--table",
+        metavar="FILE",
+        help="lookup table (default: the shipped table for the bird and model in free flight, tables/seed-m3.npz for the demo bird; tables/<model>.npz with --kinematic)",
+    )
     p.add_argument(
         "--out", metavar="FILE.mp4", help="output video (default renders/<manoeuvre>-<model>.mp4)"
     )
@@ -55,9 +59,15 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     p.add_argument(
         "--beat-rate",
-        default="2",
+        default=None,
         metavar="HZ",
-        help="wingbeats shown per second of video (default 2)",
+        help="wingbeats shown per second of video (default: real time for an SI bird, 2 for the seed bird; as birdsim export)",
+    )
+    p.add_argument(
+        "--slow-motion",
+        default=None,
+        metavar="F",
+        help="F times slower than the default time base (e.g. 4 for the pigeon's 8 Hz wingbeat)",
     )
     p.add_argument(
         "--camera",
@@ -85,7 +95,18 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="time of the --still frame in wingbeats from the start (default: the middle)",
     )
     p.add_argument("--no-trails", action="store_true", help="no control-point pathlines")
-    p.add_argument("--no-overlay", action="store_true", help="no text overlay")
+    p.add_argument("--no-overlay", action="store_true", help="no text overlay (= --overlay none)")
+    p.add_argument(
+        "--overlay",
+        default="short",
+        metavar="WHAT",
+        help="short (default: at most three lines: time, position error, saturation), full (the engineering view: forces, parameters, tail moment) or none",
+    )
+    p.add_argument(
+        "--clean",
+        action="store_true",
+        help="the bird and the world only: no text, plot strip, pathlines or reference path",
+    )
     p.add_argument(
         "--gl", default="auto", help="auto (OSMesa if installed, else EGL), osmesa or egl"
     )
@@ -116,20 +137,45 @@ def _options(args: argparse.Namespace):
     if args.gl not in GL_CHOICES:
         raise BirdsimError(f"--gl {args.gl!r} is unknown; allowed: {', '.join(GL_CHOICES)}")
     width, height = parse_size(args.size)
+    detail = "none" if args.no_overlay else args.overlay
+    if detail not in ("short", "full", "none"):
+        raise BirdsimError(f"--overlay {detail!r} is unknown; allowed: short, full or none")
+    if args.clean and args.forces is not None:
+        raise BirdsimError("--clean draws no force arrows; allowed: --clean or --forces, not both")
     return RenderOptions(
         width=width,
         height=height,
         fps=_number("--fps", args.fps, int),  # type: ignore[arg-type]
         seconds=_number("--seconds", args.seconds),
-        beats_per_second=_number("--beat-rate", args.beat_rate),  # type: ignore[arg-type]
+        beats_per_second=_beat_rate(args, _number("--fps", args.fps, int)),
         camera=args.camera,
         quality=args.quality,
         forces=_forces_scale(args.forces),
-        trails=not args.no_trails,
-        overlay=not args.no_overlay,
+        trails=not (args.no_trails or args.clean),
+        overlay=detail != "none" and not args.clean,
+        overlay_detail="full" if detail == "full" else "short",
+        reference=not args.clean,
         gl=args.gl,
         progress=not args.quiet,
     )
+
+
+def _beat_rate(args: argparse.Namespace, fps: int | float | None) -> float:
+    """Wingbeats per second of video (birdsim.render.timebase, the same as export's);
+    prints the time base chosen."""
+    from birdsim.render.timebase import beat_rate_for, check_time_flags, describe
+
+    check_time_flags(args.beat_rate, args.slow_motion)
+    if is_log(args.manoeuvre):
+        from birdsim.flight.flightlog import load_log
+
+        bird = load_log(args.manoeuvre, "LOG")["bird_obj"]
+    else:
+        bird = bird_from_args(args)
+    rate, words = beat_rate_for(bird, args.beat_rate, args.slow_motion)
+    if fps is not None and 1 <= fps <= 240:
+        print(f"birdsim render: {describe(rate, words, fps)}", flush=True)
+    return rate
 
 
 def run(args: argparse.Namespace) -> int:

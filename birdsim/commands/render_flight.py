@@ -36,6 +36,11 @@ def add_flight_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument(
         "--open-loop", action="store_true", help="free flight: feed-forward only (no feedback)"
     )
+    p.add_argument(
+        "--strict",
+        action="store_true",
+        help="free flight: saturated wingbeats are an error (exit 2, nothing written); else one warning line",
+    )
 
 
 def is_log(name: str) -> bool:
@@ -104,6 +109,15 @@ def fly_reference(
     bird, table = bird_and_table or flight_bird_and_table(args, model)
     result = fly(reference, table, bird, model, beats=beats, gusts=gusts, open_loop=args.open_loop)
     log = log_arrays(result, reference.name)
+    from birdsim.flight.saturation import report_saturation
+
+    report_saturation(
+        log,
+        command=getattr(args, "command", "render"),
+        bird_arg=args.bird,
+        model=model,
+        strict=getattr(args, "strict", False),
+    )
     log["bird_obj"] = bird
     return log
 

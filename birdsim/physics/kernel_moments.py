@@ -20,6 +20,7 @@ import numpy as np
 from birdsim.physics import kernel
 from birdsim.physics.jit import jit as _jit
 from birdsim.physics.kernel_dual import _dpolar, _drot
+from birdsim.physics.wing_sides import MIRROR_F, MIRROR_M, drag_body, sides
 
 
 def right_wings(mx, p, speed, climb, rate, bird, phases) -> np.ndarray | None:
@@ -68,9 +69,7 @@ def right_wings(mx, p, speed, climb, rate, bird, phases) -> np.ndarray | None:
 
 def whole_bird(mx, sym, speed, climb, rate, u, bird, phases, signs) -> dict | None:
     """Whole-bird values and Jacobians (see :func:`birdsim.physics.moments_eval.whole_bird`)."""
-    from birdsim.physics.moments_eval import MIRROR_F, MIRROR_M, _drag_body, _sides
-
-    right, left = _sides(mx, sym, u, signs)
+    right, left = sides(mx, sym, u, signs)
     B, d = len(speed), len(mx.param_names)
     both = {k: np.concatenate([right[k], left[k]]) for k in mx.param_names}
     rates = np.concatenate([rate, MIRROR_M * rate])
@@ -93,7 +92,7 @@ def whole_bird(mx, sym, speed, climb, rate, u, bird, phases, signs) -> dict | No
     du = r_[..., cols] * sr + l_[..., cols] * sl
     drate = r_[..., 1 + d :] + l_[..., 1 + d :] * MIRROR_M  # the left sees (-p, q, -r)
     return {
-        "force_body": val[:, :3] + _drag_body(sym, speed, climb, bird),
+        "force_body": val[:, :3] + drag_body(sym, speed, climb, bird),
         "moment_body": val[:, 3:],
         "force_du": du[:, :3],
         "moment_du": du[:, 3:],

@@ -13,15 +13,14 @@ from __future__ import annotations
 import numpy as np
 
 from birdsim.errors import BirdsimError
-from birdsim.physics.aero import body_drag
 from birdsim.physics.bird import Bird
+from birdsim.physics.control_inputs import input_signs
 from birdsim.physics.cycle import element_forces
 from birdsim.physics.frames import earth_to_body
 from birdsim.physics.inputs import cross
 from birdsim.physics.kinematics import KinematicModel, joint_states, strip_positions
+from birdsim.physics.wing_sides import MIRROR_F, MIRROR_M, drag_body, sides
 
-MIRROR_F = np.array([1.0, -1.0, 1.0])
-MIRROR_M = np.array([-1.0, 1.0, -1.0])
 #: Central-difference step of the numpy reference Jacobians [rad, rad per unit time]:
 #: truncation ~h^2 ~1e-10, round-off ~1e-16/h ~1e-11 relative to the moments.
 FD_STEP = 1e-5
@@ -56,32 +55,14 @@ def right_wing_numpy(
     return force, moment
 
 
-def _sides(mx, sym, u, signs):
-    """Right and left parameters (dicts of B arrays) from the symmetric ones and u (B x k)."""
-    from birdsim.physics.moments import CONTROL_INPUTS
-
-    right = {k: np.array(v, dtype=float) for k, v in sym.items()}
-    left = {k: np.array(v, dtype=float) for k, v in sym.items()}
-    for i, (name, _) in enumerate(CONTROL_INPUTS[mx.name]):
-        right[name] = right[name] + signs[0][i] * u[:, i]
-        left[name] = left[name] + signs[1][i] * u[:, i]
-    return right, left
-
-
-def _drag_body(sym, speed, climb, bird) -> np.ndarray:
-    dx, dz = body_drag(speed, climb, sym["pitch"], bird.rho, bird.body_drag_area)
-    out = earth_to_body(sym["pitch"], (dx, 0.0, dz))
-    return np.stack([np.broadcast_to(c, speed.shape) for c in out], axis=-1)
-
-
 def _means_numpy(mx, sym, speed, climb, rate, u, bird, phases, signs):
-    right, left = _sides(mx, sym, u, signs)
+    right, left = sides(mx, sym, u, signs)
     B = len(speed)
     both = {k: np.concatenate([right[k], left[k]]) for k in mx.param_names}
     rates = np.concatenate([rate, MIRROR_M * rate])  # the left wing sees (-p, q, -r)
     v2, c2 = np.concatenate([speed, speed]), np.concatenate([climb, climb])
     f, m = right_wing_numpy(mx, both, v2, c2, rates, bird, phases)
-    force = f[:B] + MIRROR_F * f[B:] + _drag_body(sym, speed, climb, bird)
+    force = f[:B] + MIRROR_F * f[B:] + drag_body(sym, speed, climb, bird)
     return force, m[:B] + MIRROR_M * m[B:]
 
 
@@ -109,8 +90,6 @@ def whole_bird(
         ``force_body``, ``moment_body`` (B x 3) and with ``jacobians`` ``force_du``,
         ``moment_du`` (B x 3 x k), ``force_drate``, ``moment_drate`` (B x 3 x 3).
     """
-    from birdsim.physics.moments import input_signs
-
     if backend not in BACKENDS:
         raise BirdsimError(f"backend={backend!r} is unknown; allowed: {', '.join(BACKENDS)}")
     signs = input_signs(mx)
