@@ -325,7 +325,7 @@ def fly(
         "vz": qvel[:, 2],
         **{k: np.asarray(v, dtype=bool if k == "saturated" else float) for k, v in rows.items()},
         **{n: params[:, i] for i, n in enumerate(names)},
-        "pitch_moment": np.array([r[3] for r in record]),
+        "pitch_moment": np.array([r[3][1] for r in record]),
         "power": np.array([r[5] for r in record]),
         "force_x": force[:, 0],
         "force_z": force[:, 2],

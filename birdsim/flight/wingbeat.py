@@ -87,17 +87,23 @@ class CascadeFilter:
 @dataclass(frozen=True)
 class Prescription:
     """Prescribed coordinates over a run of steps: full-size arrays of which only the
-    prescribed entries (torso orientation, wings) are meaningful."""
+    prescribed entries (wings; the torso orientation only in the posed mode) are
+    meaningful."""
 
     qpos: np.ndarray  # (T, nq)
     qvel: np.ndarray  # (T, nv)
     qacc: np.ndarray  # (T, nv)
-    params: np.ndarray  # (T, nP) smoothed wingbeat parameters
-    pitch: np.ndarray  # (T,) nose up (rad)
+    params: np.ndarray  # (T, nP) smoothed wingbeat parameters (the right wing's)
+    pitch: np.ndarray  # (T,) nose up (rad): the table's (commanded) body pitch
+    params_left: np.ndarray | None = None  # (T, nP) the left wing's, when it differs
 
 
 class WingbeatSchedule:
-    """Smoothed wingbeat parameters of ``kin`` and the prescribed motion they imply."""
+    """Smoothed wingbeat parameters of ``kin`` and the prescribed motion they imply.
+
+    The filter runs on the right wing's and the left wing's parameters side by side
+    (2 nP entries), so a differential wingbeat is smoothed like the symmetric one.
+    """
 
     def __init__(
         self,
@@ -107,41 +113,77 @@ class WingbeatSchedule:
         initial: Sequence[float],
         *,
         smoothing: float,
+        initial_left: Sequence[float] | None = None,
     ):
         self.m = m
         self.kin = kin
         self.bird = bird
         self.names = kin.param_names
-        self.filter = CascadeFilter(smoothing, np.asarray(initial, dtype=float))
+        right = np.asarray(initial, dtype=float)
+        left = right if initial_left is None else np.asarray(initial_left, dtype=float)
+        self.filter = CascadeFilter(smoothing, np.concatenate([right, left]))
         self.pitch_index = self.names.index("pitch")
 
     def advance(
-        self, target: Sequence[float], times: np.ndarray, t_now: float, dt: float
+        self,
+        target: Sequence[float],
+        times: np.ndarray,
+        t_now: float,
+        dt: float,
+        target_left: Sequence[float] | None = None,
     ) -> Prescription:
         """The prescription at absolute reduced ``times`` (T,), for a target held from
-        ``t_now`` for ``dt``; the filter state moves on to ``t_now + dt``."""
+        ``t_now`` for ``dt``; the filter state moves on to ``t_now + dt``.
+        ``target_left``: the left wing's target (None: the same as the right's)."""
         times = np.asarray(times, dtype=float)
-        p, dp, ddp = self.filter.advance(np.asarray(target, dtype=float), times - t_now, dt)
-        return self.prescribe(times, p, dp, ddp)
+        right = np.asarray(target, dtype=float)
+        left = right if target_left is None else np.asarray(target_left, dtype=float)
+        p, dp, ddp = self.filter.advance(np.concatenate([right, left]), times - t_now, dt)
+        n = len(self.names)
+        return self.prescribe(
+            times, p[:, :n], dp[:, :n], ddp[:, :n], left=(p[:, n:], dp[:, n:], ddp[:, n:])
+        )
 
-    def prescribe(
-        self, times: np.ndarray, p: np.ndarray, dp: np.ndarray, ddp: np.ndarray
-    ) -> Prescription:
-        """qpos/qvel/qacc of the wings and torso orientation for parameters p(t) (T, nP)."""
+    @property
+    def output(self) -> np.ndarray:
+        """The right wing's smoothed parameters now."""
+        return self.filter.output[: len(self.names)]
+
+    def _joints(self, times, p, dp, ddp):
         omega = self.bird.omega
         cols = {n: p[:, i] for i, n in enumerate(self.names)}
         rates = {n: dp[:, i] for i, n in enumerate(self.names)}
         accs = {n: ddp[:, i] for i, n in enumerate(self.names)}
-        angles, jrates, jaccs = joint_derivatives(
-            self.kin, self.bird, cols, rates, accs, omega * times, omega
-        )
+        return joint_derivatives(self.kin, self.bird, cols, rates, accs, omega * times, omega)
+
+    def prescribe(
+        self,
+        times: np.ndarray,
+        p: np.ndarray,
+        dp: np.ndarray,
+        ddp: np.ndarray,
+        *,
+        left: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None,
+    ) -> Prescription:
+        """qpos/qvel/qacc of the wings (and, for the posed mode, the torso orientation at
+        the table's pitch) for parameters p(t) (T, nP); ``left`` the left wing's p, p',
+        p'' when they differ."""
         t = len(times)
-        qpos, qvel, qacc = wing_arrays(self.m, angles, jrates, jaccs, samples=t)
+        same = left is None or (
+            np.array_equal(left[0], p)
+            and np.array_equal(left[1], dp)
+            and np.array_equal(left[2], ddp)
+        )
+        right_joints = self._joints(times, p, dp, ddp)
+        left_joints = None if same else self._joints(times, *left)
+        qpos, qvel, qacc = wing_arrays(self.m, *right_joints, samples=t, left=left_joints)
         k = self.pitch_index
         set_root(self.m, qpos, qvel, pitch=p[:, k], pitch_rate=dp[:, k])
         qacc[:, 3:6] = 0.0
         qacc[:, 4] = -ddp[:, k]  # pitch nose up is a rotation about MuJoCo -y
-        return Prescription(qpos, qvel, qacc, p, p[:, k].copy())
+        return Prescription(
+            qpos, qvel, qacc, p, p[:, k].copy(), None if same else np.array(left[0])
+        )
 
 
 __all__ = ["CascadeFilter", "Prescription", "WingbeatSchedule"]
