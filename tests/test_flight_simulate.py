@@ -192,7 +192,7 @@ def test_free_body_counter_rotates_and_keeps_zero_momenta(projection):
     target; measured ~2e-16).  Without it MuJoCo's own integration drifts at first order
     (measured at period/128: 3.0e-4 angular momentum per wingbeat, the reason the
     projection stays on) -- asserted as a bound so a regression shows."""
-    config = SimConfig(momentum_projection=projection)
+    config = SimConfig(momentum_projection=projection, attitude="free")
     right = _params()
     left = right.copy()
     left[get_model("m4").param_names.index("flap_amp")] += 0.2

@@ -17,8 +17,10 @@ from typing import Any
 import numpy as np
 
 from birdsim.errors import BirdsimError
+from birdsim.flight.attitude import INPUTS, AttitudeLoop, euler_zyx
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
-from birdsim.flight.simulate import FreeBird, SimConfig
+from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
+from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
 from birdsim.flight.wingbeat import WingbeatSchedule
 from birdsim.physics.bird import Bird
 from birdsim.physics.units import reduced_bird, scales
@@ -29,64 +31,6 @@ TWO_PI = 2.0 * math.pi
 INTEGRAL_LIMIT = 0.1
 #: The integral only runs while the estimated position error is below this (semispans).
 INTEGRAL_BAND = 0.1
-
-
-class GustError(BirdsimError):
-    """A malformed --gust."""
-
-
-@dataclass(frozen=True)
-class Gust:
-    """Wind ``(wx, wz)`` (the bird's velocity units; x forward, z up) from ``t0`` for
-    ``duration`` wingbeats after the start."""
-
-    t0: float
-    duration: float
-    wx: float
-    wz: float
-
-    def __post_init__(self) -> None:
-        for name in ("t0", "duration", "wx", "wz"):
-            v = getattr(self, name)
-            if not (isinstance(v, (int, float)) and math.isfinite(v)):
-                raise GustError(
-                    f"--gust {name}={v!r} is not finite; allowed: T0:DURATION:WX:WZ, four finite numbers"
-                )
-        if self.t0 < 0 or self.duration < 0:
-            raise GustError(
-                f"--gust T0={self.t0:g}, DURATION={self.duration:g}; allowed: times >= 0 (wingbeats)"
-            )
-
-
-def parse_gust(text: str) -> Gust:
-    """``"T0:DURATION:WX:WZ"`` -> Gust; one clear line otherwise."""
-    parts = str(text).split(":")
-    if len(parts) != 4:
-        raise GustError(
-            f"--gust {text!r} has {len(parts)} field(s); allowed: T0:DURATION:WX:WZ (four numbers: wingbeats, wingbeats, velocity x, velocity z)"
-        )
-    try:
-        vals = [float(p) for p in parts]
-    except ValueError:
-        raise GustError(
-            f"--gust {text!r} is not four numbers; allowed: T0:DURATION:WX:WZ, e.g. 4:1:0:0.27"
-        ) from None
-    if not all(math.isfinite(v) for v in vals):
-        raise GustError(
-            f"--gust {text!r} is not finite; allowed: T0:DURATION:WX:WZ, four finite numbers"
-        )
-    return Gust(*vals)
-
-
-def wind_at(gusts: Sequence[Gust], t_beats: float, speed_scale: float = 1.0) -> np.ndarray:
-    """The summed gust wind at ``t_beats`` (world x, y, z; reduced: divided by
-    ``speed_scale``)."""
-    w = np.zeros(3)
-    for g in gusts:
-        if g.t0 <= t_beats < g.t0 + g.duration:
-            w[0] += g.wx / speed_scale
-            w[2] += g.wz / speed_scale
-    return w
 
 
 @dataclass(frozen=True)
@@ -165,6 +109,7 @@ def fly(
     gravity: bool = True,
     progress: Any = None,
     trim: bool = True,
+    attitude_loop: bool = True,
 ) -> FlightResult:
     """Fly ``reference`` (a FlightPath in reduced units, or a DemandSchedule) with
     ``table`` for ``beats`` wingbeats (default: the reference's duration).
@@ -216,27 +161,15 @@ def fly(
     if "pitch" in names:
         cmd = command(0.0, None, np.zeros(2), float(cmd.params[names.index("pitch")]))
     window = ErrorWindow(config.log_per_beat, TWO_PI)
+    per_sample = ("Fx_demand", "Fz_demand", "climb_demand", "V_air", "saturated", "x_ref", "z_ref")
     rows: dict[str, list] = {
         k: []
-        for k in (
-            "Fx_demand",
-            "Fz_demand",
-            "climb_demand",
-            "V_air",
-            "saturated",
-            "x_ref",
-            "z_ref",
-            "params",
-            "pitch",
-        )
+        for k in (*per_sample, "params", "pitch_command", "tail", "inputs", "attitude_saturated")
     }
     record: list = []
+    free = config.attitude == "free"
     with FreeBird(model, bird, cmd.params, config=config, aero=aero, gravity=gravity) as fb:
         h = fb.h
-        times = np.arange(steps_ctl) * h
-        pres = fb.schedule.prescribe(
-            times[:1], cmd.params[None, :], np.zeros((1, len(names))), np.zeros((1, len(names)))
-        )
         pos0, vel0 = np.array([ref0.x, 0.0, ref0.z]), np.array([ref0.vx, 0.0, ref0.vz])
         integral = np.zeros(2)
         if trim:
@@ -258,13 +191,16 @@ def fly(
             pos0, vel0, history, _ = _trim(fb, reference, cmd.params, pos0, vel0, config, every)
             for e_pos, e_vel, vx in history:  # the wingbeat before the start, on the orbit
                 window.add(e_pos, e_vel, vx)
+        # the start's prescription from the schedule that will be flown (after the trim)
+        zeros = np.zeros((1, len(names)))
+        pres = fb.schedule.prescribe(np.zeros(1), cmd.params[None, :], zeros, zeros)
         fb.start(pos0, vel0, pres)
+        att = AttitudeLoop(fb, enabled=free and attitude_loop)
+        att_window: list[tuple[np.ndarray, np.ndarray]] = []
         dt_ctl = steps_ctl * h
         for k in range(n_ctl):
             t = fb.time
-            pitch = (
-                float(fb.schedule.filter.output[names.index("pitch")]) if "pitch" in names else 0.0
-            )
+            pitch = float(fb.schedule.output[names.index("pitch")]) if "pitch" in names else 0.0
             est = window.estimate() if window.ep else None
             cmd = command(t, est, integral, pitch)
             if (
@@ -279,9 +215,20 @@ def fly(
                 # mean force and the flown one
                 limit = INTEGRAL_LIMIT * red.gravity / gains.ki if red.gravity > 0 else np.inf
                 integral = np.clip(integral + dt_ctl * est[0], -limit, limit)
-            step_times = t + np.arange(steps_ctl) * h
-            pres = fb.schedule.advance(cmd.params, step_times, t, dt_ctl)
             wind = wind_at(gusts, t / TWO_PI, speed)
+            left = None
+            if free:
+                angles, rates = _attitude_estimate(att_window, fb.d, config.log_per_beat, TWO_PI)
+                v_est = float(est[2]) if est is not None else float(ref0.vx)
+                right, left, sweep, tail = att.update(
+                    cmd.params, pitch, v_est - float(wind[0]), angles, rates, dt_ctl
+                )
+                fb.schedule.sweep_target = sweep
+                fb.cb.tail_controls = tail
+            else:
+                right = cmd.params
+            step_times = t + np.arange(steps_ctl) * h
+            pres = fb.schedule.advance(right, step_times, t, dt_ctl, left)
             start = len(record)
             fb.step_many(pres, wind, record, every)
             new = record[start:]
@@ -293,9 +240,11 @@ def fly(
                     np.array([refs["vx"][j] - qvel[0], refs["vz"][j] - qvel[2]]),
                     float(qvel[0]),
                 )
-                rows["V_air"].append(float(np.hypot(qvel[0] - wind[0], qvel[2] - wind[2])))
+                att_window.append((euler_zyx(qpos[3:7]), C_SEED * qvel[3:6]))
+                rows["V_air"].append(float(np.linalg.norm(qvel[:3] - wind)))
                 rows["params"].append(pres.params[j * every])
-                rows["pitch"].append(pres.pitch[j * every])
+                rows["pitch_command"].append(pres.pitch[j * every])
+            del att_window[: max(0, len(att_window) - config.log_per_beat)]
             n_new = len(new)
             rows["x_ref"].extend(refs["x"].tolist())
             rows["z_ref"].extend(refs["z"].tolist())
@@ -303,36 +252,90 @@ def fly(
             rows["Fz_demand"].extend([cmd.Fz] * n_new)
             rows["climb_demand"].extend([cmd.climb] * n_new)
             rows["saturated"].extend([cmd.saturated] * n_new)
+            tc = fb.cb.tail_controls
+            rows["tail"].extend([(tc.elevation, tc.spread, tc.roll)] * n_new)
+            rows["inputs"].extend([att.u.copy()] * n_new)
+            rows["attitude_saturated"].extend([att.saturated] * n_new)
             if progress is not None:
                 progress((k + 1) / per_beat_ctl)
         projection = fb.projection_max
+        root_applied = fb.root_applied_max
     keep = sum(
         1 for r in record if r[0] <= beats * TWO_PI + 1e-9
     )  # whole control intervals were flown
     record = record[:keep]
     rows = {k: v[:keep] for k, v in rows.items()}
+    arrays = _arrays(record, rows, names)
+    result = FlightResult(arrays, bird, model, names, gains, open_loop or demands_only, projection)
+    result.meta["root_applied_max"] = root_applied
+    result.meta["attitude"] = config.attitude
+    result.meta["attitude_loop"] = bool(free and attitude_loop)
+    return result
+
+
+def _attitude_estimate(
+    window: list, d: Any, per_beat: int, period: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """Wingbeat-mean Euler angles and body rates (seed axes), moved forward by the
+    average's lag; before a whole wingbeat the missing samples are the start's."""
+    if not window:
+        return euler_zyx(np.array(d.qpos[3:7])), C_SEED * np.array(d.qvel[3:6])
+    ang = np.array([w[0] for w in window])
+    rate = np.array([w[1] for w in window])
+    ang[:, 2] = np.unwrap(ang[:, 2])
+    if len(window) < per_beat:
+        pad = per_beat - len(window)
+        ang = np.vstack([np.repeat(ang[:1], pad, axis=0), ang])
+        rate = np.vstack([np.zeros((pad, 3)), rate])
+    lag = 0.5 * (period - period / per_beat)
+    return ang.mean(axis=0) + lag * rate.mean(axis=0), rate.mean(axis=0)
+
+
+def _arrays(record: list, rows: dict, names: tuple[str, ...]) -> dict[str, np.ndarray]:
+    """The flight's per-sample arrays (reduced units) from the step records."""
     t = np.array([r[0] for r in record])
     qpos = np.array([r[1] for r in record])
     qvel = np.array([r[2] for r in record])
+    moment = np.array([r[3] for r in record])
     force = np.array([r[4] for r in record])
     params = np.array(rows.pop("params"))
+    euler = euler_zyx(qpos[:, 3:7])
+    tail = np.array(rows.pop("tail"), dtype=float).reshape(-1, 3)
+    inputs = np.array(rows.pop("inputs"), dtype=float)
     arrays = {
         "t": t,
         "x": qpos[:, 0],
         "y": qpos[:, 1],
         "z": qpos[:, 2],
         "vx": qvel[:, 0],
+        "vy": qvel[:, 1],
         "vz": qvel[:, 2],
-        **{k: np.asarray(v, dtype=bool if k == "saturated" else float) for k, v in rows.items()},
+        **{
+            k: np.asarray(v, dtype=bool if k.endswith("saturated") else float)
+            for k, v in rows.items()
+        },
         **{n: params[:, i] for i, n in enumerate(names)},
-        "pitch_moment": np.array([r[3][1] for r in record]),
+        "roll": euler[:, 0],
+        "pitch": euler[:, 1],
+        "yaw": euler[:, 2],
+        "quat": qpos[:, 3:7],
+        "omega_body": C_SEED * qvel[:, 3:6],
+        "moment_aero": moment,
+        "pitch_moment": moment[:, 1],
+        "tail_elevation": tail[:, 0],
+        "tail_spread": tail[:, 1],
+        "tail_roll": tail[:, 2],
+        "tail_force": np.array([r[6] for r in record]),
         "power": np.array([r[5] for r in record]),
         "force_x": force[:, 0],
+        "force_y": force[:, 1],
         "force_z": force[:, 2],
         "qpos": qpos,
         "qvel": qvel,
     }
-    return FlightResult(arrays, bird, model, names, gains, open_loop or demands_only, projection)
+    for i, (name, _kind, _b) in enumerate(INPUTS):
+        arrays[f"u_{name}"] = inputs[:, i]
+    return arrays
 
 
 def sample_reference(reference: Any, t: np.ndarray) -> dict[str, np.ndarray]:

@@ -6,9 +6,9 @@ the mass ratio, gravity in semispan omega^2), so one table and one MJCF serve ev
 bird with the same reduced bird.  Axes: MuJoCo world, x forward, y left, z UP.
 
 Partition (:class:`Partition`, from joint names): the FREE coordinates F are the root
-joint's six DOF (attitude ``"free"``, the default) -- or only its translation (attitude
-``"posed"``, the former two-dimensional mode kept for comparison: the torso orientation
-is then prescribed at the table's pitch and held by a hidden root torque); the
+joint's six DOF (attitude ``"free"``) -- or only its translation (attitude ``"posed"``,
+the former two-dimensional mode and still the default: the torso orientation is then
+prescribed at the table's pitch and held by a hidden root torque); the
 PRESCRIBED coordinates P are every wing joint (and, posed, the root's rotation).
 
 Per step (semi-implicit Euler, ``mj_step1`` / ``mj_step2``, one callback call per step):
@@ -69,8 +69,9 @@ class SimConfig:
     #: measure its own O(h^2) momentum error with it off)
     momentum_projection: bool = True
     #: "free": the root's six DOF are integrated by MuJoCo (no root force or torque);
-    #: "posed": the former mode, the torso's orientation prescribed at the table pitch
-    attitude: str = "free"
+    #: "posed": the torso's orientation prescribed at the table pitch (the default until
+    #: the attitude loop holds the presets: docs/flight.md, "Six degrees of freedom")
+    attitude: str = "posed"
 
     def __post_init__(self) -> None:
         if self.attitude not in ("free", "posed"):
@@ -185,7 +186,7 @@ class FreeBird:
             initial_params,
             smoothing=config.smoothing_beats * self.red.period,
         )
-        self.cb = AeroCallback(m, self.kin.name, self.red)
+        self.cb = AeroCallback(m, self.kin.name, self.red, tail=config.attitude == "free")
         self.cb.enabled = aero
         self.time = 0.0
         self.P = np.zeros(3)  # whole-bird linear momentum (world)
@@ -338,7 +339,8 @@ class FreeBird:
                     moment = C_SEED * (R.T @ m_ext)
                 else:  # the hidden torque that holds the posed orientation
                     moment = C_SEED * qfrc_applied[3:6]
-                record.append((self.time, qpos.copy(), qvel.copy(), moment, f_ext, power))
+                tail = C_SEED * self.cb.tail_force_body
+                record.append((self.time, qpos.copy(), qvel.copy(), moment, f_ext, power, tail))
             step2(m, d)
             self.P = self.P + h * f_ext
             self.X = self.X + h * self.P / mass

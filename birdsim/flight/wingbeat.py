@@ -121,8 +121,12 @@ class WingbeatSchedule:
         self.names = kin.param_names
         right = np.asarray(initial, dtype=float)
         left = right if initial_left is None else np.asarray(initial_left, dtype=float)
-        self.filter = CascadeFilter(smoothing, np.concatenate([right, left]))
+        #: the filter's state: right params, left params, sweep offsets (right, left)
+        self.filter = CascadeFilter(smoothing, np.concatenate([right, left, [0.0, 0.0]]))
         self.pitch_index = self.names.index("pitch")
+        #: symmetric sweep offset (rad) of both wings' target: an attitude input that
+        #: moves the force line fore and aft (the shoulder's sweep joint, any model)
+        self.sweep_target = 0.0
 
     def advance(
         self,
@@ -138,10 +142,16 @@ class WingbeatSchedule:
         times = np.asarray(times, dtype=float)
         right = np.asarray(target, dtype=float)
         left = right if target_left is None else np.asarray(target_left, dtype=float)
-        p, dp, ddp = self.filter.advance(np.concatenate([right, left]), times - t_now, dt)
+        sw = self.sweep_target
+        p, dp, ddp = self.filter.advance(np.concatenate([right, left, [sw, sw]]), times - t_now, dt)
         n = len(self.names)
         return self.prescribe(
-            times, p[:, :n], dp[:, :n], ddp[:, :n], left=(p[:, n:], dp[:, n:], ddp[:, n:])
+            times,
+            p[:, :n],
+            dp[:, :n],
+            ddp[:, :n],
+            left=(p[:, n : 2 * n], dp[:, n : 2 * n], ddp[:, n : 2 * n]),
+            sweep=(p[:, 2 * n :], dp[:, 2 * n :], ddp[:, 2 * n :]),
         )
 
     @property
@@ -149,12 +159,21 @@ class WingbeatSchedule:
         """The right wing's smoothed parameters now."""
         return self.filter.output[: len(self.names)]
 
-    def _joints(self, times, p, dp, ddp):
+    @property
+    def sweep_now(self) -> float:
+        """The smoothed symmetric sweep offset now (rad)."""
+        return float(self.filter.output[-2])
+
+    def _joints(self, times, p, dp, ddp, sweep=None):
         omega = self.bird.omega
         cols = {n: p[:, i] for i, n in enumerate(self.names)}
         rates = {n: dp[:, i] for i, n in enumerate(self.names)}
         accs = {n: ddp[:, i] for i, n in enumerate(self.names)}
-        return joint_derivatives(self.kin, self.bird, cols, rates, accs, omega * times, omega)
+        out = joint_derivatives(self.kin, self.bird, cols, rates, accs, omega * times, omega)
+        if sweep is not None:
+            for d, v in zip(out, sweep):
+                d["sweep"] = np.asarray(d.get("sweep", 0.0)) + v
+        return out
 
     def prescribe(
         self,
@@ -164,25 +183,31 @@ class WingbeatSchedule:
         ddp: np.ndarray,
         *,
         left: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None,
+        sweep: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None,
     ) -> Prescription:
         """qpos/qvel/qacc of the wings (and, for the posed mode, the torso orientation at
         the table's pitch) for parameters p(t) (T, nP); ``left`` the left wing's p, p',
         p'' when they differ."""
         t = len(times)
-        same = left is None or (
-            np.array_equal(left[0], p)
-            and np.array_equal(left[1], dp)
-            and np.array_equal(left[2], ddp)
-        )
-        right_joints = self._joints(times, p, dp, ddp)
-        left_joints = None if same else self._joints(times, *left)
+        sw_r = sw_l = None
+        if sweep is not None and (np.any(sweep[0]) or np.any(sweep[1]) or np.any(sweep[2])):
+            sw_r = tuple(a[:, 0] for a in sweep)
+            sw_l = tuple(a[:, 1] for a in sweep)
+        if left is not None and sw_r is None:
+            if all(np.array_equal(x, y) for x, y in zip(left, (p, dp, ddp))):
+                left = None
+        same = left is None and sw_r is None
+        if not same and left is None:
+            left = (p, dp, ddp)
+        right_joints = self._joints(times, p, dp, ddp, sw_r)
+        left_joints = None if same else self._joints(times, *left, sw_l)
         qpos, qvel, qacc = wing_arrays(self.m, *right_joints, samples=t, left=left_joints)
         k = self.pitch_index
         set_root(self.m, qpos, qvel, pitch=p[:, k], pitch_rate=dp[:, k])
         qacc[:, 3:6] = 0.0
         qacc[:, 4] = -ddp[:, k]  # pitch nose up is a rotation about MuJoCo -y
         return Prescription(
-            qpos, qvel, qacc, p, p[:, k].copy(), None if same else np.array(left[0])
+            qpos, qvel, qacc, p, p[:, k].copy(), None if left is None else np.array(left[0])
         )
 
 

@@ -214,7 +214,11 @@ def _add_bird(
     torso.explicitinertial = True
     torso.mass = bird.mass
     torso.ipos = [0.0, 0.0, 0.0]
-    torso.inertia = _box_inertia(bird.mass, body_size)
+    # the bird file's principal moments (seed roll, pitch, yaw = MuJoCo x, y, z: C is
+    # diagonal), else a solid box of the drawn torso
+    torso.inertia = (
+        list(bird.body_inertia) if bird.body_inertia else _box_inertia(bird.mass, body_size)
+    )
     torso.add_geom(
         name="torso_body", type=mujoco.mjtGeom.mjGEOM_ELLIPSOID, size=body_size, mass=0.0
     )
@@ -233,6 +237,12 @@ def _add_bird(
         mass=0.0,
     )
     torso.add_site(name="torso_cp", default=spec.find_default("cp"), pos=[0, 0, 0])
+    # the tail's centre of pressure (birdsim.mujoco.tail): two thirds along the fan
+    torso.add_site(
+        name="tail_cp",
+        default=spec.find_default("cp"),
+        pos=[-(bird.tail_root + 2.0 / 3.0 * bird.tail_length), 0.0, 0.0],
+    )
     if visuals:
         add_body_dress(spec, torso, s)
     for name, pos in CAMERAS.items():

@@ -1,0 +1,265 @@
+"""The inner loop: the body's attitude held by aerodynamic moments of wings and tail.
+
+Every control step (``control_per_beat`` per wingbeat, like the path loop):
+
+1. estimate: the body's Euler angles (:func:`euler_zyx`) and body rates averaged over
+   the last wingbeat (the within-beat rocking is the physics, not an error), moved
+   forward by what the average lags, ``(T - dt)/2`` times the mean rate;
+2. demand: ``M = I (Kp e + Kd de/dt + Ki integral e) - M_0`` per body axis (seed body
+   axes x fwd / y right / z down, about the centre of mass), e = commanded minus
+   estimated (roll 0, pitch = the table's pitch, yaw 0), ``I`` the whole bird's
+   principal moments about the centre of mass at the start, ``M_0`` the measured
+   wingbeat-mean moment of the table's wingbeat with every input at zero;
+3. allocation: ``min || J u - M ||^2 + lambda || u / u_max ||^2`` within the inputs'
+   bounds (:func:`scipy.optimize.lsq_linear`), the inputs :data:`INPUTS`: the wings'
+   differential flap and twist amplitudes, a symmetric sweep offset (the force line fore
+   and aft), the tail's elevation and roll.  ``attitude_saturated`` when a bound binds
+   and the moment delivered misses the demand by more than 10 %.
+
+Gains (:func:`attitude_gains`): a triple pole at ``-omega_a``, ``omega_a = omega / (2 pi
+N_a)`` with :data:`ATTITUDE_BEATS` wingbeats per time constant: four times faster than
+the path loop (2 wingbeats), slower than the wingbeat so that the wingbeat-mean is a
+meaningful state; multiplied by the inertia, the same closed loop for every bird.
+
+Jacobians (:func:`measured_jacobian`): the wingbeat-mean moment of the bird in MuJoCo
+(the same callback, a second MjData, the body held at the commanded pitch and the
+airspeed) over :data:`JAC_SAMPLES` phases, per input by a one-sided step; cached and
+re-measured when the airspeed moves by :data:`JAC_DV`.  This measures what the wings
+and the tail really do in the simulation (the analytic core's Jacobians, when
+``birdsim.physics.moments`` exists, are an independent path for the same numbers).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import mujoco
+import numpy as np
+from scipy.optimize import lsq_linear
+
+from birdsim.mujoco.model import pitch_quat
+from birdsim.mujoco.tail import ELEVATION_MAX, ROLL_MAX, TailControls
+
+#: Wingbeats per time constant of the attitude loop.
+ATTITUDE_BEATS = 0.5
+#: The inputs: (name, kind, bound in rad).  kind: "diff" (right +u/2, left -u/2 on the
+#: wing parameter), "sweep" (symmetric sweep offset of both shoulders), "tail".
+INPUTS = (
+    ("flap_amp", "diff", 0.15),
+    ("twist_amp", "diff", 0.15),
+    ("sweep", "sweep", 0.15),
+    ("tail_elevation", "tail", ELEVATION_MAX),
+    ("tail_roll", "tail", ROLL_MAX),
+)
+#: Phases per wingbeat of a Jacobian measurement and the input step (rad).
+JAC_SAMPLES = 16
+JAC_STEP = 0.02
+#: Airspeed change (semispan omega) that triggers a new Jacobian.
+JAC_DV = 0.05
+#: Regularisation of the allocation (relative to the inputs' bounds).
+LAMBDA = 1e-4
+#: The integral's share of the moment is bounded by this many times the inertia x
+#: omega_a^2 x 0.1 rad (anti-windup).
+INTEGRAL_LIMIT_RAD = 0.1
+
+
+def euler_zyx(quat: np.ndarray) -> np.ndarray:
+    """(roll, pitch, yaw) of MuJoCo quaternions (..., 4) (w, x, y, z): the seed body frame
+    relative to seed earth axes, Z-Y-X order (yaw about earth z down, then pitch about
+    y right, nose up, then roll about x forward, right wing down)."""
+    w, x, y, z = np.moveaxis(np.asarray(quat, dtype=float), -1, 0)
+    # MuJoCo rotation matrix entries; the seed frame is C R C, C = diag(1, -1, -1)
+    r00 = 1 - 2 * (y * y + z * z)
+    r10 = 2 * (x * y + w * z)
+    r20 = 2 * (x * z - w * y)
+    r21 = 2 * (y * z + w * x)
+    r22 = 1 - 2 * (x * x + y * y)
+    # seed: S = C R C -> S00 = r00, S10 = -r10, S20 = -r20, S21 = r21, S22 = r22
+    pitch = np.arcsin(np.clip(r20, -1.0, 1.0))
+    roll = np.arctan2(r21, r22)
+    yaw = np.arctan2(-r10, r00)
+    return np.stack([roll, pitch, yaw], axis=-1)
+
+
+@dataclass(frozen=True)
+class AttitudeGains:
+    omega_a: float
+    kp: float
+    kd: float
+    ki: float
+
+
+def attitude_gains(omega: float = 1.0, beats: float = ATTITUDE_BEATS) -> AttitudeGains:
+    """Triple pole at ``-omega / (2 pi beats)`` (per unit inertia)."""
+    wa = omega / (2.0 * math.pi * beats)
+    return AttitudeGains(wa, 3.0 * wa * wa, 3.0 * wa, wa**3)
+
+
+def measured_jacobian(
+    fb, params: np.ndarray, pitch: float, speed: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """(M_0 (3,), J (3, k)): the wingbeat-mean moment (seed body axes) with every input
+    at zero and its one-sided derivatives, measured in MuJoCo (see the module)."""
+    from birdsim.flight.wing_moments import wing_params  # noqa: F401  (same rule)
+
+    m, cb, sched = fb.m, fb.cb, fb.schedule
+    d = mujoco.MjData(m)
+    n = JAC_SAMPLES
+    times = np.arange(n) * (fb.red.period / n)
+    names = sched.names
+    wind = m.opt.wind.copy()
+    saved = cb.tail_controls
+    m.opt.wind[:] = 0.0
+    quat = pitch_quat(pitch)
+    out = []
+    try:
+        for i in range(len(INPUTS) + 1):
+            u = np.zeros(len(INPUTS))
+            if i:
+                u[i - 1] = JAC_STEP
+            right, left, sweep, tail = split_inputs(names, params, u)
+            z = np.zeros((n, len(names)))
+            sw = np.tile([sweep, sweep], (n, 1))
+            pres = sched.prescribe(
+                times,
+                np.tile(right, (n, 1)),
+                z,
+                z,
+                left=(np.tile(left, (n, 1)), z, z),
+                sweep=(sw, np.zeros_like(sw), np.zeros_like(sw)),
+            )
+            cb.tail_controls = tail
+            acc = np.zeros(3)
+            for k in range(n):
+                d.qpos[:] = pres.qpos[k]
+                d.qvel[:] = pres.qvel[k]
+                d.qpos[:3] = (0.0, 0.0, 6.0)
+                d.qpos[3:7] = quat
+                d.qvel[:3] = (speed, 0.0, 0.0)
+                d.qvel[3:6] = 0.0
+                mujoco.mj_forward(m, d)
+                acc += d.qfrc_passive[3:6]
+            out.append(acc / n * np.array([1.0, -1.0, -1.0]))
+    finally:
+        m.opt.wind[:] = wind
+        cb.tail_controls = saved
+    m0 = out[0]
+    jac = np.stack([(o - m0) / JAC_STEP for o in out[1:]], axis=1)
+    return m0, jac
+
+
+def split_inputs(
+    names: tuple[str, ...], params: np.ndarray, u: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, float, TailControls]:
+    """(right params, left params, sweep offset, tail controls) for inputs ``u``."""
+    right = np.array(params, dtype=float)
+    left = right.copy()
+    sweep = 0.0
+    tail = TailControls()
+    for (name, kind, _), ui in zip(INPUTS, u):
+        if kind == "diff" and name in names:
+            j = names.index(name)
+            right[j] += 0.5 * ui
+            left[j] -= 0.5 * ui
+        elif kind == "sweep":
+            sweep = float(ui)
+        elif name == "tail_elevation":
+            tail.elevation = float(ui)
+        elif name == "tail_roll":
+            tail.roll = float(ui)
+    return right, left, sweep, tail
+
+
+class AttitudeLoop:
+    """The inner loop for one flight (see the module docstring)."""
+
+    def __init__(self, fb, *, enabled: bool = True, beats: float = ATTITUDE_BEATS):
+        self.fb = fb
+        self.enabled = enabled
+        self.gains = attitude_gains(fb.red.omega, beats)
+        mujoco.mj_fwdPosition(fb.m, fb.d)
+        full = np.zeros((fb.m.nv, fb.m.nv))
+        mujoco.mj_fullM(fb.m, fb.d, full)
+        #: whole-bird principal moments about the torso origin (MuJoCo x, y, z = seed)
+        self.inertia = np.diag(full[3:6, 3:6]).copy()
+        self.integral = np.zeros(3)
+        self.u = np.zeros(len(INPUTS))
+        self.saturated = False
+        self._jac: tuple[float, np.ndarray, np.ndarray] | None = None
+        self.kinds = INPUTS
+
+    def bounds(self, params: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        kin = self.fb.kin
+        spec = {p.name: p for p in kin.params}
+        lo, hi = [], []
+        for name, kind, bound in INPUTS:
+            if kind == "diff":
+                if name in kin.param_names:
+                    p = float(params[kin.param_names.index(name)])
+                    r = max(0.0, 2.0 * min(p - spec[name].lower, spec[name].upper - p))
+                    b = min(bound, r)
+                else:
+                    b = 0.0
+                lo.append(-b)
+                hi.append(b)
+            else:
+                lo.append(-bound)
+                hi.append(bound)
+        return np.array(lo), np.array(hi)
+
+    def update(
+        self,
+        params: np.ndarray,
+        pitch_cmd: float,
+        speed: float,
+        angles: np.ndarray,
+        rates: np.ndarray,
+        dt: float,
+    ) -> tuple[np.ndarray, np.ndarray, float, TailControls]:
+        """The wings' and tail's commands for this control step.  ``angles`` / ``rates``:
+        the wingbeat-mean estimates (roll, pitch, yaw) and (p, q, r), seed axes."""
+        names = self.fb.schedule.names
+        if not self.enabled:
+            self.u = np.zeros(len(INPUTS))
+            self.saturated = False
+            return split_inputs(names, params, self.u)
+        if self._jac is None or abs(self._jac[0] - speed) > JAC_DV:
+            m0, jac = measured_jacobian(self.fb, params, pitch_cmd, max(speed, 0.0))
+            self._jac = (speed, m0, jac)
+        _, m0, jac = self._jac
+        g = self.gains
+        err = np.array([0.0, pitch_cmd, 0.0]) - angles
+        err[2] = (err[2] + math.pi) % (2 * math.pi) - math.pi
+        lim = INTEGRAL_LIMIT_RAD * g.omega_a**2 / g.ki
+        self.integral = np.clip(self.integral + dt * err, -lim, lim)
+        demand = self.inertia * (g.kp * err - g.kd * rates + g.ki * self.integral) - m0
+        lo, hi = self.bounds(params)
+        scale = np.maximum(hi - lo, 1e-9) / 2
+        a = jac * scale
+        reg = math.sqrt(LAMBDA) * max(float(np.abs(a).max()), 1e-12)
+        a_aug = np.vstack([a, reg * np.eye(len(INPUTS))])
+        b_aug = np.concatenate([demand, np.zeros(len(INPUTS))])
+        free = hi > lo
+        res = lsq_linear(
+            a_aug[:, free], b_aug, bounds=(lo[free] / scale[free], hi[free] / scale[free])
+        )
+        u = np.zeros(len(INPUTS))
+        u[free] = res.x * scale[free]
+        self.u = u
+        miss = float(np.linalg.norm(jac @ u - demand))
+        self.saturated = bool(
+            np.any(res.active_mask != 0) and miss > 0.1 * np.linalg.norm(demand) + 1e-12
+        )
+        return split_inputs(names, params, u)
+
+
+__all__ = [
+    "ATTITUDE_BEATS",
+    "INPUTS",
+    "AttitudeLoop",
+    "attitude_gains",
+    "euler_zyx",
+    "measured_jacobian",
+    "split_inputs",
+]

@@ -1,0 +1,115 @@
+"""The free body (issue 22): tail aerodynamics, Euler angles, the 5-number gust and a
+whole free-attitude flight with no applied root force or torque.
+
+Tolerances: the slender-wing formulas are checked to round-off (1e-12 relative: the
+same arithmetic); Euler angles to 1e-12 rad against scipy's rotations; the root's
+applied generalised force must be exactly 0.0 (the issue's "exactly")."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.spatial.transform import Rotation
+
+from birdsim.flight.attitude import euler_zyx
+from birdsim.flight.gust import Gust, parse_gust, wind_at
+from birdsim.mujoco.model import pitch_quat
+from birdsim.mujoco.tail import ALPHA_MAX, TAIL_CD0, TailControls, tail_force
+
+
+def _tail(vel, controls=TailControls(), span=0.5, length=0.3, rho=1.2):
+    return tail_force(np.asarray(vel, float), controls, span=span, length=length, rho=rho)
+
+
+def test_tail_is_a_slender_wing():
+    v, alpha = 2.0, math.radians(8.0)
+    # the tail moves forward and down through the air: the air meets it from below
+    f, a = _tail([v * math.cos(alpha), 0.0, -v * math.sin(alpha)])
+    lift = 0.25 * math.pi * 1.2 * v * v * alpha * 0.5**2
+    drag = 0.5 * lift * alpha + 0.5 * 1.2 * v * v * 0.5 * 0.5 * 0.3 * TAIL_CD0
+    assert math.isclose(a, alpha, rel_tol=1e-12)
+    lift_dir = np.array([math.sin(alpha), 0.0, math.cos(alpha)])
+    drag_dir = -np.array([math.cos(alpha), 0.0, -math.sin(alpha)])
+    np.testing.assert_allclose(f, lift * lift_dir + drag * drag_dir, rtol=1e-12, atol=1e-15)
+
+
+def test_tail_lift_is_capped_and_needs_flow_from_ahead():
+    v = 1.0
+    steep = math.radians(40.0)
+    f, a = _tail([v * math.cos(steep), 0.0, -v * math.sin(steep)])
+    assert a == ALPHA_MAX
+    capped = 0.25 * math.pi * 1.2 * v * v * ALPHA_MAX * 0.25
+    lift_dir = np.array([math.sin(steep), 0.0, math.cos(steep)])
+    assert math.isclose(float(f @ lift_dir), capped, rel_tol=1e-12)
+    back, a = _tail([-1.0, 0.0, -0.1])
+    assert a == 0.0 and back[0] > 0  # only drag, against the backward motion
+    assert np.all(_tail([0.0, 0.0, 0.0])[0] == 0.0)
+
+
+def test_tail_controls_move_the_force():
+    vel = [2.0, 0.0, -0.1]
+    base = _tail(vel)[0]
+    up = _tail(vel, TailControls(elevation=0.1))[0]
+    assert up[2] < base[2]  # trailing edge up: less lift (a nose-up moment behind the body)
+    narrow = _tail(vel, TailControls(spread=0.5))[0]
+    assert math.isclose(narrow[2] / base[2], 0.25, rel_tol=0.05)  # lift ~ b^2
+    rolled = _tail(vel, TailControls(roll=0.3))[0]
+    assert rolled[1] < 0  # right side down: the lift leans right (MuJoCo -y)
+
+
+@pytest.mark.parametrize("angles", [(0.0, 0.3, 0.0), (0.2, -0.1, 0.4), (-0.5, 0.6, -2.0)])
+def test_euler_angles_are_zyx_in_seed_axes(angles):
+    roll, pitch, yaw = angles
+    seed = Rotation.from_euler("ZYX", [yaw, pitch, roll]).as_matrix()
+    c = np.diag([1.0, -1.0, -1.0])
+    q = Rotation.from_matrix(c @ seed @ c).as_quat()  # x, y, z, w
+    np.testing.assert_allclose(euler_zyx(np.r_[q[3], q[:3]]), angles, atol=1e-12)
+    if roll == yaw == 0.0:
+        np.testing.assert_allclose(euler_zyx(pitch_quat(pitch)), angles, atol=1e-15)
+
+
+def test_five_number_gust_has_a_side_wind():
+    g = parse_gust("1:2:0.1:0.2:0.3")
+    assert g == Gust(1.0, 2.0, 0.1, 0.3, 0.2)
+    np.testing.assert_allclose(wind_at([g], 1.5, speed_scale=2.0), [0.05, 0.1, 0.15])
+    assert parse_gust("1:2:0.1:0.3") == Gust(1.0, 2.0, 0.1, 0.3)  # the four-number form
+
+
+def test_free_flight_applies_nothing_to_the_root():
+    """Two wingbeats of cruise with the attitude free: every step's root entries of
+    qfrc_applied (and every body's xfrc_applied) are exactly zero; the log carries the
+    free attitude (finite, quaternions of unit norm) and the body rocks in pitch."""
+    from birdsim.commands.fly import load_table_for
+    from birdsim.flight.freeflight import fly
+    from birdsim.flight.presets import DEMO_MODEL, PATH_PRESETS, demo_bird
+    from birdsim.flight.simulate import SimConfig
+
+    bird = demo_bird()
+    table = load_table_for(bird, DEMO_MODEL, None)
+    r = fly(
+        PATH_PRESETS["cruise"],
+        table,
+        bird,
+        DEMO_MODEL,
+        beats=2.0,
+        config=SimConfig(attitude="free"),
+    )
+    assert r.meta["root_applied_max"] == 0.0
+    a = r.arrays
+    for key in (
+        "y",
+        "vy",
+        "roll",
+        "yaw",
+        "pitch",
+        "quat",
+        "omega_body",
+        "moment_aero",
+        "tail_force",
+    ):
+        assert np.all(np.isfinite(a[key])), key
+    np.testing.assert_allclose(np.linalg.norm(a["quat"], axis=1), 1.0, atol=1e-9)
+    beat = a["pitch"][:64]
+    assert np.ptp(beat) > math.radians(1.0)  # the body pitches within a wingbeat
