@@ -2,9 +2,11 @@
 
 Every control step (``control_per_beat`` per wingbeat, like the path loop):
 
-1. estimate: the body's Euler angles (:func:`euler_zyx`) and body rates averaged over
-   the last wingbeat (the within-beat rocking is the physics, not an error), moved
-   forward by what the average lags, ``(T - dt)/2`` times the mean rate;
+1. estimate: the body's Euler angles (:func:`euler_zyx`) and body rates over the last
+   wingbeat fitted by a trend plus the wingbeat's first three harmonics
+   (:func:`wingbeat_fit_matrix`): the trend's value now is the wingbeat-mean state
+   without a moving average's half-wingbeat lag (the within-beat rocking is the physics,
+   not an error);
 2. demand: ``M = I (Kp e + Kd de/dt + Ki integral e) - M_0`` per body axis (seed body
    axes x fwd / y right / z down, about the centre of mass), e = commanded minus
    estimated (roll 0, pitch = the table's pitch, yaw 0), ``I`` the whole bird's
@@ -17,9 +19,10 @@ Every control step (``control_per_beat`` per wingbeat, like the path loop):
    and the moment delivered misses the demand by more than 10 %.
 
 Gains (:func:`attitude_gains`): a triple pole at ``-omega_a``, ``omega_a = omega / (2 pi
-N_a)`` with :data:`ATTITUDE_BEATS` wingbeats per time constant: four times faster than
-the path loop (2 wingbeats), slower than the wingbeat so that the wingbeat-mean is a
-meaningful state; multiplied by the inertia, the same closed loop for every bird.
+N_a)`` with :data:`ATTITUDE_BEATS` wingbeats per time constant (the design asked for
+a few times faster than the path loop's 2 wingbeats; faster loops limit-cycled, see
+the constant), slower than the wingbeat so that the wingbeat-mean is a meaningful
+state; multiplied by the inertia, the same closed loop for every bird.
 
 Jacobians (:func:`measured_jacobian`): the wingbeat-mean moment of the bird in MuJoCo
 (the same callback, a second MjData, the body held at the commanded pitch and the
@@ -41,8 +44,11 @@ from scipy.optimize import lsq_linear
 from birdsim.mujoco.model import pitch_quat
 from birdsim.mujoco.tail import ELEVATION_MAX, ROLL_MAX, TailControls
 
-#: Wingbeats per time constant of the attitude loop.
-ATTITUDE_BEATS = 0.5
+#: Wingbeats per time constant of the attitude loop.  Measured (cruise, seed bird, outer
+#: loop open): 0.5, 1 and 1.5 wingbeats limit-cycle at a period of two wingbeats (the
+#: one-wingbeat estimate and the inputs' smoothing delay the loop by about a wingbeat);
+#: 2 wingbeats settles, within-beat pitch rocking 1.2-1.6 degrees peak to peak.
+ATTITUDE_BEATS = 2.0
 #: The inputs: (name, kind, bound in rad).  kind: "diff" (right +u/2, left -u/2 on the
 #: wing parameter), "sweep" (symmetric sweep offset of both shoulders), "tail".
 INPUTS = (
@@ -52,6 +58,10 @@ INPUTS = (
     ("tail_elevation", "tail", ELEVATION_MAX),
     ("tail_roll", "tail", ROLL_MAX),
 )
+#: The moment rows and the inputs of the two allocations: pitch by the symmetric inputs
+#: (sweep, tail elevation), roll and yaw by the differential ones.
+SYM_ROWS, SYM_INPUTS = [1], [2, 3]
+LAT_ROWS, LAT_INPUTS = [0, 2], [0, 1, 4]
 #: Phases per wingbeat of a Jacobian measurement and the input step (rad).
 JAC_SAMPLES = 16
 JAC_STEP = 0.02
@@ -61,7 +71,7 @@ JAC_DV = 0.05
 LAMBDA = 1e-4
 #: The integral's share of the moment is bounded by this many times the inertia x
 #: omega_a^2 x 0.1 rad (anti-windup).
-INTEGRAL_LIMIT_RAD = 0.1
+INTEGRAL_LIMIT_RAD = 0.5
 
 
 def euler_zyx(quat: np.ndarray) -> np.ndarray:
@@ -80,6 +90,27 @@ def euler_zyx(quat: np.ndarray) -> np.ndarray:
     roll = np.arctan2(r21, r22)
     yaw = np.arctan2(-r10, r00)
     return np.stack([roll, pitch, yaw], axis=-1)
+
+
+#: Harmonics of the wingbeat removed by the attitude estimate's fit.
+FIT_HARMONICS = 3
+
+
+def wingbeat_fit_matrix(n: int, period: float, harmonics: int = FIT_HARMONICS) -> np.ndarray:
+    """Rows (2, n): the least-squares weights that give, from ``n`` samples spanning the
+    last wingbeat (the newest last), the value now and the slope of the fit
+    ``a + b tau + sum_k (c_k cos k omega tau + s_k sin k omega tau)`` (tau = time
+    before now): the wingbeat-mean state without the moving average's lag."""
+    dt = period / n
+    tau = -dt * np.arange(n - 1, -1, -1)
+    w = 2.0 * math.pi / period
+    cols = [np.ones(n), tau]
+    for k in range(1, harmonics + 1):
+        cols += [np.cos(k * w * tau), np.sin(k * w * tau)]
+    basis = np.stack(cols, axis=1)
+    pinv = np.linalg.pinv(basis)
+    # the trend's value now (a; the periodic part is the within-beat rocking) and slope (b)
+    return np.stack([pinv[0], pinv[1]])
 
 
 @dataclass(frozen=True)
@@ -232,25 +263,31 @@ class AttitudeLoop:
         err = np.array([0.0, pitch_cmd, 0.0]) - angles
         err[2] = (err[2] + math.pi) % (2 * math.pi) - math.pi
         lim = INTEGRAL_LIMIT_RAD * g.omega_a**2 / g.ki
-        self.integral = np.clip(self.integral + dt * err, -lim, lim)
+        if not self.saturated:  # anti-windup: frozen while the inputs are at their bounds
+            self.integral = np.clip(self.integral + dt * err, -lim, lim)
         demand = self.inertia * (g.kp * err - g.kd * rates + g.ki * self.integral) - m0
         lo, hi = self.bounds(params)
-        scale = np.maximum(hi - lo, 1e-9) / 2
-        a = jac * scale
-        reg = math.sqrt(LAMBDA) * max(float(np.abs(a).max()), 1e-12)
-        a_aug = np.vstack([a, reg * np.eye(len(INPUTS))])
-        b_aug = np.concatenate([demand, np.zeros(len(INPUTS))])
-        free = hi > lo
-        res = lsq_linear(
-            a_aug[:, free], b_aug, bounds=(lo[free] / scale[free], hi[free] / scale[free])
-        )
         u = np.zeros(len(INPUTS))
-        u[free] = res.x * scale[free]
+        miss = 0.0
+        active = False
+        # a symmetric bird: the symmetric inputs pitch it, the differential ones roll and
+        # yaw it (the measured cross terms are round-off and are not used)
+        for rows, cols in ((SYM_ROWS, SYM_INPUTS), (LAT_ROWS, LAT_INPUTS)):
+            cols = [c for c in cols if hi[c] > lo[c]]
+            if not cols:
+                miss += float(np.linalg.norm(demand[rows]))
+                continue
+            scale = (hi[cols] - lo[cols]) / 2
+            a = jac[np.ix_(rows, cols)] * scale
+            reg = math.sqrt(LAMBDA) * max(float(np.abs(a).max()), 1e-12)
+            a_aug = np.vstack([a, reg * np.eye(len(cols))])
+            b_aug = np.concatenate([demand[rows], np.zeros(len(cols))])
+            res = lsq_linear(a_aug, b_aug, bounds=(lo[cols] / scale, hi[cols] / scale))
+            u[cols] = res.x * scale
+            active = active or bool(np.any(res.active_mask != 0))
+            miss += float(np.linalg.norm(a @ res.x - demand[rows]))
         self.u = u
-        miss = float(np.linalg.norm(jac @ u - demand))
-        self.saturated = bool(
-            np.any(res.active_mask != 0) and miss > 0.1 * np.linalg.norm(demand) + 1e-12
-        )
+        self.saturated = bool(active and miss > 0.1 * np.linalg.norm(demand) + 1e-12)
         return split_inputs(names, params, u)
 
 

@@ -9,6 +9,7 @@ converts a result to the bird's own units.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
@@ -17,7 +18,7 @@ from typing import Any
 import numpy as np
 
 from birdsim.errors import BirdsimError
-from birdsim.flight.attitude import INPUTS, AttitudeLoop, euler_zyx
+from birdsim.flight.attitude import INPUTS, AttitudeLoop, euler_zyx, wingbeat_fit_matrix
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
 from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
@@ -287,8 +288,13 @@ def _attitude_estimate(
         pad = per_beat - len(window)
         ang = np.vstack([np.repeat(ang[:1], pad, axis=0), ang])
         rate = np.vstack([np.zeros((pad, 3)), rate])
-    lag = 0.5 * (period - period / per_beat)
-    return ang.mean(axis=0) + lag * rate.mean(axis=0), rate.mean(axis=0)
+    fit = _fit_matrix(per_beat, period)
+    return fit[0] @ ang, fit[0] @ rate
+
+
+@functools.lru_cache(maxsize=4)
+def _fit_matrix(n: int, period: float) -> np.ndarray:
+    return wingbeat_fit_matrix(n, period)
 
 
 def _arrays(record: list, rows: dict, names: tuple[str, ...]) -> dict[str, np.ndarray]:

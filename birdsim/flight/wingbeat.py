@@ -35,6 +35,11 @@ from birdsim.physics.bird import Bird
 from birdsim.physics.kinematics import KinematicModel
 
 
+#: Time constant (wingbeats) of the attitude inputs' smoothing: fast enough for the
+#: attitude loop, slow enough that the wings' accelerations stay of the wingbeat's order.
+INPUT_SMOOTHING_BEATS = 0.125
+
+
 class CascadeFilter:
     """Two cascaded first-order filters ``x1' = (u - x1)/tau``, ``x2' = (x1 - x2)/tau``,
     output ``p = x2``, for vectors of parameters; exact for piecewise-constant input u.
@@ -114,6 +119,7 @@ class WingbeatSchedule:
         *,
         smoothing: float,
         initial_left: Sequence[float] | None = None,
+        input_smoothing: float | None = None,
     ):
         self.m = m
         self.kin = kin
@@ -121,8 +127,14 @@ class WingbeatSchedule:
         self.names = kin.param_names
         right = np.asarray(initial, dtype=float)
         left = right if initial_left is None else np.asarray(initial_left, dtype=float)
-        #: the filter's state: right params, left params, sweep offsets (right, left)
-        self.filter = CascadeFilter(smoothing, np.concatenate([right, left, [0.0, 0.0]]))
+        #: the table's wingbeat (the mean of both wings), smoothed like playback's
+        self.filter = CascadeFilter(smoothing, 0.5 * (right + left))
+        #: the attitude inputs: half the right-left difference of every parameter and
+        #: the sweep offsets (right, left), smoothed faster (INPUT_SMOOTHING_BEATS)
+        tau_in = INPUT_SMOOTHING_BEATS * bird.period if input_smoothing is None else input_smoothing
+        self.input_filter = CascadeFilter(
+            min(tau_in, smoothing), np.concatenate([0.5 * (right - left), [0.0, 0.0]])
+        )
         self.pitch_index = self.names.index("pitch")
         #: symmetric sweep offset (rad) of both wings' target: an attitude input that
         #: moves the force line fore and aft (the shoulder's sweep joint, any model)
@@ -143,26 +155,25 @@ class WingbeatSchedule:
         right = np.asarray(target, dtype=float)
         left = right if target_left is None else np.asarray(target_left, dtype=float)
         sw = self.sweep_target
-        p, dp, ddp = self.filter.advance(np.concatenate([right, left, [sw, sw]]), times - t_now, dt)
-        n = len(self.names)
-        return self.prescribe(
-            times,
-            p[:, :n],
-            dp[:, :n],
-            ddp[:, :n],
-            left=(p[:, n : 2 * n], dp[:, n : 2 * n], ddp[:, n : 2 * n]),
-            sweep=(p[:, 2 * n :], dp[:, 2 * n :], ddp[:, 2 * n :]),
+        rel = times - t_now
+        mean = self.filter.advance(0.5 * (right + left), rel, dt)
+        inputs = self.input_filter.advance(
+            np.concatenate([0.5 * (right - left), [sw, sw]]), rel, dt
         )
+        n = len(self.names)
+        r = tuple(a + b[:, :n] for a, b in zip(mean, inputs))
+        lft = tuple(a - b[:, :n] for a, b in zip(mean, inputs))
+        return self.prescribe(times, *r, left=lft, sweep=tuple(b[:, n:] for b in inputs))
 
     @property
     def output(self) -> np.ndarray:
-        """The right wing's smoothed parameters now."""
-        return self.filter.output[: len(self.names)]
+        """The table's smoothed wingbeat parameters now (the mean of both wings)."""
+        return self.filter.output
 
     @property
     def sweep_now(self) -> float:
         """The smoothed symmetric sweep offset now (rad)."""
-        return float(self.filter.output[-2])
+        return float(self.input_filter.output[-2])
 
     def _joints(self, times, p, dp, ddp, sweep=None):
         omega = self.bird.omega
