@@ -9,7 +9,6 @@ converts a result to the bird's own units.
 
 from __future__ import annotations
 
-import functools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
@@ -18,8 +17,9 @@ from typing import Any
 import numpy as np
 
 from birdsim.errors import BirdsimError
-from birdsim.flight.attitude import INPUTS, AttitudeLoop, euler_zyx, wingbeat_fit_matrix
+from birdsim.flight.attitude import AttitudeLoop, euler_zyx
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
+from birdsim.flight.flight_arrays import attitude_estimate, flight_arrays
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
 from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
 from birdsim.flight.wingbeat import WingbeatSchedule
@@ -219,7 +219,7 @@ def fly(
             wind = wind_at(gusts, t / TWO_PI, speed)
             left = None
             if free:
-                angles, rates = _attitude_estimate(att_window, fb.d, config.log_per_beat, TWO_PI)
+                angles, rates = attitude_estimate(att_window, fb.d, config.log_per_beat, TWO_PI)
                 v_est = float(est[2]) if est is not None else float(ref0.vx)
                 right, left, sweep, tail = att.update(
                     cmd.params, pitch, v_est - float(wind[0]), angles, rates, dt_ctl
@@ -266,82 +266,12 @@ def fly(
     )  # whole control intervals were flown
     record = record[:keep]
     rows = {k: v[:keep] for k, v in rows.items()}
-    arrays = _arrays(record, rows, names)
+    arrays = flight_arrays(record, rows, names)
     result = FlightResult(arrays, bird, model, names, gains, open_loop or demands_only, projection)
     result.meta["root_applied_max"] = root_applied
     result.meta["attitude"] = config.attitude
     result.meta["attitude_loop"] = bool(free and attitude_loop)
     return result
-
-
-def _attitude_estimate(
-    window: list, d: Any, per_beat: int, period: float
-) -> tuple[np.ndarray, np.ndarray]:
-    """Wingbeat-mean Euler angles and body rates (seed axes), moved forward by the
-    average's lag; before a whole wingbeat the missing samples are the start's."""
-    if not window:
-        return euler_zyx(np.array(d.qpos[3:7])), C_SEED * np.array(d.qvel[3:6])
-    ang = np.array([w[0] for w in window])
-    rate = np.array([w[1] for w in window])
-    ang[:, 2] = np.unwrap(ang[:, 2])
-    if len(window) < per_beat:
-        pad = per_beat - len(window)
-        ang = np.vstack([np.repeat(ang[:1], pad, axis=0), ang])
-        rate = np.vstack([np.zeros((pad, 3)), rate])
-    fit = _fit_matrix(per_beat, period)
-    return fit[0] @ ang, fit[0] @ rate
-
-
-@functools.lru_cache(maxsize=4)
-def _fit_matrix(n: int, period: float) -> np.ndarray:
-    return wingbeat_fit_matrix(n, period)
-
-
-def _arrays(record: list, rows: dict, names: tuple[str, ...]) -> dict[str, np.ndarray]:
-    """The flight's per-sample arrays (reduced units) from the step records."""
-    t = np.array([r[0] for r in record])
-    qpos = np.array([r[1] for r in record])
-    qvel = np.array([r[2] for r in record])
-    moment = np.array([r[3] for r in record])
-    force = np.array([r[4] for r in record])
-    params = np.array(rows.pop("params"))
-    euler = euler_zyx(qpos[:, 3:7])
-    tail = np.array(rows.pop("tail"), dtype=float).reshape(-1, 3)
-    inputs = np.array(rows.pop("inputs"), dtype=float)
-    arrays = {
-        "t": t,
-        "x": qpos[:, 0],
-        "y": qpos[:, 1],
-        "z": qpos[:, 2],
-        "vx": qvel[:, 0],
-        "vy": qvel[:, 1],
-        "vz": qvel[:, 2],
-        **{
-            k: np.asarray(v, dtype=bool if k.endswith("saturated") else float)
-            for k, v in rows.items()
-        },
-        **{n: params[:, i] for i, n in enumerate(names)},
-        "roll": euler[:, 0],
-        "pitch": euler[:, 1],
-        "yaw": euler[:, 2],
-        "quat": qpos[:, 3:7],
-        "omega_body": C_SEED * qvel[:, 3:6],
-        "moment_aero": moment,
-        "pitch_moment": moment[:, 1],
-        "tail_elevation": tail[:, 0],
-        "tail_spread": tail[:, 1],
-        "tail_roll": tail[:, 2],
-        "tail_force": np.array([r[6] for r in record]),
-        "power": np.array([r[5] for r in record]),
-        "force_x": force[:, 0],
-        "force_y": force[:, 1],
-        "force_z": force[:, 2],
-        "qpos": qpos,
-        "qvel": qvel,
-    }
-    for i, (name, _kind, _b) in enumerate(INPUTS):
-        arrays[f"u_{name}"] = inputs[:, i]
-    return arrays
 
 
 def sample_reference(reference: Any, t: np.ndarray) -> dict[str, np.ndarray]:

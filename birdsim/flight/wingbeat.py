@@ -34,7 +34,6 @@ from birdsim.mujoco.driver import set_root, wing_arrays
 from birdsim.physics.bird import Bird
 from birdsim.physics.kinematics import KinematicModel
 
-
 #: Time constant (wingbeats) of the attitude inputs' smoothing: fast enough for the
 #: attitude loop, slow enough that the wings' accelerations stay of the wingbeat's order.
 INPUT_SMOOTHING_BEATS = 0.125
