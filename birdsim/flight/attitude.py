@@ -65,8 +65,10 @@ LAT_ROWS, LAT_INPUTS = [0, 2], [0, 1, 4]
 #: Phases per wingbeat of a Jacobian measurement and the input step (rad).
 JAC_SAMPLES = 16
 JAC_STEP = 0.02
-#: Airspeed change (semispan omega) that triggers a new Jacobian.
+#: Airspeed change (semispan omega) and pitch command change (rad) that trigger a new
+#: Jacobian.
 JAC_DV = 0.05
+JAC_DPITCH = 0.1
 #: Regularisation of the allocation (relative to the inputs' bounds).
 LAMBDA = 1e-4
 #: The integral's share of the moment is bounded by this many times the inertia x
@@ -94,21 +96,27 @@ def euler_zyx(quat: np.ndarray) -> np.ndarray:
 
 #: Harmonics of the wingbeat removed by the attitude estimate's fit.
 FIT_HARMONICS = 3
+#: Wingbeats of samples the estimate fits.
+FIT_BEATS = 1
 
 
-def wingbeat_fit_matrix(n: int, period: float, harmonics: int = FIT_HARMONICS) -> np.ndarray:
+def wingbeat_fit_matrix(
+    n: int, period: float, harmonics: int = FIT_HARMONICS, beats: int = 1
+) -> np.ndarray:
     """Rows (2, n): the least-squares weights that give, from ``n`` samples spanning the
-    last wingbeat (the newest last), the value now and the slope of the fit
-    ``a + b tau + sum_k (c_k cos k omega tau + s_k sin k omega tau)`` (tau = time
-    before now): the wingbeat-mean state without the moving average's lag."""
-    dt = period / n
+    last ``beats`` wingbeats (the newest last), the value now and the slope of the fit
+    ``a + b tau + sum_k (c_k cos k w tau + s_k sin k w tau)`` (tau = time before now,
+    k = 1..harmonics and, over two or more wingbeats, k = 1/2 too): the wingbeat-mean
+    state without the moving average's lag."""
+    length = beats * period
+    dt = length / n
     tau = -dt * np.arange(n - 1, -1, -1)
     w = 2.0 * math.pi / period
+    ks = [k for k in range(1, harmonics + 1)] + ([0.5] if beats >= 2 else [])
     cols = [np.ones(n), tau]
-    for k in range(1, harmonics + 1):
+    for k in ks:
         cols += [np.cos(k * w * tau), np.sin(k * w * tau)]
-    basis = np.stack(cols, axis=1)
-    pinv = np.linalg.pinv(basis)
+    pinv = np.linalg.pinv(np.stack(cols, axis=1))
     # the trend's value now (a; the periodic part is the within-beat rocking) and slope (b)
     return np.stack([pinv[0], pinv[1]])
 
@@ -217,7 +225,7 @@ class AttitudeLoop:
         self.integral = np.zeros(3)
         self.u = np.zeros(len(INPUTS))
         self.saturated = False
-        self._jac: tuple[float, np.ndarray, np.ndarray] | None = None
+        self._jac: tuple[float, np.ndarray, np.ndarray, float] | None = None
         self.kinds = INPUTS
 
     def bounds(self, params: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -244,24 +252,27 @@ class AttitudeLoop:
         params: np.ndarray,
         pitch_cmd: float,
         speed: float,
-        angles: np.ndarray,
+        err: np.ndarray,
         rates: np.ndarray,
         dt: float,
     ) -> tuple[np.ndarray, np.ndarray, float, TailControls]:
-        """The wings' and tail's commands for this control step.  ``angles`` / ``rates``:
-        the wingbeat-mean estimates (roll, pitch, yaw) and (p, q, r), seed axes."""
+        """The wings' and tail's commands for this control step.  ``err`` / ``rates``:
+        the wingbeat-mean attitude error (rotation vector onto the command) and body
+        rates (p, q, r), seed body axes."""
         names = self.fb.schedule.names
         if not self.enabled:
             self.u = np.zeros(len(INPUTS))
             self.saturated = False
             return split_inputs(names, params, self.u)
-        if self._jac is None or abs(self._jac[0] - speed) > JAC_DV:
+        if (
+            self._jac is None
+            or abs(self._jac[0] - speed) > JAC_DV
+            or abs(self._jac[3] - pitch_cmd) > JAC_DPITCH
+        ):
             m0, jac = measured_jacobian(self.fb, params, pitch_cmd, max(speed, 0.0))
-            self._jac = (speed, m0, jac)
-        _, m0, jac = self._jac
+            self._jac = (speed, m0, jac, pitch_cmd)
+        _, m0, jac, _ = self._jac
         g = self.gains
-        err = np.array([0.0, pitch_cmd, 0.0]) - angles
-        err[2] = (err[2] + math.pi) % (2 * math.pi) - math.pi
         lim = INTEGRAL_LIMIT_RAD * g.omega_a**2 / g.ki
         if not self.saturated:  # anti-windup: frozen while the inputs are at their bounds
             self.integral = np.clip(self.integral + dt * err, -lim, lim)

@@ -7,32 +7,41 @@ import functools
 from typing import Any
 
 import numpy as np
+from scipy.spatial.transform import Rotation
 
-from birdsim.flight.attitude import INPUTS, euler_zyx, wingbeat_fit_matrix
+from birdsim.flight.attitude import FIT_BEATS, INPUTS, euler_zyx, wingbeat_fit_matrix
 from birdsim.flight.simulate import C_SEED
 
 
 def attitude_estimate(
-    window: list, d: Any, per_beat: int, period: float
+    window: list, d: Any, per_beat: int, period: float, pitch_cmd: float
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Wingbeat-mean Euler angles and body rates (seed axes), moved forward by the
-    average's lag; before a whole wingbeat the missing samples are the start's."""
+    """Wingbeat-mean attitude error and body rates (seed body axes) over the last
+    wingbeat of samples ``(quat, omega_body)``: the error is the rotation vector that
+    turns the body onto the command (roll 0, ``pitch_cmd``, yaw 0), ``log(S^T S_cmd)``
+    -- no Euler angles, so no gimbal lock at a steep body; before a whole wingbeat the
+    missing samples are the start's."""
     if not window:
-        return euler_zyx(np.array(d.qpos[3:7])), C_SEED * np.array(d.qvel[3:6])
-    ang = np.array([w[0] for w in window])
+        window = [(np.array(d.qpos[3:7]), C_SEED * np.array(d.qvel[3:6]))]
+    quat = np.array([w[0] for w in window])
     rate = np.array([w[1] for w in window])
-    ang[:, 2] = np.unwrap(ang[:, 2])
-    if len(window) < per_beat:
-        pad = per_beat - len(window)
-        ang = np.vstack([np.repeat(ang[:1], pad, axis=0), ang])
+    r_mj = Rotation.from_quat(quat[:, [1, 2, 3, 0]]).as_matrix()
+    c = np.diag(C_SEED)
+    s_body = c @ r_mj @ c
+    s_cmd = Rotation.from_euler("y", pitch_cmd).as_matrix()
+    err = Rotation.from_matrix(np.swapaxes(s_body, 1, 2) @ s_cmd).as_rotvec()
+    n = FIT_BEATS * per_beat
+    if len(window) < n:
+        pad = n - len(window)
+        err = np.vstack([np.repeat(err[:1], pad, axis=0), err])
         rate = np.vstack([np.zeros((pad, 3)), rate])
-    fit = _fit_matrix(per_beat, period)
-    return fit[0] @ ang, fit[0] @ rate
+    fit = _fit_matrix(n, period)
+    return fit[0] @ err, fit[0] @ rate
 
 
 @functools.lru_cache(maxsize=4)
 def _fit_matrix(n: int, period: float) -> np.ndarray:
-    return wingbeat_fit_matrix(n, period)
+    return wingbeat_fit_matrix(n, period, beats=FIT_BEATS)
 
 
 def flight_arrays(record: list, rows: dict, names: tuple[str, ...]) -> dict[str, np.ndarray]:

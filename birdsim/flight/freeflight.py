@@ -17,7 +17,7 @@ from typing import Any
 import numpy as np
 
 from birdsim.errors import BirdsimError
-from birdsim.flight.attitude import AttitudeLoop, euler_zyx
+from birdsim.flight.attitude import FIT_BEATS, AttitudeLoop, euler_zyx
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.flight_arrays import attitude_estimate, flight_arrays
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
@@ -30,6 +30,12 @@ TWO_PI = 2.0 * math.pi
 #: The integral term's acceleration is bounded by this fraction of gravity (the
 #: table-vs-flight mismatch it trims is ~4 % of the weight in cruise).
 INTEGRAL_LIMIT = 0.1
+#: Time constant (wingbeats) of the body's pitch command (attitude free, with a
+#: stroke plane): the table's pitch smoothed; the stroke plane turns by the difference.
+PITCH_COMMAND_BEATS = 2.0
+#: How far (rad) the compensated stroke plane may leave the table's bounds (those bound
+#: the optimiser's search, not the shoulder).
+SP_MARGIN = 0.8
 #: The integral only runs while the estimated position error is below this (semispans).
 INTEGRAL_BAND = 0.1
 
@@ -111,6 +117,7 @@ def fly(
     progress: Any = None,
     trim: bool = True,
     attitude_loop: bool = True,
+    stroke_compensation: bool = True,
 ) -> FlightResult:
     """Fly ``reference`` (a FlightPath in reduced units, or a DemandSchedule) with
     ``table`` for ``beats`` wingbeats (default: the reference's duration).
@@ -195,8 +202,18 @@ def fly(
         # the start's prescription from the schedule that will be flown (after the trim)
         zeros = np.zeros((1, len(names)))
         pres = fb.schedule.prescribe(np.zeros(1), cmd.params[None, :], zeros, zeros)
-        fb.start(pos0, vel0, pres)
+        omega0, d_pitch0 = getattr(fb, "start_rotation", (None, 0.0))
+        fb.start(pos0, vel0, pres, pitch=float(pres.pitch[0]) - d_pitch0, omega_body=omega0)
         att = AttitudeLoop(fb, enabled=free and attitude_loop)
+        compensate = free and stroke_compensation and "stroke_plane" in names
+        pitch_ref: float | None = None
+        tau_ref = PITCH_COMMAND_BEATS * TWO_PI if compensate else 1e-9
+        sp_index = names.index("stroke_plane") if compensate else -1
+        sp_bounds = (
+            (fb.kin.params[sp_index].lower - SP_MARGIN, fb.kin.params[sp_index].upper + SP_MARGIN)
+            if compensate
+            else None
+        )
         att_window: list[tuple[np.ndarray, np.ndarray]] = []
         dt_ctl = steps_ctl * h
         for k in range(n_ctl):
@@ -217,19 +234,36 @@ def fly(
                 limit = INTEGRAL_LIMIT * red.gravity / gains.ki if red.gravity > 0 else np.inf
                 integral = np.clip(integral + dt_ctl * est[0], -limit, limit)
             wind = wind_at(gusts, t / TWO_PI, speed)
-            left = None
+            left = offset = None
             if free:
-                angles, rates = attitude_estimate(att_window, fb.d, config.log_per_beat, TWO_PI)
                 v_est = float(est[2]) if est is not None else float(ref0.vx)
+                if pitch_ref is None:
+                    pitch_ref = pitch
+                # the body's pitch command: the table's pitch, smoothed over
+                # PITCH_COMMAND_BEATS (the stroke plane takes the difference)
+                pitch_ref += (pitch - pitch_ref) * (1.0 - math.exp(-dt_ctl / tau_ref))
+                err, rates = attitude_estimate(
+                    att_window, fb.d, config.log_per_beat, TWO_PI, pitch_ref
+                )
                 right, left, sweep, tail = att.update(
-                    cmd.params, pitch, v_est - float(wind[0]), angles, rates, dt_ctl
+                    cmd.params, pitch_ref, v_est - float(wind[0]), err, rates, dt_ctl
                 )
                 fb.schedule.sweep_target = sweep
                 fb.cb.tail_controls = tail
+                if compensate:
+                    # the stroke plane turns by the difference between the table's pitch
+                    # and the body's command, so the wings beat in the world as the
+                    # table's wingbeat at the table's pitch (m3/m4: stroke plane and
+                    # body pitch compose about one axis)
+                    offset = np.zeros(len(names))
+                    # (pitch_ref - err[1]: the body's wingbeat-mean pitch), within the
+                    # stroke plane's bounds
+                    sp = cmd.params[sp_index] + pitch - (pitch_ref - float(err[1]))
+                    offset[sp_index] = float(np.clip(sp, *sp_bounds)) - cmd.params[sp_index]
             else:
                 right = cmd.params
             step_times = t + np.arange(steps_ctl) * h
-            pres = fb.schedule.advance(right, step_times, t, dt_ctl, left)
+            pres = fb.schedule.advance(right, step_times, t, dt_ctl, left, offset)
             start = len(record)
             fb.step_many(pres, wind, record, every)
             new = record[start:]
@@ -241,11 +275,13 @@ def fly(
                     np.array([refs["vx"][j] - qvel[0], refs["vz"][j] - qvel[2]]),
                     float(qvel[0]),
                 )
-                att_window.append((euler_zyx(qpos[3:7]), C_SEED * qvel[3:6]))
+                att_window.append((qpos[3:7], C_SEED * qvel[3:6]))
                 rows["V_air"].append(float(np.linalg.norm(qvel[:3] - wind)))
                 rows["params"].append(pres.params[j * every])
-                rows["pitch_command"].append(pres.pitch[j * every])
-            del att_window[: max(0, len(att_window) - config.log_per_beat)]
+                rows["pitch_command"].append(
+                    pres.pitch[j * every] if pitch_ref is None else pitch_ref
+                )
+            del att_window[: max(0, len(att_window) - FIT_BEATS * config.log_per_beat)]
             n_new = len(new)
             rows["x_ref"].extend(refs["x"].tolist())
             rows["z_ref"].extend(refs["z"].tolist())
@@ -317,7 +353,8 @@ def _trim(
     h = fb.h
     times = np.arange(n) * h
     pres = fb.schedule.advance(params, times, 0.0, n * h)
-    fb.start(pos0, vel0, pres)
+    omega0, d_pitch0 = getattr(fb, "start_rotation", (None, 0.0))
+    fb.start(pos0, vel0, pres, pitch=float(pres.pitch[0]) - d_pitch0, omega_body=omega0)
     rec: list = []
     p_start = fb.P.copy()
     fb.step_many(pres, np.zeros(3), rec, every)
@@ -341,6 +378,17 @@ def _trim(
         (e_pos[k, [0, 2]], e_vel[k, [0, 2]], float(vel[k, 0] - dv[0])) for k in range(len(t))
     ]
     a_ref = np.array([ref["ax"].mean(), ref["az"].mean()])
+    # the same for the free body's rotation: started at the table's pitch with no rate,
+    # the within-beat rocking would leave a mean rate and pitch offset (MuJoCo body axes)
+    omega = np.array([r[2][3:6] for r in rec]).mean(axis=0)
+    pitch = euler_zyx(np.array([r[1][3:7] for r in rec]))[:, 1]
+    pitch_rate = -omega[1]  # nose up is about MuJoCo -y
+    d_pitch = float((pitch - pres.pitch[0] - pitch_rate * t).mean())
+    old_omega, old_pitch = getattr(fb, "start_rotation", (np.zeros(3), 0.0))
+    fb.start_rotation = (
+        (np.zeros(3) if old_omega is None else old_omega) - omega,
+        old_pitch + d_pitch,
+    )
     return pos0 - dx, vel0 - dv, history, a_ref - a_flown[[0, 2]]
 
 

@@ -131,8 +131,10 @@ class WingbeatSchedule:
         #: the attitude inputs: half the right-left difference of every parameter and
         #: the sweep offsets (right, left), smoothed faster (INPUT_SMOOTHING_BEATS)
         tau_in = INPUT_SMOOTHING_BEATS * bird.period if input_smoothing is None else input_smoothing
+        n = len(self.names)
         self.input_filter = CascadeFilter(
-            min(tau_in, smoothing), np.concatenate([0.5 * (right - left), [0.0, 0.0]])
+            min(tau_in, smoothing),
+            np.concatenate([0.5 * (right - left), np.zeros(n), [0.0, 0.0]]),
         )
         self.pitch_index = self.names.index("pitch")
         #: symmetric sweep offset (rad) of both wings' target: an attitude input that
@@ -146,23 +148,27 @@ class WingbeatSchedule:
         t_now: float,
         dt: float,
         target_left: Sequence[float] | None = None,
+        offset: Sequence[float] | None = None,
     ) -> Prescription:
         """The prescription at absolute reduced ``times`` (T,), for a target held from
         ``t_now`` for ``dt``; the filter state moves on to ``t_now + dt``.
-        ``target_left``: the left wing's target (None: the same as the right's)."""
+        ``target_left``: the left wing's target (None: the same as the right's);
+        ``offset``: a correction added to both wings' parameters, smoothed like the
+        attitude inputs (the stroke plane's compensation of a pitch error)."""
         times = np.asarray(times, dtype=float)
         right = np.asarray(target, dtype=float)
         left = right if target_left is None else np.asarray(target_left, dtype=float)
         sw = self.sweep_target
         rel = times - t_now
         mean = self.filter.advance(0.5 * (right + left), rel, dt)
-        inputs = self.input_filter.advance(
-            np.concatenate([0.5 * (right - left), [sw, sw]]), rel, dt
-        )
         n = len(self.names)
-        r = tuple(a + b[:, :n] for a, b in zip(mean, inputs))
-        lft = tuple(a - b[:, :n] for a, b in zip(mean, inputs))
-        return self.prescribe(times, *r, left=lft, sweep=tuple(b[:, n:] for b in inputs))
+        off = np.zeros(n) if offset is None else np.asarray(offset, dtype=float)
+        inputs = self.input_filter.advance(
+            np.concatenate([0.5 * (right - left), off, [sw, sw]]), rel, dt
+        )
+        r = tuple(a + b[:, :n] + b[:, n : 2 * n] for a, b in zip(mean, inputs))
+        lft = tuple(a - b[:, :n] + b[:, n : 2 * n] for a, b in zip(mean, inputs))
+        return self.prescribe(times, *r, left=lft, sweep=tuple(b[:, 2 * n :] for b in inputs))
 
     @property
     def output(self) -> np.ndarray:
