@@ -72,7 +72,7 @@ class Bird:
     # not depend on them, see FLIGHT_FIELDS).  Lengths in the bird's length unit, the
     # seed bird's derived in models/seed-bird.toml, the pigeon's in models/pigeon.toml.
     #: tail length from its root to the tip of the spread fan
-    tail_length: float = 0.32
+    tail_length: float = 0.30
     #: widest spread span of the tail fan (slender-wing span b at full spread)
     tail_span: float = 0.48
     #: distance of the tail's root behind the centre of mass (along the body's -x)
