@@ -255,22 +255,28 @@ class AttitudeLoop:
         err: np.ndarray,
         rates: np.ndarray,
         dt: float,
+        *,
+        jac_params: np.ndarray | None = None,
+        jac_pitch: float | None = None,
     ) -> tuple[np.ndarray, np.ndarray, float, TailControls]:
         """The wings' and tail's commands for this control step.  ``err`` / ``rates``:
         the wingbeat-mean attitude error (rotation vector onto the command) and body
-        rates (p, q, r), seed body axes."""
+        rates (p, q, r), seed body axes.  ``jac_params`` / ``jac_pitch``: the wingbeat
+        and body pitch the Jacobians are measured at (default: ``params``, the command)."""
         names = self.fb.schedule.names
         if not self.enabled:
             self.u = np.zeros(len(INPUTS))
             self.saturated = False
             return split_inputs(names, params, self.u)
+        jp = pitch_cmd if jac_pitch is None else jac_pitch
         if (
             self._jac is None
             or abs(self._jac[0] - speed) > JAC_DV
-            or abs(self._jac[3] - pitch_cmd) > JAC_DPITCH
+            or abs(self._jac[3] - jp) > JAC_DPITCH
         ):
-            m0, jac = measured_jacobian(self.fb, params, pitch_cmd, max(speed, 0.0))
-            self._jac = (speed, m0, jac, pitch_cmd)
+            at = params if jac_params is None else jac_params
+            m0, jac = measured_jacobian(self.fb, at, jp, max(speed, 0.0))
+            self._jac = (speed, m0, jac, jp)
         _, m0, jac, _ = self._jac
         g = self.gains
         lim = INTEGRAL_LIMIT_RAD * g.omega_a**2 / g.ki

@@ -245,21 +245,27 @@ def fly(
                 err, rates = attitude_estimate(
                     att_window, fb.d, config.log_per_beat, TWO_PI, pitch_ref
                 )
+                body_pitch = pitch_ref - float(err[1])  # the wingbeat-mean pitch
+                if compensate:
+                    # the stroke plane turns by the difference between the table's pitch
+                    # and the body's, so the wings beat in the world as the table's
+                    # wingbeat at the table's pitch (m3/m4: stroke plane and body pitch
+                    # compose about one axis), within the stroke plane's bounds
+                    offset = np.zeros(len(names))
+                    sp = cmd.params[sp_index] + pitch - body_pitch
+                    offset[sp_index] = float(np.clip(sp, *sp_bounds)) - cmd.params[sp_index]
                 right, left, sweep, tail = att.update(
-                    cmd.params, pitch_ref, v_est - float(wind[0]), err, rates, dt_ctl
+                    cmd.params,
+                    pitch_ref,
+                    v_est - float(wind[0]),
+                    err,
+                    rates,
+                    dt_ctl,
+                    jac_params=None if offset is None else cmd.params + offset,
+                    jac_pitch=body_pitch,
                 )
                 fb.schedule.sweep_target = sweep
                 fb.cb.tail_controls = tail
-                if compensate:
-                    # the stroke plane turns by the difference between the table's pitch
-                    # and the body's command, so the wings beat in the world as the
-                    # table's wingbeat at the table's pitch (m3/m4: stroke plane and
-                    # body pitch compose about one axis)
-                    offset = np.zeros(len(names))
-                    # (pitch_ref - err[1]: the body's wingbeat-mean pitch), within the
-                    # stroke plane's bounds
-                    sp = cmd.params[sp_index] + pitch - (pitch_ref - float(err[1]))
-                    offset[sp_index] = float(np.clip(sp, *sp_bounds)) - cmd.params[sp_index]
             else:
                 right = cmd.params
             step_times = t + np.arange(steps_ctl) * h
