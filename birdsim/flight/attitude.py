@@ -195,7 +195,7 @@ def split_inputs(
     right = np.array(params, dtype=float)
     left = right.copy()
     sweep = 0.0
-    tail = TailControls()
+    elevation = roll = 0.0
     for (name, kind, _), ui in zip(INPUTS, u):
         if kind == "diff" and name in names:
             j = names.index(name)
@@ -204,10 +204,10 @@ def split_inputs(
         elif kind == "sweep":
             sweep = float(ui)
         elif name == "tail_elevation":
-            tail.elevation = float(ui)
+            elevation = float(ui)
         elif name == "tail_roll":
-            tail.roll = float(ui)
-    return right, left, sweep, tail
+            roll = float(ui)
+    return right, left, sweep, TailControls(elevation, 1.0, roll)
 
 
 class AttitudeLoop:

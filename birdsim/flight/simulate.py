@@ -133,6 +133,13 @@ def partition(m: mujoco.MjModel, attitude: str) -> Partition:
     return Partition(free_dofs, np.array(pres_dofs), np.array(pres_q), np.array(wing_dofs), free)
 
 
+def _as_slice(idx: np.ndarray) -> slice | np.ndarray:
+    """A contiguous index array as a slice (numpy views instead of copies)."""
+    if len(idx) and np.array_equal(idx, np.arange(idx[0], idx[0] + len(idx))):
+        return slice(int(idx[0]), int(idx[0]) + len(idx))
+    return idx
+
+
 def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return np.array(
         [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
@@ -291,8 +298,13 @@ class FreeBird:
             d.subtree_com,
         )
         part = self.part
-        F, P, Pq, W = part.free_dofs, part.pres_dofs, part.pres_qpos, part.wing_dofs
-        FF, FP, PF, PP = np.ix_(F, F), np.ix_(F, P), np.ix_(P, F), np.ix_(P, P)
+        F, P, Pq, W = (
+            _as_slice(a) for a in (part.free_dofs, part.pres_dofs, part.pres_qpos, part.wing_dofs)
+        )
+        if all(isinstance(x, slice) for x in (F, P)):  # views, no copies (the usual case)
+            FF, FP, PF, PP = (F, F), (F, P), (P, F), (P, P)
+        else:
+            FF, FP, PF, PP = np.ix_(F, F), np.ix_(F, P), np.ix_(P, F), np.ix_(P, P)
         free_rot = part.free_rotation
         torso = self.torso
         step1, step2, full_m = mujoco.mj_step1, mujoco.mj_step2, mujoco.mj_fullM
@@ -310,7 +322,7 @@ class FreeBird:
             if project:
                 dx = self.X - com[torso]
                 qpos[:3] += dx
-                dp = np.zeros(len(F))
+                dp = np.zeros(len(part.free_dofs))
                 dp[:3] = self.P - M[:3] @ qvel
                 if free_rot:
                     l_now = R @ (M[3:6] @ qvel) - _cross(arm, M[:3] @ qvel)

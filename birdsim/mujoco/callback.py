@@ -32,7 +32,7 @@ import numpy as np
 
 from birdsim.errors import BirdsimError
 from birdsim.mujoco.model import aero_sites, span_sign
-from birdsim.mujoco.tail import TailControls, tail_force
+from birdsim.mujoco.tail import TailControls, tail_force, tail_frame
 from birdsim.physics.aero import body_drag_magnitude
 from birdsim.physics.bird import Bird
 
@@ -99,6 +99,8 @@ class AeroCallback:
                     "model lacks site 'tail_cp'; allowed: a model built by birdsim.mujoco.model"
                 ) from None
             self._tailvel = np.zeros(6)
+            self._tail_frame_for: TailControls | None = None
+            self._tail_frame = np.eye(3)
 
     def __call__(self, m: mujoco.MjModel, d: mujoco.MjData) -> None:
         if not self.enabled or m._address != self.model._address:
@@ -135,12 +137,21 @@ class AeroCallback:
             self._apply_tail(m, d)
 
     def _apply_tail(self, m: mujoco.MjModel, d: mujoco.MjData) -> None:
-        mujoco.mj_objectVelocity(m, d, _SITE, self.tail_site, self._tailvel, 0)
+        mujoco.mj_objectVelocity(m, d, _SITE, self.tail_site, self._tailvel, 1)
         xmat = d.site_xmat[self.tail_site].reshape(3, 3)  # the torso's axes
-        vel_body = xmat.T @ (self._tailvel[3:] - m.opt.wind)
+        vel_body = self._tailvel[3:] - xmat.T @ m.opt.wind  # local frame (flg_local=1)
         b = self.bird
+        ctl = self.tail_controls
+        if self._tail_frame_for is not ctl:  # the frame changes only with the controls
+            self._tail_frame = tail_frame(ctl.clipped())
+            self._tail_frame_for = ctl
         f_body, self.tail_alpha = tail_force(
-            vel_body, self.tail_controls, span=b.tail_span, length=b.tail_length, rho=b.rho
+            vel_body,
+            ctl,
+            span=b.tail_span,
+            length=b.tail_length,
+            rho=b.rho,
+            frame=self._tail_frame,
         )
         self.tail_force_body = f_body
         mujoco.mj_applyFT(

@@ -46,9 +46,10 @@ ELEVATION_MAX = math.radians(30.0)
 ROLL_MAX = math.radians(30.0)
 
 
-@dataclass
+@dataclass(frozen=True)
 class TailControls:
-    """The tail's controls (mutable: the controller sets them every control step)."""
+    """The tail's controls (a new object every control step: the callback keeps the
+    tail's frame for the object it last saw)."""
 
     elevation: float = 0.0
     spread: float = 1.0
@@ -56,9 +57,9 @@ class TailControls:
 
     def clipped(self) -> "TailControls":
         return TailControls(
-            float(np.clip(self.elevation, -ELEVATION_MAX, ELEVATION_MAX)),
-            float(np.clip(self.spread, SPREAD_MIN, 1.0)),
-            float(np.clip(self.roll, -ROLL_MAX, ROLL_MAX)),
+            min(max(float(self.elevation), -ELEVATION_MAX), ELEVATION_MAX),
+            min(max(float(self.spread), SPREAD_MIN), 1.0),
+            min(max(float(self.roll), -ROLL_MAX), ROLL_MAX),
         )
 
 
@@ -83,28 +84,35 @@ def tail_force(
     span: float,
     length: float,
     rho: float,
+    frame: np.ndarray | None = None,
 ) -> tuple[np.ndarray, float]:
     """Force on the tail (body axes) for the tail's velocity through the air
-    ``vel_body`` (body axes), and the angle of attack used (rad, capped)."""
-    c = controls.clipped()
-    frame = tail_frame(c)
-    u = frame.T @ np.asarray(vel_body, dtype=float)  # tail axes: chord, span, normal
-    v2 = u[0] * u[0] + u[2] * u[2]
+    ``vel_body`` (body axes), and the angle of attack used (rad, capped).  ``frame``:
+    :func:`tail_frame` of the clipped controls, when the caller has it already."""
+    spread = min(max(float(controls.spread), SPREAD_MIN), 1.0)
+    if frame is None:
+        frame = tail_frame(controls.clipped())
+    v0, v1, v2_ = float(vel_body[0]), float(vel_body[1]), float(vel_body[2])
+    # tail axes: chord, span, normal (frame^T v)
+    ux = frame[0, 0] * v0 + frame[1, 0] * v1 + frame[2, 0] * v2_
+    uz = frame[0, 2] * v0 + frame[1, 2] * v1 + frame[2, 2] * v2_
+    v2 = ux * ux + uz * uz
     if v2 == 0.0:
         return np.zeros(3), 0.0
-    b = span * c.spread
-    q = 0.5 * rho * v2
+    b = span * spread
     v = math.sqrt(v2)
-    drag_dir = -np.array([u[0], 0.0, u[2]]) / v
-    profile = q * 0.5 * b * length * TAIL_CD0
-    if u[0] <= 0.0:  # flow from behind: no slender-wing lift
-        return frame @ (profile * drag_dir), 0.0
-    alpha = math.atan2(-u[2], u[0])
-    a = max(-ALPHA_MAX, min(ALPHA_MAX, alpha))
-    lift = 0.25 * math.pi * rho * v2 * a * b * b
-    lift_dir = np.array([-u[2], 0.0, u[0]]) / v
-    drag = 0.5 * lift * a + profile
-    return frame @ (lift * lift_dir + drag * drag_dir), a
+    profile = 0.5 * rho * v2 * 0.5 * b * length * TAIL_CD0
+    if ux <= 0.0:  # flow from behind: no slender-wing lift
+        fx, fz = -profile * ux / v, -profile * uz / v
+        a = 0.0
+    else:
+        alpha = math.atan2(-uz, ux)
+        a = max(-ALPHA_MAX, min(ALPHA_MAX, alpha))
+        lift = 0.25 * math.pi * rho * v2 * a * b * b
+        drag = 0.5 * lift * a + profile
+        fx = (lift * -uz - drag * ux) / v
+        fz = (lift * ux - drag * uz) / v
+    return frame[:, 0] * fx + frame[:, 2] * fz, a
 
 
 __all__ = [
