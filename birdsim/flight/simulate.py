@@ -308,6 +308,7 @@ class FreeBird:
         free_rot = part.free_rotation
         torso = self.torso
         step1, step2, full_m = mujoco.mj_step1, mujoco.mj_step2, mujoco.mj_fullM
+        inv = np.linalg.inv
         proj = self.projection_max
         applied_max = self.root_applied_max
         project = self.config.momentum_projection
@@ -319,6 +320,7 @@ class FreeBird:
             full_m(m, d, M)
             R = xmat[torso].reshape(3, 3)
             arm = com[torso] - xpos[torso]
+            m_inv = inv(M[FF])  # one factorisation for the projection and a_F
             if project:
                 dx = self.X - com[torso]
                 qpos[:3] += dx
@@ -327,12 +329,12 @@ class FreeBird:
                 if free_rot:
                     l_now = R @ (M[3:6] @ qvel) - _cross(arm, M[:3] @ qvel)
                     dp[3:] = R.T @ (self.L - l_now + _cross(arm, dp[:3]))
-                dv = np.linalg.solve(M[FF], dp)
+                dv = m_inv @ dp
                 qvel[F] += dv
                 proj = max(proj, float(np.max(np.abs(dx))), float(np.max(np.abs(dv))) * h)
             f = qfrc_passive - qfrc_bias
             a_p = pres.qacc[k, P]
-            a_f = np.linalg.solve(M[FF], f[F] - M[FP] @ a_p)
+            a_f = m_inv @ (f[F] - M[FP] @ a_p)
             tau_p = M[PF] @ a_f + M[PP] @ a_p - f[P]
             qfrc_applied[:] = 0.0
             qfrc_applied[P] = tau_p
