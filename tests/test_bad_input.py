@@ -39,6 +39,7 @@ from birdsim.cli import main
 from birdsim.errors import BirdsimError
 from birdsim.flight.manoeuvre import get_manoeuvre, load_manoeuvre
 from birdsim.physics.kinematics import get_model
+from birdsim.physics.moments import wingbeat_moments
 from birdsim.tables.build import BuildConfig, BuildSettings, Grid, build_table
 
 # fmt: off
@@ -140,6 +141,11 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("info/foreign-json", ["tables", "info", "{w}/foreign.json"], "table file '{w}/foreign.json' has format version None"),
     ("info/not-json", ["tables", "info", "{w}/notjson.npz"], "table file '{w}/notjson.json' is unreadable"),
     ("info/foreign-npz", ["tables", "info", "{w}/alien.npz"], "table file '{w}/alien.npz' is unreadable or incomplete"),
+    ("jacobians/in-place-without-force", ["tables", "jacobians", "{w}/table.npz"], "--out is missing"),
+    ("jacobians/out-exists", ["tables", "jacobians", "{w}/table.npz", "--out", "{w}/table.npz"], "--out '{w}/table.npz' exists"),
+    ("jacobians/missing", ["tables", "jacobians", "{w}/nope.npz", "--out", "{w}/new.npz"], "table file '{w}/nope.npz' does not exist"),
+    ("api/moments-u-length", lambda w: wingbeat_moments("m1", HOVER_PARAMS, 0.5, u=[1.0]), "u=[1.0] is invalid"),
+    ("api/moments-rate-nan", lambda w: wingbeat_moments("m1", HOVER_PARAMS, 0.5, body_rate=(0, float("nan"), 0)), "body_rate=nan is not finite"),
     ("lookup/Fx-nan", ["tables", "lookup", "{w}/table.npz", "--Fx", "nan", "--Fz", "-0.3", "--V", "0"], "--Fx='nan' is not finite"),
     ("lookup/Fz-inf", ["tables", "lookup", "{w}/table.npz", "--Fx", "0", "--Fz=-inf", "--V", "0"], "--Fz='-inf' is not finite"),
     ("lookup/Fx-not-a-number", ["tables", "lookup", "{w}/table.npz", "--Fx", "a", "--Fz", "-0.3", "--V", "0"], "--Fx='a' is not a number"),

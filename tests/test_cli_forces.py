@@ -69,7 +69,7 @@ def test_missing_subcommand_names_the_choices(capsys):
     assert (
         exc.value.code == 2
         and err.count("\n") == 1
-        and "{build,info,lookup}" in err
+        and "{build,info,lookup,jacobians}" in err
         and "tables_command" not in err
     )
 

@@ -227,6 +227,9 @@ PINNED = {
     "TD96_body_angle_trend": (-1.883, 0.05),
     "TD96_strokeplane_trend": (3.208, 0.05),
     "PA15_hover": (1.0, 0),
+    "H07_roll_damping": (-0.318, 0.03),  # docs/moments.md: a factor 4.7 short of -1.5
+    "H07_roll_damping_airplane": (-0.318, 0.03),
+    "HCD09_fct": (1.0, 0),
 }
 VERDICTS = {
     "U05_wing_power": "rough",
@@ -234,6 +237,8 @@ VERDICTS = {
     "TD96_strokeplane_trend": "opposite",
     "U05_strokeplane": "not",
     "B10_amplitude_trend": "same",
+    "H07_roll_damping": "off",
+    "H07_roll_damping_airplane": "not",
     "TD96_body_angle_trend": "same",
 }
 

@@ -11,6 +11,7 @@ from pathlib import Path
 
 import numpy as np
 
+from birdsim.commands import table_jacobians
 from birdsim.commands.common import add_bird_arguments, bird_from_args
 from birdsim.errors import BirdsimError, check_finite
 from birdsim.io import check_output
@@ -31,7 +32,10 @@ def register(sub: argparse._SubParsersAction) -> None:
         description=__doc__,
     )
     tsub = p.add_subparsers(
-        dest="tables_command", metavar="{build,info,lookup}", required=True, parser_class=type(p)
+        dest="tables_command",
+        metavar="{build,info,lookup,jacobians}",
+        required=True,
+        parser_class=type(p),
     )
 
     b = tsub.add_parser("build", help="optimise every cell of a (Fx, Fz, V) grid for one model")
@@ -135,6 +139,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     q.add_argument("--clip", action="store_true", help="clip demands outside the grid to its edge")
     q.add_argument("--json", action="store_true", help="print JSON")
     q.set_defaults(func=run_lookup)
+    table_jacobians.register(tsub)
 
 
 def _positive_int(name: str, value: int | None) -> None:

@@ -218,9 +218,12 @@ def means(
     air_earth: np.ndarray,
     bird: Bird,
     phases: np.ndarray,
+    *,
+    body_rate: np.ndarray | None = None,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
     """Cycle means per panel for flat (B,) parameter arrays, or None where the kernel
-    cannot run (the caller then uses numpy).
+    cannot run (the caller then uses numpy).  ``body_rate`` (B x 3, body axes, or None
+    for none) adds ``omega x r`` to every element's air velocity.
 
     Returns:
         ``(force_earth B x K x 3, power B x K, joint_power B x G)`` (groups in
@@ -261,7 +264,11 @@ def means(
         P,
         JP,
     )
-    if not _run(_means_kernel, B, args):
+    if body_rate is not None:  # the rotating body: same kernel, omega x r added
+        args, fn = args + (c(body_rate, dtype=float), True), _means_rate_kernel
+    else:
+        fn = _means_kernel
+    if not _run(fn, B, args):
         return None
     return F, P, JP[:, [_GROUPS.index(g) for g in st.groups]]
 
@@ -364,7 +371,7 @@ def _rot(axis, c, s, x, y, z):
 
 
 @_jit
-def _means_kernel(
+def _means_rate_kernel(
     lo,
     hi,
     pitch,
@@ -393,7 +400,10 @@ def _means_kernel(
     F,
     P,
     JP,
+    rate,
+    rotating,
 ):
+    """The means of :func:`_means_kernel` with a body rate (B x 3) when ``rotating``."""
     J, N, K = amp.shape[1], phases.shape[0], kind.shape[0]
     ct, stt = np.cos(phases), np.sin(phases)
     for b in range(lo, hi):
@@ -479,6 +489,10 @@ def _means_kernel(
                             wx, wy, wz = wx + dx, wy + dy, wz + dz
                     fx_, fy_, fz_ = sx + wx, sy + wy, sz + wz  # flapping velocity
                     vx, vy, vz = ax + fx_, ay + fy_, az + fz_
+                    if rotating:  # omega x r, r from the torso origin
+                        vx += rate[b, 1] * pz - rate[b, 2] * py
+                        vy += rate[b, 2] * px - rate[b, 0] * pz
+                        vz += rate[b, 0] * py - rate[b, 1] * px
                     for i in range(L):
                         if kind[k, i] == 1:
                             j = joint[k, i]
@@ -503,3 +517,69 @@ def _means_kernel(
             P[b, k] = ps[k] / N
         JP[b, 0] = j0 / N
         JP[b, 1] = j1 / N
+
+
+@_jit
+def _means_kernel(
+    lo,
+    hi,
+    pitch,
+    speed,
+    climb,
+    air_earth,
+    amp,
+    phase,
+    bias,
+    const,
+    phases,
+    half,
+    omega,
+    rho,
+    kind,
+    joint,
+    axis,
+    group,
+    span,
+    length,
+    radius,
+    area,
+    strips,
+    polar,
+    coeffs,
+    F,
+    P,
+    JP,
+):
+    """Cycle means of rows [lo, hi) into F, P, JP (a body that does not rotate)."""
+    _means_rate_kernel(
+        lo,
+        hi,
+        pitch,
+        speed,
+        climb,
+        air_earth,
+        amp,
+        phase,
+        bias,
+        const,
+        phases,
+        half,
+        omega,
+        rho,
+        kind,
+        joint,
+        axis,
+        group,
+        span,
+        length,
+        radius,
+        area,
+        strips,
+        polar,
+        coeffs,
+        F,
+        P,
+        JP,
+        np.zeros((1, 3)),
+        False,
+    )

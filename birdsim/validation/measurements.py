@@ -68,10 +68,13 @@ COMPARE_KEYS: dict[str, str] = {
     "body_angle_slope": "sign",
     "stroke_plane_slope": "sign",
     "hover_feasible": "yes=1",
+    "roll_damping": "non-dimensional",
+    "fct_frequency_scaling": "yes=1",
 }
 #: Keys that need a speed (``speed_m_s``); trends need a window (``speed_to_m_s`` too).
 NEEDS_SPEED = {
     "power",
+    "roll_damping",
     "aoa_mid_downstroke",
     "aoa_mid_upstroke",
     "stroke_plane_angle",
