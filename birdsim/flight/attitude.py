@@ -49,7 +49,10 @@ from birdsim.mujoco.tail import ELEVATION_MAX, ROLL_MAX, TailControls
 #: one-wingbeat estimate and the inputs' smoothing delay the loop by about a wingbeat);
 #: 2 wingbeats settles, within-beat pitch rocking 1.2-1.6 degrees peak to peak.
 ATTITUDE_BEATS = 2.0
-#: The inputs: (name, kind, bound in rad).  kind: "diff" (right +u/2, left -u/2 on the
+#: The inputs: (name, kind, bound in rad).  The wing inputs and their signs are those of
+#: ``birdsim.physics.moments.CONTROL_INPUTS`` (the differential stroke plane rolls the
+#: bird most strongly, the differential flap and twist yaw it, the symmetric sweep
+#: pitches it), plus the tail's.  kind: "diff" (right +u/2, left -u/2 on the
 #: wing parameter), "sweep" (symmetric sweep offset of both shoulders), "tail".
 INPUTS = (
     ("flap_amp", "diff", 0.15),
@@ -57,11 +60,12 @@ INPUTS = (
     ("sweep", "sweep", 0.15),
     ("tail_elevation", "tail", ELEVATION_MAX),
     ("tail_roll", "tail", ROLL_MAX),
+    ("stroke_plane", "diff", 0.15),
 )
 #: The moment rows and the inputs of the two allocations: pitch by the symmetric inputs
 #: (sweep, tail elevation), roll and yaw by the differential ones.
 SYM_ROWS, SYM_INPUTS = [1], [2, 3]
-LAT_ROWS, LAT_INPUTS = [0, 2], [0, 1, 4]
+LAT_ROWS, LAT_INPUTS = [0, 2], [0, 1, 4, 5]
 #: Phases per wingbeat of a Jacobian measurement and the input step (rad).
 JAC_SAMPLES = 16
 JAC_STEP = 0.02
