@@ -238,12 +238,13 @@ class AttitudeLoop:
         lo, hi = [], []
         for name, kind, bound in INPUTS:
             if kind == "diff":
-                if name in kin.param_names:
+                if name in kin.param_names and name.endswith("_amp"):
+                    # an amplitude stays within its bounds on both wings (>= 0)
                     p = float(params[kin.param_names.index(name)])
                     r = max(0.0, 2.0 * min(p - spec[name].lower, spec[name].upper - p))
                     b = min(bound, r)
-                else:
-                    b = 0.0
+                else:  # an angle (the stroke plane): the table's bounds bound the search only
+                    b = bound if name in kin.param_names else 0.0
                 lo.append(-b)
                 hi.append(b)
             else:
