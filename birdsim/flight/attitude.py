@@ -144,7 +144,6 @@ def measured_jacobian(
 ) -> tuple[np.ndarray, np.ndarray]:
     """(M_0 (3,), J (3, k)): the wingbeat-mean moment (seed body axes) with every input
     at zero and its one-sided derivatives, measured in MuJoCo (see the module)."""
-    from birdsim.flight.wing_moments import wing_params  # noqa: F401  (same rule)
 
     m, cb, sched = fb.m, fb.cb, fb.schedule
     d = mujoco.MjData(m)
