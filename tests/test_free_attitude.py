@@ -161,3 +161,37 @@ def test_measured_jacobians_agree_with_the_analytic_core():
         np.testing.assert_allclose(ours[key], core.moment_du[:, j], atol=0.02 * scale)
     assert np.abs(core.moment_body).max() < 1e-12  # symmetric wings: no mean moment
     assert m0[1] < 0 and abs(m0[0]) < 1e-9 and abs(m0[2]) < 1e-9  # the tail's, nose down
+
+
+def test_dressed_tail_follows_the_controls():
+    """The render's tail geoms turn about the fan's hub by the controls' rotation
+    (tail_frame), to round-off; at zero controls they are where the model put them."""
+    import mujoco
+
+    from birdsim.mujoco.model import build_model
+    from birdsim.mujoco.tail import tail_frame
+    from birdsim.render.tail_pose import TailPoser
+
+    m = build_model("m3")
+    d = mujoco.MjData(m)
+    poser = TailPoser(m, 1.0)
+    assert len(poser.ids) == 3  # the visual fan, its band and the plain tail box
+    mujoco.mj_kinematics(m, d)
+    rest = {g: (d.geom_xpos[g].copy(), d.geom_xmat[g].reshape(3, 3).copy()) for g in poser.ids}
+    poser.pose(0.3, -0.2)
+    mujoco.mj_kinematics(m, d)
+    rot = tail_frame(TailControls(0.3, 1.0, -0.2))
+    torso = d.xmat[m.body("torso").id].reshape(3, 3)  # the torso at rest: identity here
+    for g in poser.ids:
+        x0, r0 = rest[g]
+        hub = d.xpos[m.body("torso").id] + torso @ poser.hub
+        np.testing.assert_allclose(
+            d.geom_xpos[g], hub + torso @ rot @ torso.T @ (x0 - hub), atol=1e-12
+        )
+        np.testing.assert_allclose(
+            d.geom_xmat[g].reshape(3, 3), torso @ rot @ torso.T @ r0, atol=1e-12
+        )
+    poser.pose(0.0, 0.0)
+    mujoco.mj_kinematics(m, d)
+    for g in poser.ids:
+        np.testing.assert_allclose(d.geom_xpos[g], rest[g][0], atol=1e-12)
