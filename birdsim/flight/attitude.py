@@ -44,11 +44,17 @@ from scipy.optimize import lsq_linear
 from birdsim.mujoco.model import pitch_quat
 from birdsim.mujoco.tail import ELEVATION_MAX, ROLL_MAX, TailControls
 
-#: Wingbeats per time constant of the attitude loop.  Measured (cruise, seed bird, outer
-#: loop open): 0.5, 1 and 1.5 wingbeats limit-cycle at a period of two wingbeats (the
-#: one-wingbeat estimate and the inputs' smoothing delay the loop by about a wingbeat);
-#: 2 wingbeats settles, within-beat pitch rocking 1.2-1.6 degrees peak to peak.
-ATTITUDE_BEATS = 2.0
+#: Wingbeats per time constant of the attitude loop.  Measured (seed bird): without the
+#: stroke plane's compensation 0.5, 1 and 1.5 wingbeats limit-cycled at a period of two
+#: wingbeats (the one-wingbeat estimate and the inputs' smoothing delay the loop by about
+#: a wingbeat); with it, over the four presets, 1 and 1.5 are worse than 2, and 3 is the
+#: best (cruise, hover within 3 degrees of pitch; take-off and landing the least
+#: saturated); 4 loses cruise's pitch again (docs/flight.md).
+ATTITUDE_BEATS = 3.0
+#: ... per axis (roll, pitch, yaw): the lateral axes keep 2 wingbeats, with which a side
+#: gust's roll and yaw are back within 2 degrees in 4 wingbeats (3: 5 and 3 degrees
+#: still after 8).
+AXIS_BEATS = (2.0, ATTITUDE_BEATS, 2.0)
 #: The inputs: (name, kind, bound in rad).  The wing inputs and their signs are those of
 #: ``birdsim.physics.moments.CONTROL_INPUTS`` (the differential stroke plane rolls the
 #: bird most strongly, the differential flap and twist yaw it, the symmetric sweep
@@ -127,15 +133,18 @@ def wingbeat_fit_matrix(
 
 @dataclass(frozen=True)
 class AttitudeGains:
-    omega_a: float
-    kp: float
-    kd: float
-    ki: float
+    """Per axis (roll, pitch, yaw) arrays, per unit inertia."""
+
+    omega_a: np.ndarray
+    kp: np.ndarray
+    kd: np.ndarray
+    ki: np.ndarray
 
 
-def attitude_gains(omega: float = 1.0, beats: float = ATTITUDE_BEATS) -> AttitudeGains:
-    """Triple pole at ``-omega / (2 pi beats)`` (per unit inertia)."""
-    wa = omega / (2.0 * math.pi * beats)
+def attitude_gains(omega: float = 1.0, beats: object = AXIS_BEATS) -> AttitudeGains:
+    """Triple pole at ``-omega / (2 pi beats)`` per axis (per unit inertia); ``beats`` a
+    number (every axis) or three (roll, pitch, yaw)."""
+    wa = omega / (2.0 * math.pi * np.broadcast_to(np.asarray(beats, dtype=float), (3,)))
     return AttitudeGains(wa, 3.0 * wa * wa, 3.0 * wa, wa**3)
 
 
@@ -216,7 +225,7 @@ def split_inputs(
 class AttitudeLoop:
     """The inner loop for one flight (see the module docstring)."""
 
-    def __init__(self, fb, *, enabled: bool = True, beats: float = ATTITUDE_BEATS):
+    def __init__(self, fb, *, enabled: bool = True, beats: object = AXIS_BEATS):
         self.fb = fb
         self.enabled = enabled
         self.gains = attitude_gains(fb.red.omega, beats)
@@ -314,6 +323,7 @@ class AttitudeLoop:
 
 __all__ = [
     "ATTITUDE_BEATS",
+    "AXIS_BEATS",
     "INPUTS",
     "AttitudeLoop",
     "attitude_gains",
