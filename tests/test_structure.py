@@ -29,8 +29,6 @@ OVER_LIMIT_ELSEWHERE = {
     "tables/lookup.py",
     "physics/kernel.py",
     "physics/kinematics.py",
-    "mujoco/model.py",
-    "flight/freeflight.py",
 }
 
 
