@@ -1,8 +1,10 @@
 """Free flight speed: wingbeats simulated per second (simulation alone, no rendering) for
 m4 and the demo model m3, at the default time step (period / 128) and at period / 512.
 
-Issue 9's target: >= 20 wingbeats per wall second for m4 on the 2-core machine.  Wall
-time depends on what else runs; process CPU time is printed beside it."""
+Issue 9's target: >= 20 wingbeats per wall second for m4 on the 2-core machine.  Issue
+22's: the six-degree-of-freedom free flight (attitude free, tail, attitude loop) at
+least 40 m4 wingbeats per CPU second, side by side with the posed (two-dimensional)
+loop.  Wall time depends on what else runs; process CPU time is printed beside it."""
 
 from __future__ import annotations
 
@@ -24,8 +26,8 @@ def main() -> None:
         ("m3", "tables/seed-m3.npz", 0.5),
     ):
         table = load_table(table_file)
-        for steps in (128, 512):
-            config = SimConfig(steps_per_beat=steps)
+        for steps, attitude in ((128, "posed"), (128, "free"), (512, "posed"), (512, "free")):
+            config = SimConfig(steps_per_beat=steps, attitude=attitude)
             path = FlightPath("cruise", BEATS, False, False, (PathKeyframe(0.0, 6.0, V=speed),))
             fly(
                 FlightPath("warm", 1.0, False, False, (PathKeyframe(0.0, 6.0, V=speed),)),
@@ -39,7 +41,7 @@ def main() -> None:
             wall, cpu = time.perf_counter() - w0, time.process_time() - c0
             # the flight includes two probe wingbeats for the trimmed start
             print(
-                f"{model} period/{steps}: {BEATS / wall:6.1f} wingbeats per wall second, {BEATS / cpu:6.1f} per CPU second ({BEATS:g} wingbeats + 2 probe)"
+                f"{model} period/{steps} {attitude:5s}: {BEATS / wall:6.1f} wingbeats per wall second, {BEATS / cpu:6.1f} per CPU second ({BEATS:g} wingbeats + 2 probe)"
             )
 
 

@@ -120,7 +120,7 @@ def test_gusts_parse_and_add_up():
     w = wind_at([g, Gust(2.5, 1.0, 1.0, 0.0)], 2.7, speed_scale=2.0)
     np.testing.assert_allclose(w, [0.5, 0.0, 0.135])
     assert not wind_at([g], 3.0).any()  # the window is [t0, t0 + duration)
-    for bad in ("1:2:3", "a:1:0:0", "1:1:nan:0", "-1:1:0:0", "1:2:3:4:5"):
+    for bad in ("1:2:3", "a:1:0:0", "1:1:nan:0", "-1:1:0:0", "1:2:3:4:5:6"):
         with pytest.raises(GustError):
             parse_gust(bad)
 

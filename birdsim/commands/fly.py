@@ -52,8 +52,14 @@ def register(sub: argparse._SubParsersAction) -> None:
         "--gust",
         action="append",
         default=[],
-        metavar="T0:DURATION:WX:WZ",
-        help="wind from T0 for DURATION wingbeats, WX forward and WZ up in the bird's velocity units (repeatable; they add up)",
+        metavar="T0:DURATION:WX:WY:WZ",
+        help="wind from T0 for DURATION wingbeats, WX forward, WY to the bird's left and WZ up in the bird's velocity units; the four-number form T0:DURATION:WX:WZ has no side wind (repeatable; they add up)",
+    )
+    p.add_argument(
+        "--attitude",
+        choices=("posed", "free"),
+        default="posed",
+        help="posed: the body's pitch prescribed (default); free: all six DOF free, held by the attitude loop (experimental: docs/flight.md)",
     )
     p.add_argument(
         "--open-loop",
@@ -95,6 +101,7 @@ def run(args: argparse.Namespace) -> int:
     from birdsim.flight.freeflight import DemandSchedule, fly, parse_gust
     from birdsim.flight.manoeuvre import MAX_BEATS, Manoeuvre
     from birdsim.flight.path_file import get_flight
+    from birdsim.flight.simulate import SimConfig
     from birdsim.physics.kinematics import get_model
 
     flight = get_flight(args.manoeuvre)
@@ -143,6 +150,7 @@ def run(args: argparse.Namespace) -> int:
             gusts=gusts,
             open_loop=args.open_loop,
             progress=progress,
+            config=SimConfig(attitude=args.attitude),
         )
     finally:
         bar.close()

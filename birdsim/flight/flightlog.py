@@ -7,14 +7,28 @@ t               time [the bird's time unit: s for the pigeon]
 x, z            torso origin, x forward, z UP [the bird's length unit]
 vx, vz          its velocity [length / time]
 x_ref, z_ref    the path [length]
-pitch           body pitch, nose up [rad]
+pitch           body pitch, nose up [rad] (Euler Z-Y-X, docs/conventions.md)
+roll, yaw       body roll (right wing down) and yaw (nose right) [rad]
+pitch_command   the table's (commanded) body pitch [rad]
+y, vy           torso origin's y (to the bird's LEFT, MuJoCo world) and its speed
+quat            torso orientation, MuJoCo (w, x, y, z)
+omega_body      body rates (p, q, r), seed body axes x fwd / y right / z down [1/time]
+moment_aero     aerodynamic moment about the centre of mass, seed body axes
+                (attitude posed: the hidden holding moment) [force x length]
+tail_elevation, tail controls [rad, fraction of tail_span, rad]
+tail_spread,
+tail_roll
+tail_force      tail's aerodynamic force, seed body axes [force]
+u_<input>       the attitude loop's inputs (birdsim.flight.attitude.INPUTS) [rad]
+attitude_saturated  the attitude loop's bounds bound and the moment fell short (bool)
 <param>         each wingbeat parameter by its table name [rad] (smoothed, flown)
 Fx_demand,      the table force asked for: ONE wing + body drag, seed axes
 Fz_demand       (Fz < 0 up), in TABLE units rho omega^2 s^3 c (not converted)
 V_air           airspeed of the torso [length / time]
 saturated       the demand was outside the table's reach (bool)
-pitch_moment    nose-up moment about the torso's y axis that holds the prescribed
-                pitch (what a tail would supply) [force x length]
+pitch_moment    nose-up moment: attitude free, what the wings, tail and body produce
+                about the centre of mass; posed, the hidden moment that holds the
+                prescribed pitch [force x length]
 power           mechanical power of both wings' joints [the bird's power unit]
 force_x,        whole-bird aerodynamic force + weight, world x / z [force]
 force_z
@@ -77,6 +91,24 @@ def log_arrays(result: FlightResult, manoeuvre: str = "") -> dict[str, np.ndarra
         "force_z": a["force_z"] * sc.force,
         "qpos": a["qpos"],
         "qvel": a["qvel"],
+        # the free attitude (issue 22): lengths, speeds, moments and forces converted
+        "y": a["y"] * sc.length,
+        "vy": a["vy"] * sc.speed,
+        "climb_demand": a["climb_demand"] * sc.speed,
+        "roll": a["roll"],
+        "yaw": a["yaw"],
+        "pitch_command": a["pitch_command"],
+        "quat": a["quat"],
+        "omega_body": a["omega_body"] / sc.time,
+        "moment_aero": a["moment_aero"] * sc.force * sc.length,
+        "tail_elevation": a["tail_elevation"],
+        "tail_spread": a["tail_spread"],
+        "tail_roll": a["tail_roll"],
+        "tail_force": a["tail_force"] * sc.force,
+        "force_y": a["force_y"] * sc.force,
+        "attitude_saturated": a["attitude_saturated"].astype(bool),
+        **{k: a[k] for k in a if k.startswith("u_")},
+        "attitude": np.array(result.meta.get("attitude", "posed")),
         "mass": np.array(result.bird.mass),
         "gravity": np.array(result.bird.gravity),
         "model": np.array(result.model),

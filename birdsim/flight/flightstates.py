@@ -98,6 +98,21 @@ def flight_states(log: dict[str, Any], options: Any, *, title: str = "") -> Any:
         np.clip(np.searchsorted(t_log, t, side="right") - 1, 0, t_log.size - 1)
     ]
     params = {n: resample(t_log, np.asarray(log[n], dtype=float), t) for n in names if n in log}
+    free = str(log.get("attitude", "posed")) == "free"
+    tail = None
+    if free:  # the free attitude (issue 22): Euler angles, tail, attitude saturation
+        euler = {
+            k: resample(t_log, np.asarray(log[k], dtype=float), t) for k in ("roll", "pitch", "yaw")
+        }
+        tail = np.column_stack(
+            [
+                resample(t_log, np.asarray(log[k], dtype=float), t)
+                for k in ("tail_elevation", "tail_spread", "tail_roll")
+            ]
+        )
+        att_sat = np.asarray(log["attitude_saturated"], dtype=bool)[
+            np.clip(np.searchsorted(t_log, t, side="right") - 1, 0, t_log.size - 1)
+        ]
     unit_l = "semispans" if sc.length == 1.0 else "m"
     unit_t = "s" if sc.time != 1.0 else "time units"
     manoeuvre = str(log.get("manoeuvre", "")) or title
@@ -122,7 +137,21 @@ def flight_states(log: dict[str, Any], options: Any, *, title: str = "") -> Any:
             for chunk in (items[:half], items[half:]):
                 if chunk:
                     lines.append(("   ".join(f"{n} {v[k]:.2f}" for n, v in chunk), WHITE))
-        lines.append((f"tail moment {sampled['pitch_moment'][k]:+.3g}", WHITE))
+        if free:
+            deg = {n: np.degrees(v[k]) for n, v in euler.items()}
+            lines.append(
+                (
+                    f"attitude free: roll {deg['roll']:+.1f}  pitch {deg['pitch']:+.1f}  yaw {deg['yaw']:+.1f} deg   "
+                    f"tail {np.degrees(tail[k, 0]):+.0f} deg   pitch moment {sampled['pitch_moment'][k]:+.3g}",
+                    WHITE,
+                )
+            )
+            if att_sat[k]:
+                lines.append(
+                    ("attitude saturated: the wings and tail cannot deliver the moment", AMBER)
+                )
+        else:
+            lines.append((f"tail moment {sampled['pitch_moment'][k]:+.3g}", WHITE))
         if sat[k]:
             lines.append(("saturated: the demand is beyond the table's reach", AMBER))
         return lines
@@ -157,6 +186,7 @@ def flight_states(log: dict[str, Any], options: Any, *, title: str = "") -> Any:
         title=title or manoeuvre,
         demanded_force=demanded,
         brief=brief,
+        tail=tail,
     )
 
 

@@ -17,8 +17,12 @@ from typing import Any
 import numpy as np
 
 from birdsim.errors import BirdsimError, limits_text, magnitude_ok
+from birdsim.flight.attitude import FIT_BEATS, AttitudeLoop
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
-from birdsim.flight.simulate import FreeBird, SimConfig
+from birdsim.flight.flight_arrays import attitude_estimate, flight_arrays
+from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
+from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
+from birdsim.flight.trim import sample_reference, trim_start
 from birdsim.flight.wingbeat import WingbeatSchedule
 from birdsim.physics.bird import Bird
 from birdsim.physics.units import reduced_bird, scales
@@ -27,69 +31,14 @@ TWO_PI = 2.0 * math.pi
 #: The integral term's acceleration is bounded by this fraction of gravity (the
 #: table-vs-flight mismatch it trims is ~4 % of the weight in cruise).
 INTEGRAL_LIMIT = 0.1
+#: Time constant (wingbeats) of the body's pitch command (attitude free, with a
+#: stroke plane): the table's pitch smoothed; the stroke plane turns by the difference.
+PITCH_COMMAND_BEATS = 2.0
+#: How far (rad) the compensated stroke plane may leave the table's bounds (those bound
+#: the optimiser's search, not the shoulder).
+SP_MARGIN = 0.8
 #: The integral only runs while the estimated position error is below this (semispans).
 INTEGRAL_BAND = 0.1
-
-
-class GustError(BirdsimError):
-    """A malformed --gust."""
-
-
-@dataclass(frozen=True)
-class Gust:
-    """Wind ``(wx, wz)`` (the bird's velocity units; x forward, z up) from ``t0`` for
-    ``duration`` wingbeats after the start."""
-
-    t0: float
-    duration: float
-    wx: float
-    wz: float
-
-    def __post_init__(self) -> None:
-        for name in ("t0", "duration", "wx", "wz"):
-            v = getattr(self, name)
-            if not (isinstance(v, (int, float)) and math.isfinite(v) and magnitude_ok(v)):
-                raise GustError(
-                    f"gust {name}={v!r} is invalid; allowed: a finite number, {limits_text()}"
-                )
-        if self.t0 < 0 or self.duration < 0:
-            raise GustError(
-                f"gust t0={self.t0:g}, duration={self.duration:g}; allowed: times >= 0 (wingbeats)"
-            )
-
-
-def parse_gust(text: str) -> Gust:
-    """``"T0:DURATION:WX:WZ"`` -> Gust; one clear line otherwise."""
-    parts = str(text).split(":")
-    if len(parts) != 4:
-        raise GustError(
-            f"--gust {text!r} has {len(parts)} field(s); allowed: T0:DURATION:WX:WZ (four numbers: wingbeats, wingbeats, velocity x, velocity z)"
-        )
-    try:
-        vals = [float(p) for p in parts]
-    except ValueError:
-        raise GustError(
-            f"--gust {text!r} is not four numbers; allowed: T0:DURATION:WX:WZ, e.g. 4:1:0:0.27"
-        ) from None
-    if not all(math.isfinite(v) for v in vals):
-        raise GustError(
-            f"--gust {text!r} is not finite; allowed: T0:DURATION:WX:WZ, four finite numbers"
-        )
-    try:
-        return Gust(*vals)
-    except GustError as exc:
-        raise GustError(f"--gust {text!r}: {exc}") from None
-
-
-def wind_at(gusts: Sequence[Gust], t_beats: float, speed_scale: float = 1.0) -> np.ndarray:
-    """The summed gust wind at ``t_beats`` (world x, y, z; reduced: divided by
-    ``speed_scale``)."""
-    w = np.zeros(3)
-    for g in gusts:
-        if g.t0 <= t_beats < g.t0 + g.duration:
-            w[0] += g.wx / speed_scale
-            w[2] += g.wz / speed_scale
-    return w
 
 
 @dataclass(frozen=True)
@@ -168,6 +117,8 @@ def fly(
     gravity: bool = True,
     progress: Any = None,
     trim: bool = True,
+    attitude_loop: bool = True,
+    stroke_compensation: bool = True,
 ) -> FlightResult:
     """Fly ``reference`` (a FlightPath in reduced units, or a DemandSchedule) with
     ``table`` for ``beats`` wingbeats (default: the reference's duration).
@@ -177,7 +128,7 @@ def fly(
         gusts: winds in the bird's velocity units, times in wingbeats.
         open_loop: feed-forward only (no feedback).
         progress: optional callable(beats_done) for a progress bar.
-        trim: start on the periodic orbit of the first wingbeat (see :func:`_trim`).
+        trim: start on the periodic orbit of the first wingbeat (see :func:`birdsim.flight.trim.trim_start`).
     Returns:
         FlightResult with arrays t, x, y, z, vx, vz, x_ref, z_ref, pitch, <params>,
         Fx_demand, Fz_demand, climb_demand (the table's climb; 0 for a level table),
@@ -221,34 +172,22 @@ def fly(
     if "pitch" in names:
         cmd = command(0.0, None, np.zeros(2), float(cmd.params[names.index("pitch")]))
     window = ErrorWindow(config.log_per_beat, TWO_PI)
+    per_sample = ("Fx_demand", "Fz_demand", "climb_demand", "V_air", "saturated", "x_ref", "z_ref")
     rows: dict[str, list] = {
         k: []
-        for k in (
-            "Fx_demand",
-            "Fz_demand",
-            "climb_demand",
-            "V_air",
-            "saturated",
-            "x_ref",
-            "z_ref",
-            "params",
-            "pitch",
-        )
+        for k in (*per_sample, "params", "pitch_command", "tail", "inputs", "attitude_saturated")
     }
     record: list = []
+    free = config.attitude == "free"
     with FreeBird(model, bird, cmd.params, config=config, aero=aero, gravity=gravity) as fb:
         h = fb.h
-        times = np.arange(steps_ctl) * h
-        pres = fb.schedule.prescribe(
-            times[:1], cmd.params[None, :], np.zeros((1, len(names))), np.zeros((1, len(names)))
-        )
         pos0, vel0 = np.array([ref0.x, 0.0, ref0.z]), np.array([ref0.vx, 0.0, ref0.vz])
         integral = np.zeros(2)
         if trim:
             if not ctl.open_loop and gains.ki > 0:
                 # the wingbeat's real mean force differs a little from the table's (the body
                 # bobs, the wings weigh): start the integral where it cancels that difference
-                *_, bias = _trim(fb, reference, cmd.params, pos0, vel0, config, every)
+                *_, bias = trim_start(fb, reference, cmd.params, pos0, vel0, config, every)
                 limit = INTEGRAL_LIMIT * red.gravity / gains.ki if red.gravity > 0 else np.inf
                 integral = np.clip(bias / gains.ki, -limit, limit)
                 cmd = command(
@@ -260,16 +199,31 @@ def fly(
                 fb.schedule = WingbeatSchedule(
                     fb.m, fb.kin, fb.red, cmd.params, smoothing=config.smoothing_beats * TWO_PI
                 )
-            pos0, vel0, history, _ = _trim(fb, reference, cmd.params, pos0, vel0, config, every)
+            pos0, vel0, history, _ = trim_start(
+                fb, reference, cmd.params, pos0, vel0, config, every
+            )
             for e_pos, e_vel, vx in history:  # the wingbeat before the start, on the orbit
                 window.add(e_pos, e_vel, vx)
-        fb.start(pos0, vel0, pres)
+        # the start's prescription from the schedule that will be flown (after the trim)
+        zeros = np.zeros((1, len(names)))
+        pres = fb.schedule.prescribe(np.zeros(1), cmd.params[None, :], zeros, zeros)
+        omega0, d_pitch0 = getattr(fb, "start_rotation", (None, 0.0))
+        fb.start(pos0, vel0, pres, pitch=float(pres.pitch[0]) - d_pitch0, omega_body=omega0)
+        att = AttitudeLoop(fb, enabled=free and attitude_loop)
+        compensate = free and stroke_compensation and "stroke_plane" in names
+        pitch_ref: float | None = None
+        tau_ref = PITCH_COMMAND_BEATS * TWO_PI if compensate else 1e-9
+        sp_index = names.index("stroke_plane") if compensate else -1
+        sp_bounds = (
+            (fb.kin.params[sp_index].lower - SP_MARGIN, fb.kin.params[sp_index].upper + SP_MARGIN)
+            if compensate
+            else None
+        )
+        att_window: list[tuple[np.ndarray, np.ndarray]] = []
         dt_ctl = steps_ctl * h
         for k in range(n_ctl):
             t = fb.time
-            pitch = (
-                float(fb.schedule.filter.output[names.index("pitch")]) if "pitch" in names else 0.0
-            )
+            pitch = float(fb.schedule.output[names.index("pitch")]) if "pitch" in names else 0.0
             est = window.estimate() if window.ep else None
             cmd = command(t, est, integral, pitch)
             if (
@@ -284,9 +238,43 @@ def fly(
                 # mean force and the flown one
                 limit = INTEGRAL_LIMIT * red.gravity / gains.ki if red.gravity > 0 else np.inf
                 integral = np.clip(integral + dt_ctl * est[0], -limit, limit)
-            step_times = t + np.arange(steps_ctl) * h
-            pres = fb.schedule.advance(cmd.params, step_times, t, dt_ctl)
             wind = wind_at(gusts, t / TWO_PI, speed)
+            left = offset = None
+            if free:
+                v_est = float(est[2]) if est is not None else float(ref0.vx)
+                if pitch_ref is None:
+                    pitch_ref = pitch
+                # the body's pitch command: the table's pitch, smoothed over
+                # PITCH_COMMAND_BEATS (the stroke plane takes the difference)
+                pitch_ref += (pitch - pitch_ref) * (1.0 - math.exp(-dt_ctl / tau_ref))
+                err, rates = attitude_estimate(
+                    att_window, fb.d, config.log_per_beat, TWO_PI, pitch_ref
+                )
+                body_pitch = pitch_ref - float(err[1])  # the wingbeat-mean pitch
+                if compensate:
+                    # the stroke plane turns by the difference between the table's pitch
+                    # and the body's, so the wings beat in the world as the table's
+                    # wingbeat at the table's pitch (m3/m4: stroke plane and body pitch
+                    # compose about one axis), within the stroke plane's bounds
+                    offset = np.zeros(len(names))
+                    sp = cmd.params[sp_index] + pitch - body_pitch
+                    offset[sp_index] = float(np.clip(sp, *sp_bounds)) - cmd.params[sp_index]
+                right, left, sweep, tail = att.update(
+                    cmd.params,
+                    pitch_ref,
+                    v_est - float(wind[0]),
+                    err,
+                    rates,
+                    dt_ctl,
+                    jac_params=None if offset is None else cmd.params + offset,
+                    jac_pitch=body_pitch,
+                )
+                fb.schedule.sweep_target = sweep
+                fb.cb.tail_controls = tail
+            else:
+                right = cmd.params
+            step_times = t + np.arange(steps_ctl) * h
+            pres = fb.schedule.advance(right, step_times, t, dt_ctl, left, offset)
             start = len(record)
             fb.step_many(pres, wind, record, every)
             new = record[start:]
@@ -298,9 +286,13 @@ def fly(
                     np.array([refs["vx"][j] - qvel[0], refs["vz"][j] - qvel[2]]),
                     float(qvel[0]),
                 )
-                rows["V_air"].append(float(np.hypot(qvel[0] - wind[0], qvel[2] - wind[2])))
+                att_window.append((qpos[3:7], C_SEED * qvel[3:6]))
+                rows["V_air"].append(float(np.linalg.norm(qvel[:3] - wind)))
                 rows["params"].append(pres.params[j * every])
-                rows["pitch"].append(pres.pitch[j * every])
+                rows["pitch_command"].append(
+                    pres.pitch[j * every] if pitch_ref is None else pitch_ref
+                )
+            del att_window[: max(0, len(att_window) - FIT_BEATS * config.log_per_beat)]
             n_new = len(new)
             rows["x_ref"].extend(refs["x"].tolist())
             rows["z_ref"].extend(refs["z"].tolist())
@@ -308,106 +300,25 @@ def fly(
             rows["Fz_demand"].extend([cmd.Fz] * n_new)
             rows["climb_demand"].extend([cmd.climb] * n_new)
             rows["saturated"].extend([cmd.saturated] * n_new)
+            tc = fb.cb.tail_controls
+            rows["tail"].extend([(tc.elevation, tc.spread, tc.roll)] * n_new)
+            rows["inputs"].extend([att.u.copy()] * n_new)
+            rows["attitude_saturated"].extend([att.saturated] * n_new)
             if progress is not None:
                 progress((k + 1) / per_beat_ctl)
         projection = fb.projection_max
+        root_applied = fb.root_applied_max
     keep = sum(
         1 for r in record if r[0] <= beats * TWO_PI + 1e-9
     )  # whole control intervals were flown
     record = record[:keep]
     rows = {k: v[:keep] for k, v in rows.items()}
-    t = np.array([r[0] for r in record])
-    qpos = np.array([r[1] for r in record])
-    qvel = np.array([r[2] for r in record])
-    force = np.array([r[4] for r in record])
-    params = np.array(rows.pop("params"))
-    arrays = {
-        "t": t,
-        "x": qpos[:, 0],
-        "y": qpos[:, 1],
-        "z": qpos[:, 2],
-        "vx": qvel[:, 0],
-        "vz": qvel[:, 2],
-        **{k: np.asarray(v, dtype=bool if k == "saturated" else float) for k, v in rows.items()},
-        **{n: params[:, i] for i, n in enumerate(names)},
-        "pitch_moment": np.array([r[3] for r in record]),
-        "power": np.array([r[5] for r in record]),
-        "force_x": force[:, 0],
-        "force_z": force[:, 2],
-        "qpos": qpos,
-        "qvel": qvel,
-    }
-    return FlightResult(arrays, bird, model, names, gains, open_loop or demands_only, projection)
-
-
-def sample_reference(reference: Any, t: np.ndarray) -> dict[str, np.ndarray]:
-    """x, z, vx, vz, ax, az of ``reference`` at reduced times ``t`` (vectorised when the
-    reference has ``sample``, as FlightPath does)."""
-    t = np.asarray(t, dtype=float)
-    fn = getattr(reference, "sample", None)
-    if fn is not None:
-        s = fn(t)
-        return {
-            k: np.broadcast_to(np.asarray(s[k], dtype=float), t.shape)
-            for k in ("x", "z", "vx", "vz", "ax", "az")
-        }
-    states = [reference.state(float(ti)) for ti in t]
-    return {
-        k: np.array([getattr(st, k) for st in states], dtype=float)
-        for k in ("x", "z", "vx", "vz", "ax", "az")
-    }
-
-
-def _trim(
-    fb: FreeBird,
-    reference: Any,
-    params: np.ndarray,
-    pos0: np.ndarray,
-    vel0: np.ndarray,
-    config: SimConfig,
-    every: int,
-) -> tuple[np.ndarray, np.ndarray, list, np.ndarray]:
-    """The start state whose first wingbeat (at the starting wingbeat, no feedback)
-    has the reference's mean velocity and mean position.
-
-    A wingbeat's force oscillates; started at a phase where it is not at its mean, the
-    body would carry a velocity offset of the oscillation's integral for ever.  One probe
-    wingbeat measures the mean velocity and position errors; the start is moved by them
-    (exact for the oscillating part, which does not depend on the start state to first
-    order).  The filter is in steady state, so the probe leaves the schedule unchanged.
-    Returns the start position and velocity and the error samples (x, z) of the
-    corrected probe, the wingbeat "before" the start for the controller's window, and
-    the wingbeat-mean acceleration the reference asks for minus the one flown (x, z).
-    """
-    n = config.steps_per_beat
-    h = fb.h
-    times = np.arange(n) * h
-    pres = fb.schedule.advance(params, times, 0.0, n * h)
-    fb.start(pos0, vel0, pres)
-    rec: list = []
-    p_start = fb.P.copy()
-    fb.step_many(pres, np.zeros(3), rec, every)
-    a_flown = (fb.P - p_start) / (fb.total_mass * n * h)
-    t = np.array([r[0] for r in rec])
-    pos = np.array([r[1][:3] for r in rec])
-    vel = np.array([r[2][:3] for r in rec])
-    ref = sample_reference(reference, t)
-    zero = np.zeros_like(t)
-    ref_pos = np.stack([ref["x"], zero, ref["z"]], axis=1)
-    ref_vel = np.stack([ref["vx"], zero, ref["vz"]], axis=1)
-    dv = (vel - ref_vel).mean(axis=0)
-    # with the start velocity lowered by dv, the positions lose dv * t
-    dx = (pos - ref_pos - dv[None, :] * t[:, None]).mean(axis=0)
-    dv[1] = dx[1] = 0.0
-    fb.time = 0.0
-    fb.projection_max = 0.0
-    e_pos = ref_pos - (pos - dx[None, :] - dv[None, :] * t[:, None])
-    e_vel = ref_vel - (vel - dv[None, :])
-    history = [
-        (e_pos[k, [0, 2]], e_vel[k, [0, 2]], float(vel[k, 0] - dv[0])) for k in range(len(t))
-    ]
-    a_ref = np.array([ref["ax"].mean(), ref["az"].mean()])
-    return pos0 - dx, vel0 - dv, history, a_ref - a_flown[[0, 2]]
+    arrays = flight_arrays(record, rows, names)
+    result = FlightResult(arrays, bird, model, names, gains, open_loop or demands_only, projection)
+    result.meta["root_applied_max"] = root_applied
+    result.meta["attitude"] = config.attitude
+    result.meta["attitude_loop"] = bool(free and attitude_loop)
+    return result
 
 
 def _identity_if(flag: bool) -> Any:

@@ -1,30 +1,34 @@
-"""Free flight in MuJoCo: the torso's translation is free, everything else prescribed.
+"""Free flight in MuJoCo: the torso is a free body, the wings are prescribed relative to it.
 
 The model is the usual MJCF (:mod:`birdsim.mujoco.model`) built for the REDUCED bird
 (:func:`birdsim.physics.units.reduced_bird`: rho = omega = semispan = chord = 1, mass =
 the mass ratio, gravity in semispan omega^2), so one table and one MJCF serve every
 bird with the same reduced bird.  Axes: MuJoCo world, x forward, y left, z UP.
 
+Partition (:class:`Partition`, from joint names): the FREE coordinates F are the root
+joint's six DOF (attitude ``"free"``) -- or only its translation (attitude ``"posed"``,
+the former two-dimensional mode and still the default: the torso orientation is then
+prescribed at the table's pitch and held by a hidden root torque); the
+PRESCRIBED coordinates P are every wing joint (and, posed, the root's rotation).
+
 Per step (semi-implicit Euler, ``mj_step1`` / ``mj_step2``, one callback call per step):
 
-1. the prescribed coordinates (torso orientation: pitch from the table, roll = yaw = 0;
-   every wing joint) are set to the exact prescription at this instant;
+1. the prescribed coordinates are set to the exact prescription at this instant (the
+   wing joints are relative to the torso, so the wings follow the body);
 2. ``mj_step1``: kinematics, mass matrix M, bias forces (Coriolis, gravity) and the
-   passive forces, i.e. the blade-element aerodynamics of :mod:`birdsim.mujoco.callback`;
-3. momentum projection: the whole bird's linear momentum P and centre of mass X are
-   integrated alongside from the external forces MuJoCo computed (the translational rows
-   of ``qfrc_passive`` = the total aerodynamic force, plus the weight); the torso's
-   translation is shifted so that the bird's momentum and centre of mass are exactly
-   P and X.  Semi-implicit Euler with a configuration-dependent coupling between the
-   flapping wings and the torso does not conserve momentum exactly (an O(h^2) error per
-   unit time, ~1e-6 semispan of drift per wingbeat at period/512); the projection
-   removes it, and its size is logged (``projection_max``);
-4. partitioned dynamics: with the prescribed accelerations a_P, the free translational
-   accelerations are ``a_F = M_FF^-1 (f_F - M_FP a_P)`` (f = passive - bias); the
-   generalised forces that realise a_P are ``tau_P = M_PF a_F + M_PP a_P - f_P``
-   (computed torque), written to ``qfrc_applied``; ``mj_step2`` integrates.  The root's
-   rotational entries of tau_P are the moment that holds the prescribed pitch: what a
-   tail would have to supply.
+   passive forces, i.e. the aerodynamics of :mod:`birdsim.mujoco.callback`;
+3. momentum projection (optional, :attr:`SimConfig.momentum_projection`): the whole
+   bird's linear momentum P and centre of mass X -- and, with the attitude free, its
+   angular momentum L about the centre of mass -- are integrated alongside from the
+   external forces MuJoCo computed (aero + weight; aero moment about the centre of
+   mass); the root's velocity is corrected by ``M_FF^-1 dp`` so that the bird's momenta
+   are exactly P and L, and its translation so that the centre of mass is X.  Its size
+   is logged (``projection_max``);
+4. partitioned dynamics: ``a_F = M_FF^-1 (f_F - M_FP a_P)`` (f = passive - bias),
+   ``tau_P = M_PF a_F + M_PP a_P - f_P`` (computed torque: the bird's muscles) into
+   ``qfrc_applied[P]``; ``qfrc_applied[F] = 0`` exactly with the attitude free: the
+   body feels only gravity, the air and the reaction of its flapping wings.  ``mj_step2``
+   integrates (the root's quaternion by MuJoCo; never written during flight).
 
 Wind: ``m.opt.wind`` = the gust only (the body really moves through still air); the
 callback uses the velocity relative to it.  Contacts are off in free flight (the wings
@@ -42,7 +46,7 @@ import numpy as np
 from birdsim.errors import BirdsimError
 from birdsim.flight.wingbeat import Prescription, WingbeatSchedule
 from birdsim.mujoco.callback import AeroCallback
-from birdsim.mujoco.model import build_model
+from birdsim.mujoco.model import build_model, pitch_quat
 from birdsim.physics.bird import Bird
 from birdsim.physics.kinematics import get_model
 from birdsim.physics.units import reduced_bird
@@ -64,8 +68,14 @@ class SimConfig:
     #: external impulse (aero + weight); False leaves MuJoCo's integration alone (tests
     #: measure its own O(h^2) momentum error with it off)
     momentum_projection: bool = True
+    #: "free": the root's six DOF are integrated by MuJoCo (no root force or torque);
+    #: "posed": the torso's orientation prescribed at the table pitch (the default until
+    #: the attitude loop holds the presets: docs/flight.md, "Six degrees of freedom")
+    attitude: str = "posed"
 
     def __post_init__(self) -> None:
+        if self.attitude not in ("free", "posed"):
+            raise BirdsimError(f"attitude={self.attitude!r}; allowed: free, posed")
         for name in ("steps_per_beat", "control_per_beat", "log_per_beat"):
             v = getattr(self, name)
             if not (isinstance(v, int) and v >= 1):
@@ -81,11 +91,67 @@ class SimConfig:
             )
 
 
+@dataclass(frozen=True)
+class Partition:
+    """Free and prescribed DOF of the bird, found by joint names.
+
+    ``free_dofs``: the root's DOF the physics integrates (6 free, 3 posed);
+    ``pres_dofs`` / ``pres_qpos``: the prescribed DOF and their qpos addresses;
+    ``wing_dofs``: the wings' joints (their power is the wings' mechanical power)."""
+
+    free_dofs: np.ndarray
+    pres_dofs: np.ndarray
+    pres_qpos: np.ndarray
+    wing_dofs: np.ndarray
+    free_rotation: bool
+
+
+def partition(m: mujoco.MjModel, attitude: str) -> Partition:
+    """The partition of ``m``'s DOF for ``attitude`` ("free" or "posed")."""
+    root = m.joint("root")
+    if int(root.type[0]) != int(mujoco.mjtJoint.mjJNT_FREE):
+        raise BirdsimError(
+            "joint 'root' is not free; allowed: a model built by birdsim.mujoco.model"
+        )
+    r_dof, r_q = int(m.jnt_dofadr[root.id]), int(m.jnt_qposadr[root.id])
+    wing_dofs, wing_q = [], []
+    for j in range(m.njnt):
+        if j == root.id:
+            continue
+        name = m.joint(j).name
+        if not name.startswith(("r_", "l_")):
+            raise BirdsimError(f"joint {name!r} is neither the root nor a wing joint")
+        nv = {0: 6, 1: 3, 2: 1, 3: 1}[int(m.jnt_type[j])]
+        nq = {0: 7, 1: 4, 2: 1, 3: 1}[int(m.jnt_type[j])]
+        wing_dofs += range(int(m.jnt_dofadr[j]), int(m.jnt_dofadr[j]) + nv)
+        wing_q += range(int(m.jnt_qposadr[j]), int(m.jnt_qposadr[j]) + nq)
+    free = attitude == "free"
+    n_free = 6 if free else 3
+    free_dofs = np.arange(r_dof, r_dof + n_free)
+    pres_dofs = list(range(r_dof + n_free, r_dof + 6)) + wing_dofs
+    pres_q = ([] if free else list(range(r_q + 3, r_q + 7))) + wing_q
+    return Partition(free_dofs, np.array(pres_dofs), np.array(pres_q), np.array(wing_dofs), free)
+
+
+def _as_slice(idx: np.ndarray) -> slice | np.ndarray:
+    """A contiguous index array as a slice (numpy views instead of copies)."""
+    if len(idx) and np.array_equal(idx, np.arange(idx[0], idx[0] + len(idx))):
+        return slice(int(idx[0]), int(idx[0]) + len(idx))
+    return idx
+
+
+def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    return np.array(
+        [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+    )
+
+
 class FreeBird:
     """The MuJoCo bird in free flight (reduced units) and its stepping.
 
     Use ``with FreeBird(...) as fb:`` (installs the aero callback; the callback is
     process-wide).  ``aero=False`` / ``gravity=False`` switch either off (tests).
+    ``fb.cb.tail`` holds the tail's controls (:class:`birdsim.mujoco.tail.TailControls`).
     """
 
     def __init__(
@@ -112,6 +178,7 @@ class FreeBird:
         self.h = float(m.opt.timestep)
         self.torso = m.body("torso").id
         self.total_mass = float(m.body_subtreemass[self.torso])
+        self.part = partition(m, config.attitude)
         mujoco.mj_forward(m, self.d)
         check = np.zeros((m.nv, m.nv))
         mujoco.mj_fullM(m, self.d, check)
@@ -126,12 +193,16 @@ class FreeBird:
             initial_params,
             smoothing=config.smoothing_beats * self.red.period,
         )
-        self.cb = AeroCallback(m, self.kin.name, self.red)
+        self.cb = AeroCallback(m, self.kin.name, self.red, tail=config.attitude == "free")
         self.cb.enabled = aero
         self.time = 0.0
         self.P = np.zeros(3)  # whole-bird linear momentum (world)
         self.X = np.zeros(3)  # whole-bird centre of mass (world)
+        self.L = np.zeros(3)  # whole-bird angular momentum about the centre of mass (world)
         self.projection_max = 0.0
+        #: largest |entry| of the root's applied generalised force and of any body's
+        #: applied Cartesian wrench over every step so far (0.0 exactly, attitude free)
+        self.root_applied_max = 0.0
         self._M = np.zeros((m.nv, m.nv))
         self._installed = False
 
@@ -152,22 +223,56 @@ class FreeBird:
 
     # ---- state -----------------------------------------------------------------------
 
-    def start(self, position: np.ndarray, velocity: np.ndarray, prescription: Prescription) -> None:
+    def start(
+        self,
+        position: np.ndarray,
+        velocity: np.ndarray,
+        prescription: Prescription,
+        *,
+        pitch: float | None = None,
+        omega_body: np.ndarray | None = None,
+    ) -> None:
         """Place the torso origin at ``position`` (world x, y, z) with the prescribed
         pose of ``prescription``'s first instant, and give the whole bird the linear
-        momentum of ``velocity`` (its centre of mass moves at ``velocity``)."""
-        d, m = self.d, self.m
+        momentum of ``velocity`` (its centre of mass moves at ``velocity``).
+
+        Attitude free: the torso starts at ``pitch`` (default: the prescription's
+        table pitch), level in roll and yaw, and the whole bird's angular momentum about
+        its centre of mass is that of the body turning at ``omega_body`` (MuJoCo body
+        axes; default 0) with the wings moving as prescribed."""
+        d, m, part = self.d, self.m, self.part
         d.qpos[:] = prescription.qpos[0]
         d.qvel[:] = prescription.qvel[0]
+        if part.free_rotation:
+            th = float(prescription.pitch[0] if pitch is None else pitch)
+            d.qpos[3:7] = pitch_quat(th)
+            d.qvel[3:6] = 0.0
         d.qpos[:3] = position
         d.qvel[:3] = 0.0
         mujoco.mj_fwdPosition(m, d)
         mujoco.mj_fullM(m, d, self._M)
-        p_wings = self._M[:3] @ d.qvel
-        d.qvel[:3] = np.asarray(velocity, dtype=float) - p_wings / self.total_mass
-        self.P = self.total_mass * np.asarray(velocity, dtype=float)
+        f = part.free_dofs
+        # the root's velocity that gives the whole bird the wanted momenta
+        target = np.zeros(len(f))
+        target[:3] = self.total_mass * np.asarray(velocity, dtype=float)
+        if part.free_rotation and omega_body is not None:
+            target[3:] = self._M[3:6, 3:6] @ np.asarray(omega_body, dtype=float)
+        p_wings = self._M[f][:, part.pres_dofs] @ d.qvel[part.pres_dofs]
+        d.qvel[f] = np.linalg.solve(self._M[np.ix_(f, f)], target - p_wings)
+        mujoco.mj_fwdPosition(m, d)
+        mujoco.mj_fullM(m, d, self._M)
+        self.P = self._M[:3] @ d.qvel
         self.X = d.subtree_com[self.torso].copy()
+        self.L = self._angmom_com(self._M[3:6] @ d.qvel, self.P)
         mujoco.mj_forward(m, d)
+
+    def _angmom_com(self, p_rot: np.ndarray, p_lin: np.ndarray) -> np.ndarray:
+        """Angular momentum about the whole bird's centre of mass (world) from the root's
+        rotational generalised momentum (about the torso origin, torso axes)."""
+        d = self.d
+        R = d.xmat[self.torso].reshape(3, 3)
+        arm = d.subtree_com[self.torso] - d.xpos[self.torso]
+        return R @ p_rot - _cross(arm, p_lin)
 
     def step_many(
         self, pres: Prescription, wind: np.ndarray, record: list | None = None, every: int = 1
@@ -175,8 +280,10 @@ class FreeBird:
         """Advance ``len(pres.qpos)`` steps following ``pres`` (its row k is the
         prescription at ``self.time + k h``) with the wind ``wind`` (world, reduced
         units; held over these steps).  Every ``every``-th step (before stepping) a
-        sample is appended to ``record``: (time, qpos, qvel, pitch moment nose up,
-        external force = aero + weight (world), mechanical power of the wing joints)."""
+        sample is appended to ``record``: (time, qpos, qvel, moment (3, seed body axes
+        x fwd / y right / z down, about the centre of mass: the aerodynamic moment with
+        the attitude free, the hidden holding moment when posed), external force = aero
+        + weight (world), mechanical power of the wing joints)."""
         m, d, h = self.m, self.d, self.h
         m.opt.wind[:] = wind
         M = self._M
@@ -190,39 +297,72 @@ class FreeBird:
             d.qfrc_bias,
             d.subtree_com,
         )
+        part = self.part
+        F, P, Pq, W = (
+            _as_slice(a) for a in (part.free_dofs, part.pres_dofs, part.pres_qpos, part.wing_dofs)
+        )
+        if all(isinstance(x, slice) for x in (F, P)):  # views, no copies (the usual case)
+            FF, FP, PF, PP = (F, F), (F, P), (P, F), (P, P)
+        else:
+            FF, FP, PF, PP = np.ix_(F, F), np.ix_(F, P), np.ix_(P, F), np.ix_(P, P)
+        free_rot = part.free_rotation
         torso = self.torso
-        a = np.empty(m.nv)
         step1, step2, full_m = mujoco.mj_step1, mujoco.mj_step2, mujoco.mj_fullM
+        inv = np.linalg.inv
         proj = self.projection_max
+        applied_max = self.root_applied_max
         project = self.config.momentum_projection
+        xmat, xpos = d.xmat, d.xpos
         for k in range(pres.qpos.shape[0]):
-            qpos[3:] = pres.qpos[k, 3:]
-            qvel[3:] = pres.qvel[k, 3:]
+            qpos[Pq] = pres.qpos[k, Pq]
+            qvel[P] = pres.qvel[k, P]
             step1(m, d)
             full_m(m, d, M)
-            # momentum projection (translation only: M, bias and the aero forces do not
-            # depend on where the bird is; its velocity changes by O(h^2))
+            R = xmat[torso].reshape(3, 3)
+            arm = com[torso] - xpos[torso]
+            m_inv = inv(M[FF])  # one factorisation for the projection and a_F
             if project:
                 dx = self.X - com[torso]
                 qpos[:3] += dx
-                qvel[:3] += (self.P - M[:3] @ qvel) / mass
-                proj = max(proj, abs(dx[0]), abs(dx[1]), abs(dx[2]))
+                dp = np.zeros(len(part.free_dofs))
+                dp[:3] = self.P - M[:3] @ qvel
+                if free_rot:
+                    l_now = R @ (M[3:6] @ qvel) - _cross(arm, M[:3] @ qvel)
+                    dp[3:] = R.T @ (self.L - l_now + _cross(arm, dp[:3]))
+                dv = m_inv @ dp
+                qvel[F] += dv
+                proj = max(proj, float(np.max(np.abs(dx))), float(np.max(np.abs(dv))) * h)
             f = qfrc_passive - qfrc_bias
-            a[3:] = pres.qacc[k, 3:]
-            # the translational block of M is (whole mass) I for a free root
-            a[:3] = (f[:3] - M[:3, 3:] @ a[3:]) / mass
-            tau = M @ a - f
-            tau[:3] = 0.0
-            qfrc_applied[:] = tau
+            a_p = pres.qacc[k, P]
+            a_f = m_inv @ (f[F] - M[FP] @ a_p)
+            tau_p = M[PF] @ a_f + M[PP] @ a_p - f[P]
+            qfrc_applied[:] = 0.0
+            qfrc_applied[P] = tau_p
             f_ext = qfrc_passive[:3] + mass * grav
+            # the aero moment about the whole bird's centre of mass (world)
+            m_ext = R @ qfrc_passive[3:6] - _cross(arm, qfrc_passive[:3])
+            if free_rot:
+                applied_max = max(
+                    applied_max,
+                    float(np.max(np.abs(qfrc_applied[F]))),
+                    float(np.max(np.abs(d.xfrc_applied))),
+                )
             if record is not None and k % every == 0:
-                power = float(tau[6:] @ qvel[6:])  # both wings' joints, on the air and the wings
-                record.append((self.time, qpos.copy(), qvel.copy(), -float(tau[4]), f_ext, power))
+                power = float(qfrc_applied[W] @ qvel[W])  # both wings' joints
+                if free_rot:
+                    moment = C_SEED * (R.T @ m_ext)
+                else:  # the hidden torque that holds the posed orientation
+                    moment = C_SEED * qfrc_applied[3:6]
+                tail = C_SEED * self.cb.tail_force_body
+                record.append((self.time, qpos.copy(), qvel.copy(), moment, f_ext, power, tail))
             step2(m, d)
             self.P = self.P + h * f_ext
             self.X = self.X + h * self.P / mass
+            if free_rot:
+                self.L = self.L + h * m_ext
             self.time += h
         self.projection_max = proj
+        self.root_applied_max = applied_max
         if not (np.all(np.isfinite(qpos)) and np.all(np.isfinite(qvel))):
             raise FlightError(
                 f"the simulation diverged at t={self.time:.3f} (reduced time): non-finite state"
@@ -236,9 +376,13 @@ class FreeBird:
         return self.d.subtree_com[self.torso].copy(), (self._M[:3] @ self.d.qvel) / self.total_mass
 
 
+#: MuJoCo body axes (x fwd, y left, z up) -> seed body axes (x fwd, y right, z down)
+C_SEED = np.array([1.0, -1.0, -1.0])
+
+
 def beat_period(bird: Bird) -> float:
     """One wingbeat in reduced time: 2 pi."""
     return 2.0 * math.pi
 
 
-__all__ = ["FlightError", "FreeBird", "SimConfig"]
+__all__ = ["C_SEED", "FlightError", "FreeBird", "Partition", "SimConfig", "partition"]

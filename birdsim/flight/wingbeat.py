@@ -34,6 +34,10 @@ from birdsim.mujoco.driver import set_root, wing_arrays
 from birdsim.physics.bird import Bird
 from birdsim.physics.kinematics import KinematicModel
 
+#: Time constant (wingbeats) of the attitude inputs' smoothing: fast enough for the
+#: attitude loop, slow enough that the wings' accelerations stay of the wingbeat's order.
+INPUT_SMOOTHING_BEATS = 0.125
+
 
 class CascadeFilter:
     """Two cascaded first-order filters ``x1' = (u - x1)/tau``, ``x2' = (x1 - x2)/tau``,
@@ -87,17 +91,23 @@ class CascadeFilter:
 @dataclass(frozen=True)
 class Prescription:
     """Prescribed coordinates over a run of steps: full-size arrays of which only the
-    prescribed entries (torso orientation, wings) are meaningful."""
+    prescribed entries (wings; the torso orientation only in the posed mode) are
+    meaningful."""
 
     qpos: np.ndarray  # (T, nq)
     qvel: np.ndarray  # (T, nv)
     qacc: np.ndarray  # (T, nv)
-    params: np.ndarray  # (T, nP) smoothed wingbeat parameters
-    pitch: np.ndarray  # (T,) nose up (rad)
+    params: np.ndarray  # (T, nP) smoothed wingbeat parameters (the right wing's)
+    pitch: np.ndarray  # (T,) nose up (rad): the table's (commanded) body pitch
+    params_left: np.ndarray | None = None  # (T, nP) the left wing's, when it differs
 
 
 class WingbeatSchedule:
-    """Smoothed wingbeat parameters of ``kin`` and the prescribed motion they imply."""
+    """Smoothed wingbeat parameters of ``kin`` and the prescribed motion they imply.
+
+    The filter runs on the right wing's and the left wing's parameters side by side
+    (2 nP entries), so a differential wingbeat is smoothed like the symmetric one.
+    """
 
     def __init__(
         self,
@@ -107,41 +117,114 @@ class WingbeatSchedule:
         initial: Sequence[float],
         *,
         smoothing: float,
+        initial_left: Sequence[float] | None = None,
+        input_smoothing: float | None = None,
     ):
         self.m = m
         self.kin = kin
         self.bird = bird
         self.names = kin.param_names
-        self.filter = CascadeFilter(smoothing, np.asarray(initial, dtype=float))
+        right = np.asarray(initial, dtype=float)
+        left = right if initial_left is None else np.asarray(initial_left, dtype=float)
+        #: the table's wingbeat (the mean of both wings), smoothed like playback's
+        self.filter = CascadeFilter(smoothing, 0.5 * (right + left))
+        #: the attitude inputs: half the right-left difference of every parameter and
+        #: the sweep offsets (right, left), smoothed faster (INPUT_SMOOTHING_BEATS)
+        tau_in = INPUT_SMOOTHING_BEATS * bird.period if input_smoothing is None else input_smoothing
+        n = len(self.names)
+        self.input_filter = CascadeFilter(
+            min(tau_in, smoothing),
+            np.concatenate([0.5 * (right - left), np.zeros(n), [0.0, 0.0]]),
+        )
         self.pitch_index = self.names.index("pitch")
+        #: symmetric sweep offset (rad) of both wings' target: an attitude input that
+        #: moves the force line fore and aft (the shoulder's sweep joint, any model)
+        self.sweep_target = 0.0
 
     def advance(
-        self, target: Sequence[float], times: np.ndarray, t_now: float, dt: float
+        self,
+        target: Sequence[float],
+        times: np.ndarray,
+        t_now: float,
+        dt: float,
+        target_left: Sequence[float] | None = None,
+        offset: Sequence[float] | None = None,
     ) -> Prescription:
         """The prescription at absolute reduced ``times`` (T,), for a target held from
-        ``t_now`` for ``dt``; the filter state moves on to ``t_now + dt``."""
+        ``t_now`` for ``dt``; the filter state moves on to ``t_now + dt``.
+        ``target_left``: the left wing's target (None: the same as the right's);
+        ``offset``: a correction added to both wings' parameters, smoothed like the
+        attitude inputs (the stroke plane's compensation of a pitch error)."""
         times = np.asarray(times, dtype=float)
-        p, dp, ddp = self.filter.advance(np.asarray(target, dtype=float), times - t_now, dt)
-        return self.prescribe(times, p, dp, ddp)
+        right = np.asarray(target, dtype=float)
+        left = right if target_left is None else np.asarray(target_left, dtype=float)
+        sw = self.sweep_target
+        rel = times - t_now
+        mean = self.filter.advance(0.5 * (right + left), rel, dt)
+        n = len(self.names)
+        off = np.zeros(n) if offset is None else np.asarray(offset, dtype=float)
+        inputs = self.input_filter.advance(
+            np.concatenate([0.5 * (right - left), off, [sw, sw]]), rel, dt
+        )
+        r = tuple(a + b[:, :n] + b[:, n : 2 * n] for a, b in zip(mean, inputs))
+        lft = tuple(a - b[:, :n] + b[:, n : 2 * n] for a, b in zip(mean, inputs))
+        return self.prescribe(times, *r, left=lft, sweep=tuple(b[:, 2 * n :] for b in inputs))
 
-    def prescribe(
-        self, times: np.ndarray, p: np.ndarray, dp: np.ndarray, ddp: np.ndarray
-    ) -> Prescription:
-        """qpos/qvel/qacc of the wings and torso orientation for parameters p(t) (T, nP)."""
+    @property
+    def output(self) -> np.ndarray:
+        """The table's smoothed wingbeat parameters now (the mean of both wings)."""
+        return self.filter.output
+
+    @property
+    def sweep_now(self) -> float:
+        """The smoothed symmetric sweep offset now (rad)."""
+        return float(self.input_filter.output[-2])
+
+    def _joints(self, times, p, dp, ddp, sweep=None):
         omega = self.bird.omega
         cols = {n: p[:, i] for i, n in enumerate(self.names)}
         rates = {n: dp[:, i] for i, n in enumerate(self.names)}
         accs = {n: ddp[:, i] for i, n in enumerate(self.names)}
-        angles, jrates, jaccs = joint_derivatives(
-            self.kin, self.bird, cols, rates, accs, omega * times, omega
-        )
+        out = joint_derivatives(self.kin, self.bird, cols, rates, accs, omega * times, omega)
+        if sweep is not None:
+            for d, v in zip(out, sweep):
+                d["sweep"] = np.asarray(d.get("sweep", 0.0)) + v
+        return out
+
+    def prescribe(
+        self,
+        times: np.ndarray,
+        p: np.ndarray,
+        dp: np.ndarray,
+        ddp: np.ndarray,
+        *,
+        left: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None,
+        sweep: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None,
+    ) -> Prescription:
+        """qpos/qvel/qacc of the wings (and, for the posed mode, the torso orientation at
+        the table's pitch) for parameters p(t) (T, nP); ``left`` the left wing's p, p',
+        p'' when they differ."""
         t = len(times)
-        qpos, qvel, qacc = wing_arrays(self.m, angles, jrates, jaccs, samples=t)
+        sw_r = sw_l = None
+        if sweep is not None and (np.any(sweep[0]) or np.any(sweep[1]) or np.any(sweep[2])):
+            sw_r = tuple(a[:, 0] for a in sweep)
+            sw_l = tuple(a[:, 1] for a in sweep)
+        if left is not None and sw_r is None:
+            if all(np.array_equal(x, y) for x, y in zip(left, (p, dp, ddp))):
+                left = None
+        same = left is None and sw_r is None
+        if not same and left is None:
+            left = (p, dp, ddp)
+        right_joints = self._joints(times, p, dp, ddp, sw_r)
+        left_joints = None if same else self._joints(times, *left, sw_l)
+        qpos, qvel, qacc = wing_arrays(self.m, *right_joints, samples=t, left=left_joints)
         k = self.pitch_index
         set_root(self.m, qpos, qvel, pitch=p[:, k], pitch_rate=dp[:, k])
         qacc[:, 3:6] = 0.0
         qacc[:, 4] = -ddp[:, k]  # pitch nose up is a rotation about MuJoCo -y
-        return Prescription(qpos, qvel, qacc, p, p[:, k].copy())
+        return Prescription(
+            qpos, qvel, qacc, p, p[:, k].copy(), None if left is None else np.array(left[0])
+        )
 
 
 __all__ = ["CascadeFilter", "Prescription", "WingbeatSchedule"]

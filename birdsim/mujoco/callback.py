@@ -32,6 +32,7 @@ import numpy as np
 
 from birdsim.errors import BirdsimError
 from birdsim.mujoco.model import aero_sites, span_sign
+from birdsim.mujoco.tail import TailControls, tail_force, tail_frame
 from birdsim.physics.aero import body_drag_magnitude
 from birdsim.physics.bird import Bird
 
@@ -59,6 +60,7 @@ class AeroCallback:
         bird: Bird | None = None,
         *,
         body_drag: bool = True,
+        tail: bool = False,
     ):
         self.bird = bird or Bird()
         self.model = m
@@ -82,6 +84,23 @@ class AeroCallback:
         self.single = bool(np.all(self.offsets == 0.0))
         self._zero_torque = np.zeros((len(sites), 3))
         self.calls = 0
+        #: the tail (birdsim.mujoco.tail) acts only when asked for (free flight): the
+        #: cross-check compares the wings and the body with the core, which has no tail
+        self.tail = bool(tail)
+        self.tail_controls = TailControls()
+        #: the tail's last force (MuJoCo body axes) and angle of attack (rad)
+        self.tail_force_body = np.zeros(3)
+        self.tail_alpha = 0.0
+        if self.tail:
+            try:
+                self.tail_site = m.site("tail_cp").id
+            except KeyError:
+                raise BirdsimError(
+                    "model lacks site 'tail_cp'; allowed: a model built by birdsim.mujoco.model"
+                ) from None
+            self._tailvel = np.zeros(6)
+            self._tail_frame_for: TailControls | None = None
+            self._tail_frame = np.eye(3)
 
     def __call__(self, m: mujoco.MjModel, d: mujoco.MjData) -> None:
         if not self.enabled or m._address != self.model._address:
@@ -114,6 +133,36 @@ class AeroCallback:
             )
         if self.body_drag:
             self._apply_body_drag(m, d)
+        if self.tail:
+            self._apply_tail(m, d)
+
+    def _apply_tail(self, m: mujoco.MjModel, d: mujoco.MjData) -> None:
+        mujoco.mj_objectVelocity(m, d, _SITE, self.tail_site, self._tailvel, 1)
+        xmat = d.site_xmat[self.tail_site].reshape(3, 3)  # the torso's axes
+        vel_body = self._tailvel[3:] - xmat.T @ m.opt.wind  # local frame (flg_local=1)
+        b = self.bird
+        ctl = self.tail_controls
+        if self._tail_frame_for is not ctl:  # the frame changes only with the controls
+            self._tail_frame = tail_frame(ctl.clipped())
+            self._tail_frame_for = ctl
+        f_body, self.tail_alpha = tail_force(
+            vel_body,
+            ctl,
+            span=b.tail_span,
+            length=b.tail_length,
+            rho=b.rho,
+            frame=self._tail_frame,
+        )
+        self.tail_force_body = f_body
+        mujoco.mj_applyFT(
+            m,
+            d,
+            xmat @ f_body,
+            np.zeros(3),
+            d.site_xpos[self.tail_site],
+            self.torso_body,
+            d.qfrc_passive,
+        )
 
     def _apply_body_drag(self, m: mujoco.MjModel, d: mujoco.MjData) -> None:
         mujoco.mj_objectVelocity(m, d, _SITE, self.torso_site, self._tvel, 0)

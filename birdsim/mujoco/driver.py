@@ -127,21 +127,30 @@ def wing_arrays(
     accelerations: Mapping[str, object] | None = None,
     *,
     samples: int = 1,
+    left: tuple[Mapping[str, object], Mapping[str, object], Mapping[str, object]] | None = None,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """qpos (T, nq), qvel and qacc (T, nv) with the wing joints set (root entries: rest
-    pose / zero).  Missing joints, rates or accelerations are 0."""
-    for arg, vals in (
-        ("joint_angles", angles),
-        ("joint_rates", rates or {}),
-        ("joint_accelerations", accelerations or {}),
-    ):
-        _check_names(vals, arg)
+    pose / zero).  Missing joints, rates or accelerations are 0.
+
+    ``left``: (angles, rates, accelerations) of the LEFT wing's core joints when it does
+    not move like the right one (a differential wingbeat); the left wing is then the
+    mirror image of a right wing moving with these values.  None: both wings the same."""
+    sides = {"r": (angles, rates, accelerations)}
+    sides["l"] = left if left is not None else sides["r"]
+    for a_, r_, c_ in sides.values():
+        for arg, vals in (
+            ("joint_angles", a_),
+            ("joint_rates", r_ or {}),
+            ("joint_accelerations", c_ or {}),
+        ):
+            _check_names(vals, arg)
     t = samples
     get = lambda d, k: _as_series((d or {}).get(k, 0.0), t, k)  # noqa: E731
     qpos = np.tile(m.qpos0, (t, 1))
     qvel = np.zeros((t, m.nv))
     qacc = np.zeros((t, m.nv))
     for side in SIDES:
+        angles, rates, accelerations = sides[side]
         jid = m.joint(f"{side}_heave").id
         qpos[:, m.jnt_qposadr[jid]] = get(angles, "heave")
         qvel[:, m.jnt_dofadr[jid]] = get(rates, "heave")

@@ -23,18 +23,17 @@ Frames (MuJoCo world: x forward, y LEFT, z UP; seed axes -> MuJoCo is C = diag(1
   ``X_cp_arm`` and ``X_cp_hand`` (m4).  A site's frame is the panel frame: seed panel
   components ``u`` are ``C u`` in the right site's frame; the left site's frame is the
   mirrored rotation, whose x and z axes are the mirror images of the right ones.
-* ``torso_cp``: where body drag acts (the torso origin).
+* ``torso_cp``: where body drag acts (the torso origin); ``tail_cp``: the tail's
+  centre of pressure (:mod:`birdsim.mujoco.tail`; sites and areas: :mod:`birdsim.mujoco.sites`).
 
 MuJoCo's fluid model is off (density = viscosity = 0); ``opt.wind`` carries the
-freestream for the aero callback.  Gravity is MuJoCo's default (0, 0, -9.81); the
-bird's units are the dissertation's non-dimensional ones, so a user of the model sets
-``m.opt.gravity`` to what their units mean (the cross-check turns it off).
+freestream for the aero callback.  Gravity is MuJoCo's default (0, 0, -9.81): a user
+sets ``m.opt.gravity`` to what the bird's units mean (the cross-check turns it off).
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from pathlib import Path
 
 import mujoco
@@ -48,6 +47,13 @@ from birdsim.mujoco.arena import (
     camera_quat as _camera_quat,
 )
 from birdsim.mujoco.plumage import plumage_for
+from birdsim.mujoco.sites import (  # noqa: F401 (re-exported)
+    SIDES,
+    AeroSite,
+    aero_sites,
+    pitch_quat,
+    span_sign,
+)
 from birdsim.mujoco.visual import add_body_dress, add_materials, add_panel_dress, add_visual_default
 from birdsim.physics.bird import Bird
 from birdsim.physics.kinematics import get_model
@@ -68,7 +74,6 @@ HOLD_TIMECONST_STEPS = 2.0
 #: Offscreen framebuffer (the renderer needs 1280 x 720).
 OFFSCREEN = (1280, 720)
 
-SIDES = ("r", "l")
 WING_JOINTS = ("heave", "shoulder", "wrist_flap", "wrist_twist")
 #: Seed axes of the core's hinge joints (kinematics.JOINTS) -- repeated here only as
 #: MuJoCo axes; tests compare them with the core's joint table.
@@ -91,60 +96,6 @@ def slide_axis(side: str, seed_axis: str) -> np.ndarray:
     """MuJoCo axis of a seed slide along ``seed_axis`` (a true vector: plain mirror)."""
     a = C @ SEED_AXIS[seed_axis]
     return a if side == "r" else MIRROR @ a
-
-
-def span_sign(side: str) -> float:
-    """MuJoCo y of the outward span direction at rest: -1 right wing, +1 left wing."""
-    return -1.0 if side == "r" else 1.0
-
-
-def pitch_quat(pitch: float) -> np.ndarray:
-    """MuJoCo quaternion (w, x, y, z) of the torso at body pitch ``pitch`` (nose up):
-    a rotation by ``pitch`` about MuJoCo -y."""
-    return np.array([math.cos(pitch / 2), 0.0, -math.sin(pitch / 2), 0.0])
-
-
-@dataclass(frozen=True)
-class AeroSite:
-    """One control point the callback acts on: its site, panel area and strip layout."""
-
-    site: str
-    side: str
-    panel: str
-    area: float
-    chord: float
-    #: span positions of the strip elements relative to the site, along the panel's
-    #: outward span (one element at 0 for the default single control point)
-    strip_offsets: tuple[float, ...]
-    strip_widths: tuple[float, ...]
-
-
-def aero_sites(model_name: str, bird: Bird) -> tuple[AeroSite, ...]:
-    """The CP sites a kinematic model uses (both wings), with areas from the bird.
-
-    With ``bird.strips > 1`` each panel's elements are the core's strips; their offsets
-    from the site follow ``kinematics.strip_positions``.
-    """
-    from birdsim.physics.kinematics import strip_positions
-
-    get_model(model_name)
-    out = []
-    for side in SIDES:
-        for panel in bird.panels(model_name):
-            r, w = strip_positions(panel.span, bird.cp_span_fraction, bird.strips)
-            r_cp = bird.cp_span_fraction * panel.span
-            out.append(
-                AeroSite(
-                    f"{side}_cp_{panel.name}",
-                    side,
-                    panel.name,
-                    panel.area,
-                    panel.chord,
-                    tuple(float(x) for x in r - r_cp),
-                    tuple(float(x) for x in w),
-                )
-            )
-    return tuple(out)
 
 
 def _box_inertia(mass: float, size: np.ndarray) -> np.ndarray:
@@ -214,7 +165,10 @@ def _add_bird(
     torso.explicitinertial = True
     torso.mass = bird.mass
     torso.ipos = [0.0, 0.0, 0.0]
-    torso.inertia = _box_inertia(bird.mass, body_size)
+    # the bird file's principal moments (seed = MuJoCo axes: C is diagonal), else a box
+    torso.inertia = (
+        list(bird.body_inertia) if bird.body_inertia else _box_inertia(bird.mass, body_size)
+    )
     torso.add_geom(
         name="torso_body", type=mujoco.mjtGeom.mjGEOM_ELLIPSOID, size=body_size, mass=0.0
     )
@@ -233,6 +187,11 @@ def _add_bird(
         mass=0.0,
     )
     torso.add_site(name="torso_cp", default=spec.find_default("cp"), pos=[0, 0, 0])
+    torso.add_site(  # the tail's centre of pressure: two thirds along the fan
+        name="tail_cp",
+        default=spec.find_default("cp"),
+        pos=[-(bird.tail_root + 2.0 / 3.0 * bird.tail_length), 0.0, 0.0],
+    )
     if visuals:
         add_body_dress(spec, torso, s)
     for name, pos in CAMERAS.items():

@@ -68,8 +68,43 @@ class Bird:
     mass: float = 1.0
     gravity: float = 0.0
     polar: Polar = field(default_factory=SeedPolar)
+    # ---- free flight: the tail and the body's inertia (issue 22; the wings' tables do
+    # not depend on them, see FLIGHT_FIELDS).  Lengths in the bird's length unit, the
+    # seed bird's derived in models/seed-bird.toml, the pigeon's in models/pigeon.toml.
+    #: tail length from its root to the tip of the spread fan
+    tail_length: float = 0.30
+    #: widest spread span of the tail fan (slender-wing span b at full spread)
+    tail_span: float = 0.48
+    #: distance of the tail's root behind the centre of mass (along the body's -x)
+    tail_root: float = 0.24
+    #: torso's principal moments of inertia (roll, pitch, yaw; seed body axes, about the
+    #: centre of mass) [mass x length^2]; empty: a solid box of the bird's mass, 1.1 x
+    #: 0.26 x 0.26 semispans (the model's drawn torso)
+    body_inertia: tuple[float, ...] = ()
 
     def __post_init__(self) -> None:
+        for name in ("tail_length", "tail_span"):
+            v = getattr(self, name)
+            if not (_is_number(v) and math.isfinite(v) and v > 0):
+                raise BirdConfigError(f"bird.{name}={v!r} is invalid; allowed: a finite number > 0")
+        if not (
+            _is_number(self.tail_root) and math.isfinite(self.tail_root) and self.tail_root >= 0
+        ):
+            raise BirdConfigError(
+                f"bird.tail_root={self.tail_root!r} is invalid; allowed: a finite number >= 0"
+            )
+        inertia = tuple(self.body_inertia) if isinstance(self.body_inertia, (list, tuple)) else None
+        if inertia is None or (
+            inertia
+            and not (
+                len(inertia) == 3
+                and all(_is_number(v) and math.isfinite(v) and v > 0 for v in inertia)
+            )
+        ):
+            raise BirdConfigError(
+                f"bird.body_inertia={self.body_inertia!r} is invalid; allowed: [] or three finite numbers > 0"
+            )
+        object.__setattr__(self, "body_inertia", tuple(float(v) for v in inertia))
         positive = ("semispan", "chord", "hand_chord", "rho", "omega", "disc_area", "mass")
         for name in positive:
             v = getattr(self, name)
@@ -119,6 +154,7 @@ class Bird:
 
     def to_dict(self) -> dict[str, Any]:
         d = {f.name: getattr(self, f.name) for f in fields(self) if f.name != "polar"}
+        d["body_inertia"] = list(self.body_inertia)
         d["polar"] = self.polar.to_dict()
         return d
 
@@ -215,6 +251,10 @@ class Bird:
             raise BirdConfigError(f"overrides: {str(exc).removeprefix('bird.')}") from None
 
 
+#: Bird fields that only free flight uses (the tables' wings do not depend on them).
+FLIGHT_FIELDS = ("tail_length", "tail_span", "tail_root", "body_inertia")
+
+
 def _is_number(v: Any) -> bool:
     """An int or float, not a bool (TOML's ``true`` is no length)."""
     return isinstance(v, (int, float)) and not isinstance(v, bool)
@@ -244,4 +284,4 @@ def _parse_value(key: str, raw: str, kind: type) -> Any:
     return _parse_number(key, raw)
 
 
-__all__ = ["Bird", "PanelGeometry", "asdict"]
+__all__ = ["FLIGHT_FIELDS", "Bird", "PanelGeometry", "asdict"]

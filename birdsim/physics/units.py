@@ -71,6 +71,10 @@ def reduced_bird(bird: Bird) -> Bird:
         disc_area=bird.disc_area / s**2,
         mass=mass_ratio(bird),
         gravity=bird.gravity / (bird.omega**2 * s),
+        tail_length=bird.tail_length / s,
+        tail_span=bird.tail_span / s,
+        tail_root=bird.tail_root / s,
+        body_inertia=tuple(i / (bird.rho * s**4 * c) for i in bird.body_inertia),
     )
 
 
@@ -91,7 +95,9 @@ def same_reduced_bird(a: Bird, b: Bird, *, rel_tol: float = 1e-9) -> bool:
     """Whether a table built for ``a`` serves ``b`` exactly (aerodynamic fields only)."""
     ra, rb = reduced_bird(a), reduced_bird(b)
     da, db = ra.to_dict(), rb.to_dict()
-    for key in ("name", "mass", "gravity"):
+    from birdsim.physics.bird import FLIGHT_FIELDS
+
+    for key in ("name", "mass", "gravity", *FLIGHT_FIELDS):  # not the wings' business
         da.pop(key), db.pop(key)
     if ra.induced_velocity or rb.induced_velocity:
         da["c_over_s"], db["c_over_s"] = a.chord / a.semispan, b.chord / b.semispan

@@ -59,6 +59,7 @@ class Scene:
         import mujoco
 
         from birdsim.mujoco.model import aero_sites, build_model
+        from birdsim.render.tail_pose import TailPoser
 
         self._mj = mujoco
         self.playback = states if isinstance(states, Playback) else None
@@ -93,6 +94,8 @@ class Scene:
         self.m.vis.map.shadowclip = 3.0 * self._s / float(self.m.stat.extent)
         self._sun = mujoco.mj_name2id(self.m, mujoco.mjtObj.mjOBJ_LIGHT, "sun")
         self._torso = mujoco.mj_name2id(self.m, mujoco.mjtObj.mjOBJ_BODY, "torso")
+        self._tail = getattr(states, "tail", None)  # (F, 3) elevation, spread, roll
+        self._tail_poser = TailPoser(self.m, self._s) if self._tail is not None else None
         self.d = mujoco.MjData(self.m)
         self.renderer = mujoco.Renderer(self.m, options.height, options.width, max_geom=4000)
         flags = self.renderer.scene.flags
@@ -174,6 +177,8 @@ class Scene:
         mj = self._mj
         self.d.qpos[:] = self.states.qpos[k]
         self.d.qvel[:] = self.states.qvel[k]
+        if self._tail_poser is not None:  # the dressed tail follows the controls
+            self._tail_poser.pose(float(self._tail[k, 0]), float(self._tail[k, 2]))
         mj.mj_kinematics(self.m, self.d)
         mj.mj_comPos(self.m, self.d)
         mj.mj_camlight(self.m, self.d)

@@ -68,6 +68,8 @@ class StateSequence:
     clip_note: str = ""
     demanded_force: np.ndarray | None = None
     brief: OverlaySource = None  # the default overlay: at most three short lines
+    #: the tail's controls per instant (F, 3): elevation, spread, roll (free flight)
+    tail: np.ndarray | None = None
 
     def __post_init__(self) -> None:
         t = np.asarray(self.t_beats, dtype=float)
@@ -105,6 +107,13 @@ class StateSequence:
         object.__setattr__(self, "qpos", qpos)
         object.__setattr__(self, "qvel", qvel)
         object.__setattr__(self, "reference_path", path)
+        if self.tail is not None:
+            tail = np.asarray(self.tail, dtype=float)
+            if tail.shape != (len(t), 3) or not np.all(np.isfinite(tail)):
+                raise BirdsimError(
+                    f"tail has shape {tail.shape}; allowed: ({len(t)}, 3) finite controls"
+                )
+            object.__setattr__(self, "tail", tail)
         if self.demanded_force is not None:
             dem = np.asarray(self.demanded_force, dtype=float)
             if dem.shape != (len(t), 3) or not np.all(np.isfinite(dem)):

@@ -1,0 +1,333 @@
+"""The inner loop: the body's attitude held by aerodynamic moments of wings and tail.
+
+Every control step (``control_per_beat`` per wingbeat, like the path loop):
+
+1. estimate: the body's Euler angles (:func:`euler_zyx`) and body rates over the last
+   wingbeat fitted by a trend plus the wingbeat's first three harmonics
+   (:func:`wingbeat_fit_matrix`): the trend's value now is the wingbeat-mean state
+   without a moving average's half-wingbeat lag (the within-beat rocking is the physics,
+   not an error);
+2. demand: ``M = I (Kp e + Kd de/dt + Ki integral e) - M_0`` per body axis (seed body
+   axes x fwd / y right / z down, about the centre of mass), e = commanded minus
+   estimated (roll 0, pitch = the table's pitch, yaw 0), ``I`` the whole bird's
+   principal moments about the centre of mass at the start, ``M_0`` the measured
+   wingbeat-mean moment of the table's wingbeat with every input at zero;
+3. allocation: ``min || J u - M ||^2 + lambda || u / u_max ||^2`` within the inputs'
+   bounds (:func:`scipy.optimize.lsq_linear`), the inputs :data:`INPUTS`: the wings'
+   differential flap and twist amplitudes, a symmetric sweep offset (the force line fore
+   and aft), the tail's elevation and roll.  ``attitude_saturated`` when a bound binds
+   and the moment delivered misses the demand by more than 10 %.
+
+Gains (:func:`attitude_gains`): a triple pole at ``-omega_a``, ``omega_a = omega / (2 pi
+N_a)`` with :data:`ATTITUDE_BEATS` wingbeats per time constant (the design asked for
+a few times faster than the path loop's 2 wingbeats; faster loops limit-cycled, see
+the constant), slower than the wingbeat so that the wingbeat-mean is a meaningful
+state; multiplied by the inertia, the same closed loop for every bird.
+
+Jacobians (:func:`measured_jacobian`): the wingbeat-mean moment of the bird in MuJoCo
+(the same callback, a second MjData, the body held at the commanded pitch and the
+airspeed) over :data:`JAC_SAMPLES` phases, per input by a one-sided step; cached and
+re-measured when the airspeed moves by :data:`JAC_DV`.  This measures what the wings
+and the tail really do in the simulation (the analytic core's Jacobians, when
+``birdsim.physics.moments`` exists, are an independent path for the same numbers).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import mujoco
+import numpy as np
+from scipy.optimize import lsq_linear
+
+from birdsim.mujoco.model import pitch_quat
+from birdsim.mujoco.tail import ELEVATION_MAX, ROLL_MAX, TailControls
+
+#: Wingbeats per time constant of the attitude loop.  Measured (seed bird): without the
+#: stroke plane's compensation 0.5, 1 and 1.5 wingbeats limit-cycled at a period of two
+#: wingbeats (the one-wingbeat estimate and the inputs' smoothing delay the loop by about
+#: a wingbeat); with it, over the four presets, 1 and 1.5 are worse than 2, and 3 is the
+#: best (cruise, hover within 3 degrees of pitch; take-off and landing the least
+#: saturated); 4 loses cruise's pitch again (docs/flight.md).
+ATTITUDE_BEATS = 3.0
+#: ... per axis (roll, pitch, yaw): the lateral axes keep 2 wingbeats, with which a side
+#: gust's roll and yaw are back within 2 degrees in 4 wingbeats (3: 5 and 3 degrees
+#: still after 8).
+AXIS_BEATS = (2.0, ATTITUDE_BEATS, 2.0)
+#: The inputs: (name, kind, bound in rad).  The wing inputs and their signs are those of
+#: ``birdsim.physics.moments.CONTROL_INPUTS`` (the differential stroke plane rolls the
+#: bird most strongly, the differential flap and twist yaw it, the symmetric sweep
+#: pitches it), plus the tail's.  kind: "diff" (right +u/2, left -u/2 on the
+#: wing parameter), "sweep" (symmetric sweep offset of both shoulders), "tail".
+INPUTS = (
+    ("flap_amp", "diff", 0.15),
+    ("twist_amp", "diff", 0.15),
+    ("sweep", "sweep", 0.15),
+    ("tail_elevation", "tail", ELEVATION_MAX),
+    ("tail_roll", "tail", ROLL_MAX),
+    ("stroke_plane", "diff", 0.15),
+)
+#: The moment rows and the inputs of the two allocations: pitch by the symmetric inputs
+#: (sweep, tail elevation), roll and yaw by the differential ones.
+SYM_ROWS, SYM_INPUTS = [1], [2, 3]
+LAT_ROWS, LAT_INPUTS = [0, 2], [0, 1, 4, 5]
+#: Phases per wingbeat of a Jacobian measurement and the input step (rad).
+JAC_SAMPLES = 16
+JAC_STEP = 0.02
+#: Airspeed change (semispan omega) and pitch command change (rad) that trigger a new
+#: Jacobian.
+JAC_DV = 0.05
+JAC_DPITCH = 0.1
+#: Regularisation of the allocation (relative to the inputs' bounds).
+LAMBDA = 1e-4
+#: The integral's share of the moment is bounded by this many times the inertia x
+#: omega_a^2 x 0.1 rad (anti-windup).
+INTEGRAL_LIMIT_RAD = 0.5
+
+
+def euler_zyx(quat: np.ndarray) -> np.ndarray:
+    """(roll, pitch, yaw) of MuJoCo quaternions (..., 4) (w, x, y, z): the seed body frame
+    relative to seed earth axes, Z-Y-X order (yaw about earth z down, then pitch about
+    y right, nose up, then roll about x forward, right wing down)."""
+    w, x, y, z = np.moveaxis(np.asarray(quat, dtype=float), -1, 0)
+    # MuJoCo rotation matrix entries; the seed frame is C R C, C = diag(1, -1, -1)
+    r00 = 1 - 2 * (y * y + z * z)
+    r10 = 2 * (x * y + w * z)
+    r20 = 2 * (x * z - w * y)
+    r21 = 2 * (y * z + w * x)
+    r22 = 1 - 2 * (x * x + y * y)
+    # seed: S = C R C -> S00 = r00, S10 = -r10, S20 = -r20, S21 = r21, S22 = r22
+    pitch = np.arcsin(np.clip(r20, -1.0, 1.0))
+    roll = np.arctan2(r21, r22)
+    yaw = np.arctan2(-r10, r00)
+    return np.stack([roll, pitch, yaw], axis=-1)
+
+
+#: Harmonics of the wingbeat removed by the attitude estimate's fit.
+FIT_HARMONICS = 3
+#: Wingbeats of samples the estimate fits.
+FIT_BEATS = 1
+
+
+def wingbeat_fit_matrix(
+    n: int, period: float, harmonics: int = FIT_HARMONICS, beats: int = 1
+) -> np.ndarray:
+    """Rows (2, n): the least-squares weights that give, from ``n`` samples spanning the
+    last ``beats`` wingbeats (the newest last), the value now and the slope of the fit
+    ``a + b tau + sum_k (c_k cos k w tau + s_k sin k w tau)`` (tau = time before now,
+    k = 1..harmonics and, over two or more wingbeats, k = 1/2 too): the wingbeat-mean
+    state without the moving average's lag."""
+    length = beats * period
+    dt = length / n
+    tau = -dt * np.arange(n - 1, -1, -1)
+    w = 2.0 * math.pi / period
+    ks = [k for k in range(1, harmonics + 1)] + ([0.5] if beats >= 2 else [])
+    cols = [np.ones(n), tau]
+    for k in ks:
+        cols += [np.cos(k * w * tau), np.sin(k * w * tau)]
+    pinv = np.linalg.pinv(np.stack(cols, axis=1))
+    # the trend's value now (a; the periodic part is the within-beat rocking) and slope (b)
+    return np.stack([pinv[0], pinv[1]])
+
+
+@dataclass(frozen=True)
+class AttitudeGains:
+    """Per axis (roll, pitch, yaw) arrays, per unit inertia."""
+
+    omega_a: np.ndarray
+    kp: np.ndarray
+    kd: np.ndarray
+    ki: np.ndarray
+
+
+def attitude_gains(omega: float = 1.0, beats: object = AXIS_BEATS) -> AttitudeGains:
+    """Triple pole at ``-omega / (2 pi beats)`` per axis (per unit inertia); ``beats`` a
+    number (every axis) or three (roll, pitch, yaw)."""
+    wa = omega / (2.0 * math.pi * np.broadcast_to(np.asarray(beats, dtype=float), (3,)))
+    return AttitudeGains(wa, 3.0 * wa * wa, 3.0 * wa, wa**3)
+
+
+def measured_jacobian(
+    fb, params: np.ndarray, pitch: float, speed: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """(M_0 (3,), J (3, k)): the wingbeat-mean moment (seed body axes) with every input
+    at zero and its one-sided derivatives, measured in MuJoCo (see the module)."""
+
+    m, cb, sched = fb.m, fb.cb, fb.schedule
+    d = mujoco.MjData(m)
+    n = JAC_SAMPLES
+    times = np.arange(n) * (fb.red.period / n)
+    names = sched.names
+    wind = m.opt.wind.copy()
+    saved = cb.tail_controls
+    m.opt.wind[:] = 0.0
+    quat = pitch_quat(pitch)
+    out = []
+    try:
+        for i in range(len(INPUTS) + 1):
+            u = np.zeros(len(INPUTS))
+            if i:
+                u[i - 1] = JAC_STEP
+            right, left, sweep, tail = split_inputs(names, params, u)
+            z = np.zeros((n, len(names)))
+            sw = np.tile([sweep, sweep], (n, 1))
+            pres = sched.prescribe(
+                times,
+                np.tile(right, (n, 1)),
+                z,
+                z,
+                left=(np.tile(left, (n, 1)), z, z),
+                sweep=(sw, np.zeros_like(sw), np.zeros_like(sw)),
+            )
+            cb.tail_controls = tail
+            acc = np.zeros(3)
+            for k in range(n):
+                d.qpos[:] = pres.qpos[k]
+                d.qvel[:] = pres.qvel[k]
+                d.qpos[:3] = (0.0, 0.0, 6.0)
+                d.qpos[3:7] = quat
+                d.qvel[:3] = (speed, 0.0, 0.0)
+                d.qvel[3:6] = 0.0
+                mujoco.mj_forward(m, d)
+                acc += d.qfrc_passive[3:6]
+            out.append(acc / n * np.array([1.0, -1.0, -1.0]))
+    finally:
+        m.opt.wind[:] = wind
+        cb.tail_controls = saved
+    m0 = out[0]
+    jac = np.stack([(o - m0) / JAC_STEP for o in out[1:]], axis=1)
+    return m0, jac
+
+
+def split_inputs(
+    names: tuple[str, ...], params: np.ndarray, u: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, float, TailControls]:
+    """(right params, left params, sweep offset, tail controls) for inputs ``u``."""
+    right = np.array(params, dtype=float)
+    left = right.copy()
+    sweep = 0.0
+    elevation = roll = 0.0
+    for (name, kind, _), ui in zip(INPUTS, u):
+        if kind == "diff" and name in names:
+            j = names.index(name)
+            right[j] += 0.5 * ui
+            left[j] -= 0.5 * ui
+        elif kind == "sweep":
+            sweep = float(ui)
+        elif name == "tail_elevation":
+            elevation = float(ui)
+        elif name == "tail_roll":
+            roll = float(ui)
+    return right, left, sweep, TailControls(elevation, 1.0, roll)
+
+
+class AttitudeLoop:
+    """The inner loop for one flight (see the module docstring)."""
+
+    def __init__(self, fb, *, enabled: bool = True, beats: object = AXIS_BEATS):
+        self.fb = fb
+        self.enabled = enabled
+        self.gains = attitude_gains(fb.red.omega, beats)
+        mujoco.mj_fwdPosition(fb.m, fb.d)
+        full = np.zeros((fb.m.nv, fb.m.nv))
+        mujoco.mj_fullM(fb.m, fb.d, full)
+        #: whole-bird principal moments about the torso origin (MuJoCo x, y, z = seed)
+        self.inertia = np.diag(full[3:6, 3:6]).copy()
+        self.integral = np.zeros(3)
+        self.u = np.zeros(len(INPUTS))
+        self.saturated = False
+        self._jac: tuple[float, np.ndarray, np.ndarray, float] | None = None
+        self.kinds = INPUTS
+
+    def bounds(self, params: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        kin = self.fb.kin
+        spec = {p.name: p for p in kin.params}
+        lo, hi = [], []
+        for name, kind, bound in INPUTS:
+            if kind == "diff":
+                if name in kin.param_names and name.endswith("_amp"):
+                    # an amplitude stays within its bounds on both wings (>= 0)
+                    p = float(params[kin.param_names.index(name)])
+                    r = max(0.0, 2.0 * min(p - spec[name].lower, spec[name].upper - p))
+                    b = min(bound, r)
+                else:  # an angle (the stroke plane): the table's bounds bound the search only
+                    b = bound if name in kin.param_names else 0.0
+                lo.append(-b)
+                hi.append(b)
+            else:
+                lo.append(-bound)
+                hi.append(bound)
+        return np.array(lo), np.array(hi)
+
+    def update(
+        self,
+        params: np.ndarray,
+        pitch_cmd: float,
+        speed: float,
+        err: np.ndarray,
+        rates: np.ndarray,
+        dt: float,
+        *,
+        jac_params: np.ndarray | None = None,
+        jac_pitch: float | None = None,
+    ) -> tuple[np.ndarray, np.ndarray, float, TailControls]:
+        """The wings' and tail's commands for this control step.  ``err`` / ``rates``:
+        the wingbeat-mean attitude error (rotation vector onto the command) and body
+        rates (p, q, r), seed body axes.  ``jac_params`` / ``jac_pitch``: the wingbeat
+        and body pitch the Jacobians are measured at (default: ``params``, the command)."""
+        names = self.fb.schedule.names
+        if not self.enabled:
+            self.u = np.zeros(len(INPUTS))
+            self.saturated = False
+            return split_inputs(names, params, self.u)
+        jp = pitch_cmd if jac_pitch is None else jac_pitch
+        if (
+            self._jac is None
+            or abs(self._jac[0] - speed) > JAC_DV
+            or abs(self._jac[3] - jp) > JAC_DPITCH
+        ):
+            at = params if jac_params is None else jac_params
+            m0, jac = measured_jacobian(self.fb, at, jp, max(speed, 0.0))
+            self._jac = (speed, m0, jac, jp)
+        _, m0, jac, _ = self._jac
+        g = self.gains
+        lim = INTEGRAL_LIMIT_RAD * g.omega_a**2 / g.ki
+        if not self.saturated:  # anti-windup: frozen while the inputs are at their bounds
+            self.integral = np.clip(self.integral + dt * err, -lim, lim)
+        demand = self.inertia * (g.kp * err - g.kd * rates + g.ki * self.integral) - m0
+        lo, hi = self.bounds(params)
+        u = np.zeros(len(INPUTS))
+        miss = 0.0
+        active = False
+        # a symmetric bird: the symmetric inputs pitch it, the differential ones roll and
+        # yaw it (the measured cross terms are round-off and are not used)
+        for rows, cols in ((SYM_ROWS, SYM_INPUTS), (LAT_ROWS, LAT_INPUTS)):
+            cols = [c for c in cols if hi[c] > lo[c]]
+            if not cols:
+                miss += float(np.linalg.norm(demand[rows]))
+                continue
+            scale = (hi[cols] - lo[cols]) / 2
+            a = jac[np.ix_(rows, cols)] * scale
+            reg = math.sqrt(LAMBDA) * max(float(np.abs(a).max()), 1e-12)
+            a_aug = np.vstack([a, reg * np.eye(len(cols))])
+            b_aug = np.concatenate([demand[rows], np.zeros(len(cols))])
+            res = lsq_linear(a_aug, b_aug, bounds=(lo[cols] / scale, hi[cols] / scale))
+            u[cols] = res.x * scale
+            active = active or bool(np.any(res.active_mask != 0))
+            miss += float(np.linalg.norm(a @ res.x - demand[rows]))
+        self.u = u
+        self.saturated = bool(active and miss > 0.1 * np.linalg.norm(demand) + 1e-12)
+        return split_inputs(names, params, u)
+
+
+__all__ = [
+    "ATTITUDE_BEATS",
+    "AXIS_BEATS",
+    "INPUTS",
+    "AttitudeLoop",
+    "attitude_gains",
+    "euler_zyx",
+    "measured_jacobian",
+    "split_inputs",
+]
