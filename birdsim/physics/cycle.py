@@ -276,7 +276,7 @@ def _kernel_means(
 ) -> PanelMeans | None:
     """Panel means from the fused kernel (flat batch), the induced-velocity coupling
     iterated exactly as the numpy path does; None where the kernel cannot run."""
-    from birdsim.physics import kernel
+    from birdsim.physics import kernel_fold as kernel  # every model (m5's hand folds)
 
     air = np.zeros(v.shape + (3,))
     out = kernel.means(m, flat, v, climb, air, bird, phases)
@@ -371,7 +371,9 @@ def _chunk(p, speed, climb, air_earth, m, panels, bird, phases, out: _Histories,
     air_body = earth_to_body(pitch_b, rel_earth)
     for k, (chain, span, chord) in enumerate(panels):
         r, w = strip_positions(span, bird.cp_span_fraction, bird.strips)
-        el = element_forces(chain, states, r, w, chord, air_body, bird)
+        el = element_forces(
+            chain, states, r, w, chord * m.area_scale(k, states, bird), air_body, bird
+        )
         v_flap = _sum_groups(el.velocity_body)
         f_earth = body_to_earth(pitch_b, el.force_body)
         for i in range(3):
