@@ -56,3 +56,86 @@ def test_local_score_counts_the_zigzags_a_cell_takes_part_in():
     )  # the middle of one triple; two neighbours
     X[2, 0, 0, 1] = 0.5
     assert len(zigzag_cells(names, X, ok)) == 3 and len(zigzag_cells(names, X, ok, ends=False)) == 1
+
+
+# ---- a choice that round-off cannot flip (issue 21) ------------------------------------
+
+
+def _perturbed_build(monkeypatch, *, cost_eps=0.0, param_eps=0.0, seed=0):
+    """The GRID table with the pass's inputs perturbed: every cost the pass reads (the
+    sweeps' costs and each candidate's) and/or the sweeps' parameters, by +-eps in a
+    random half of the cells (random sign per cell and candidate)."""
+    import birdsim.tables.build as build
+    import birdsim.tables.regularise as reg
+
+    rng = np.random.default_rng(seed)
+    sweep, costs = build._sweep, reg.candidate_costs
+
+    def noisy_sweep(*a, **k):
+        X, cost, evals, conv, X_slices = sweep(*a, **k)
+        hit = rng.random(cost.shape) < 0.5
+        cost = cost + np.where(hit, rng.choice([-1.0, 1.0], cost.shape) * cost_eps, 0.0)
+        X = X + np.where(hit[..., None], rng.choice([-1.0, 1.0], X.shape) * param_eps, 0.0)
+        return X, cost, evals, conv, X_slices
+
+    def noisy_costs(prob, cand):
+        cost, err = costs(prob, cand)
+        if rng.random() < 0.5:
+            cost = cost + rng.choice([-1.0, 1.0], cost.shape) * cost_eps
+        return cost, err
+
+    monkeypatch.setattr(build, "_sweep", noisy_sweep)
+    monkeypatch.setattr(reg, "candidate_costs", noisy_costs)
+    return build_table(BuildConfig("base", GRID), jobs=1)
+
+
+@pytest.mark.parametrize("seed", [1, 2])
+def test_costs_perturbed_by_1e_9_give_the_identical_table(pair, monkeypatch, seed):
+    """Every decision of the pass has a margin far above 1e-9 (COST_TIE 1e-7 for ties,
+    smooth_tol 5e-3 for admissibility), so the parameters are bitwise those of the
+    unperturbed build (the stored costs too: they come from the final check)."""
+    _, smooth = pair
+    assert smooth.meta["regularising_pass"]["cells_changed"] >= 4  # the pass did choose
+    t = _perturbed_build(monkeypatch, cost_eps=1e-9, seed=seed)
+    assert t.params.tobytes() == smooth.params.tobytes()
+    assert t.cost.tobytes() == smooth.cost.tobytes()
+
+
+def test_parameters_perturbed_by_1e_9_rad_move_the_table_by_no_more(pair, monkeypatch):
+    """Round-off in the sweeps' parameters: the rounded targets give bitwise the same
+    candidates, the ties keep the same choices, so each cell is either the same candidate
+    (bitwise) or its own perturbed input (1e-9 rad)."""
+    _, smooth = pair
+    t = _perturbed_build(monkeypatch, param_eps=1e-9, seed=3)
+    assert np.max(np.abs(t.params - smooth.params)) <= 1e-9 * (1 + 1e-6)
+    assert np.array_equal(t.status, smooth.status)
+
+
+def test_choose_breaks_ties_by_order_not_by_round_off():
+    from birdsim.tables.regularise import COST_TIE, choose
+
+    no = np.zeros(3, dtype=bool)
+    err = np.zeros(3)
+    # same zig-zags, steps 1e-12 apart: the earliest (the current wingbeat) stays
+    assert (
+        choose([0.1, 0.1, 0.1], err, 0.1, [(0, 1.0), (0, 1.0 - 1e-12), (0, 2.0)], no, 5e-3, 0.01)
+        == 0
+    )
+    # clearly smoother (by more than STEP_TIE): it moves
+    assert choose([0.1, 0.1, 0.1], err, 0.1, [(0, 1.0), (0, 0.5), (0, 2.0)], no, 5e-3, 0.01) == 1
+    # fewer zig-zags beats steps; beyond smooth_tol is not admissible
+    assert choose([0.1, 0.1, 0.2], err, 0.1, [(1, 0.0), (0, 3.0), (0, 0.0)], no, 5e-3, 0.01) == 1
+    # nothing admissible (the current one much costlier and the cheap ones miss the
+    # demand): the cheapest within COST_TIE, first in order, not the smallest number
+    far = np.array([0.0, 0.009, 0.009])
+    pick = choose(
+        [0.5, 0.1 + 0.5 * COST_TIE, 0.1], far, 0.1, [(0, 0.0), (0, 1.0), (0, 0.0)], no, 5e-3, 0.01
+    )
+    assert pick == 2  # both tied in cost; the second is smoother
+    pick = choose(
+        [0.5, 0.1 + 0.5 * COST_TIE, 0.1], far, 0.1, [(0, 0.0), (0, 0.0), (0, 0.0)], no, 5e-3, 0.01
+    )
+    assert pick == 1  # tied in cost and steps: the earlier
+    # a duplicate of an earlier candidate is never picked
+    dup = np.array([False, False, True])
+    assert choose([0.1, 0.1, 0.1], err, 0.1, [(1, 0.5), (1, 0.0), (0, 0.0)], dup, 5e-3, 0.01) == 1

@@ -161,7 +161,7 @@ def build_table(
         )
     assert executor is not None
     try:
-        X, cost, evals, conv = _sweep(cfg, executor, ckpt, tick)
+        X, cost, evals, conv, X_slices = _sweep(cfg, executor, ckpt, tick)
         if cfg.settings.smooth_tol > 0:
             X, evals, smoothing = _regularise(cfg, executor, ckpt, X, cost, evals)
     except BaseException:
@@ -185,6 +185,7 @@ def build_table(
     )
     if cfg.settings.smooth_tol > 0:
         table.meta["regularising_pass"] = smoothing
+    table.meta["reproduce"] = reproduce_record(X, X_slices)
     if out is not None:
         write_table(table, out, force, ckpt)
     else:
@@ -192,11 +193,34 @@ def build_table(
     return table
 
 
+def reproduce_record(X: np.ndarray, X_slices: np.ndarray) -> dict[str, Any]:
+    """Where the finished table can be checked in seconds: the V slice (at one climb
+    node on a 4-axis grid) of whose cells the most kept the slice task's answer through
+    the later passes (ties: the lowest index), and those cells' (Fx, Fz) indices.
+    Rebuilding that one task (:func:`solve_slice`) must give those cells' wingbeats
+    (``tests/test_shipped_rebuild.py``)."""
+    kept = np.all(X == X_slices, axis=-1)  # grid shape
+    per_slice = kept.reshape(kept.shape[:2] + (-1,)).sum(axis=(0, 1))
+    flat = int(np.argmax(per_slice))
+    if kept.ndim == 3:
+        k, c, mask = flat, None, kept[:, :, flat]
+    else:
+        k, c = divmod(flat, kept.shape[3])
+        mask = kept[:, :, k, c]
+    return {
+        "task": f"slice_V{k:03d}" + ("" if c is None else f"_C{c:03d}"),
+        "V_index": k,
+        "climb_index": c,
+        "cells": [[int(i), int(j)] for i, j in np.argwhere(mask)],
+    }
+
+
 def _sweep(
     cfg: BuildConfig, executor: Executor, ckpt: Checkpoints, tick: Callable[[int], None]
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """The slices, the V lines and, on a grid with a climb axis, the climb lines:
-    (params, cost at n_search, evaluations, converged) over the grid.  Task names of a
+    (params, cost at n_search, evaluations, converged, and the params as the slice
+    tasks left them) over the grid.  Task names of a
     level-flight grid are those of before (``slice_V005``, ``line_Fx003``); a climb
     index adds ``_C002``; climb lines are ``cline_Fx003_V005``."""
     g = cfg.grid
@@ -235,6 +259,7 @@ def _sweep(
                 r["evaluations"],
                 r["converged"],
             )
+    X_slices = X.copy()
     if cfg.settings.v_passes:
         lines = _run(
             {
@@ -284,8 +309,8 @@ def _sweep(
                     )
                     evals[i, :, k] += r["evaluations"]
     if g.climb is None:
-        return X[:, :, :, 0], cost[..., 0], evals[..., 0], conv[..., 0]
-    return X, cost, evals, conv
+        return X[:, :, :, 0], cost[..., 0], evals[..., 0], conv[..., 0], X_slices[:, :, :, 0]
+    return X, cost, evals, conv, X_slices
 
 
 #: Cells per task of the regularising pass: small enough to balance the cores.
@@ -339,7 +364,7 @@ def _regularise(
                 for k, cells in enumerate(groups)
             }
             done = _run(tasks, executor, ckpt, lambda k: None, 0)
-            for name, (fn, args) in tasks.items():
+            for name, (_fn, args) in tasks.items():
                 cells, res = args[1], done[name]
                 idx = tuple(cells.T)
                 summary["cells_resolved"] += len(cells)

@@ -17,6 +17,28 @@ steps, parameters without effect skipped).
 Cells are updated in a red-black order (cells whose index sum is even, then odd), so
 that no two neighbours move at once; rounds repeat while zig-zags remain (at most
 ``smooth_rounds``).  A task is one Fx index's cells of one colour in one round.
+
+**A choice that round-off cannot flip** (issue 21).  Every decision compares numbers
+whose near-ties are round-off with a margin far above it, and breaks a tie by a fixed
+order, never by which of two near-equal numbers happens to be smaller:
+
+* targets are rounded to :data:`TARGET_QUANTUM_RAD` (1e-3 rad) before SLSQP starts from
+  them, so the candidates of a cell are bitwise the same when its neighbours move by
+  round-off (a target sits within 1e-9 of a rounding boundary with probability 2e-6);
+* candidates within :data:`SAME_MINIMUM_RAD` of an earlier one (the current wingbeat
+  comes first) are that one's minimum found again and are dropped;
+* a cost is admissible when it is at most ``smooth_tol`` above the best found: near-tied
+  costs differ by 1e-11 and sit 5e-3 from that edge; the fallback (nothing admissible:
+  the current wingbeat lost to a much cheaper one) takes the costs within
+  :data:`COST_TIE` (1e-7) of the cheapest, not the cheapest;
+* among the admissible, the fewest zig-zags, then the smallest sum of squared steps
+  *within* :data:`STEP_TIE`, then the earliest in the pool: the current wingbeat first
+  (hysteresis: a cell moves only for a clearly smoother candidate), then the targets in
+  their fixed order.
+
+So a 1e-9 change of any cost changes no choice unless a cost lies within 1e-9 of the
+``smooth_tol`` edge or of a tie band's edge (``tests/test_regularise.py`` perturbs every
+cost by +-1e-9 and gets the identical table).
 """
 
 from __future__ import annotations
@@ -32,6 +54,21 @@ from birdsim.tables.smoothness import ZIGZAG_RAD, effect_mask, zigzags
 
 #: Candidate targets closer than this (rad, max norm) to one already taken are skipped.
 SAME_TARGET_RAD = 0.02
+#: Targets are rounded to this (rad) before SLSQP starts from them: a neighbour moved by
+#: round-off gives the same start, hence the bitwise-same candidate.  Small against the
+#: zig-zag size (0.15 rad) and against what the distance cost lets the answer move.
+TARGET_QUANTUM_RAD = 1e-3
+#: Candidates closer than this (rad, max norm over parameters with effect) to an earlier
+#: one are the same minimum (SLSQP ends within ~1e-6 of a minimum; distinct minima of a
+#: zig-zag differ by > 0.15 rad).
+SAME_MINIMUM_RAD = 1e-4
+#: Costs within this of the cheapest are tied: 1e4 x the round-off between builds
+#: (1e-11) and 100 x a 1e-9 perturbation, far below ``smooth_tol`` (5e-3).
+COST_TIE = 1e-7
+#: Force errors within this of the current wingbeat's count as "no worse".
+FORCE_TIE = 1e-7
+#: Sums of squared steps (rad^2) within this of the smallest are tied.
+STEP_TIE = 1e-6
 
 
 def zigzag_cells(
@@ -100,6 +137,7 @@ def _targets(cell: tuple[int, ...], X: np.ndarray, ok: np.ndarray) -> list[np.nd
         if len(pair) == 2:
             out.append(0.5 * (X[pair[0]] + X[pair[1]]))
     out += [X[c].copy() for _, c in nb]
+    out = [np.round(t / TARGET_QUANTUM_RAD) * TARGET_QUANTUM_RAD for t in out]
     kept: list[np.ndarray] = []
     for t in out:
         if all(np.max(np.abs(t - u)) >= SAME_TARGET_RAD for u in kept):
@@ -111,6 +149,7 @@ def _candidate(
     cfg: BuildConfig, model: KinematicModel, demand: tuple[float, ...], target: np.ndarray
 ) -> tuple[np.ndarray, int, bool]:
     fx, fz, v, vc = (tuple(demand) + (0.0,))[:4]
+    target = np.clip(target, *model.bounds)
     weights = replace(cfg.weights, distance=cfg.weights.distance + cfg.settings.smooth_nu)
     prob = ForceProblem(
         model,
@@ -125,6 +164,60 @@ def _candidate(
     )
     sol = slsqp(prob, target, maxiter=cfg.settings.maxiter)
     return sol.x, prob.evaluations, sol.converged
+
+
+def candidate_costs(prob: ForceProblem, cand: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The dissertation's cost (at the problem's n) and the force error
+    max(|Fx - Fx_d|, |Fz - Fz_d|) of each candidate row."""
+    R, h = prob.parts(cand)
+    return np.abs(R) @ prob.weights + h, np.max(np.abs(R[:, :2]), axis=1)
+
+
+def _same_minimum(names: tuple[str, ...], cand: np.ndarray) -> np.ndarray:
+    """True for each candidate within SAME_MINIMUM_RAD of an earlier one (parameters
+    with effect in both)."""
+    eff = effect_mask(names, cand)
+    dup = np.zeros(len(cand), dtype=bool)
+    for j in range(1, len(cand)):
+        for i in range(j):
+            if dup[i]:
+                continue
+            both = eff[i] & eff[j]
+            if np.all(np.abs(np.where(both, cand[j] - cand[i], 0.0)) <= SAME_MINIMUM_RAD):
+                dup[j] = True
+                break
+    return dup
+
+
+def choose(
+    cost: np.ndarray,
+    err: np.ndarray,
+    best: float,
+    scores: list[tuple[int, float]],
+    duplicate: np.ndarray,
+    smooth_tol: float,
+    reach_tol: float,
+) -> int:
+    """The candidate a cell keeps (index into its pool; 0 is the current wingbeat).
+
+    Admissible: cost at most ``smooth_tol`` above ``best`` (the best found, these
+    candidates included) and the demand met as well as the cell did (force error <=
+    reach_tol / 2, or within FORCE_TIE of the current one's); if none is, the costs within
+    COST_TIE of the cheapest.  Among the admissible and not ``duplicate``: the fewest
+    zig-zags (``scores[i][0]``), then the steps (``scores[i][1]``) within STEP_TIE of the
+    smallest, then the earliest.  No comparison decides on a difference below its tie."""
+    cost, err = np.asarray(cost, dtype=float), np.asarray(err, dtype=float)
+    meets = (err <= 0.5 * reach_tol) | (err <= err[0] + FORCE_TIE)
+    admissible = (cost <= best + smooth_tol) & meets & ~duplicate
+    if not admissible.any():  # the current one lost to a much cheaper candidate
+        admissible = (cost <= cost.min() + COST_TIE) & ~duplicate
+    if not admissible.any():  # every cheapest one is a duplicate of an earlier one
+        admissible = cost <= cost.min() + COST_TIE
+    idx = np.flatnonzero(admissible)
+    fewest = min(scores[i][0] for i in idx)
+    idx = [i for i in idx if scores[i][0] == fewest]
+    least = min(scores[i][1] for i in idx)
+    return int(next(i for i in idx if scores[i][1] <= least + STEP_TIE))
 
 
 def smooth_cells(
@@ -157,7 +250,7 @@ def smooth_cells(
     pool: list[list[np.ndarray]] = [[X[c].copy()] for c in cells]
     evals = np.zeros(len(cells), dtype=np.int64)
     conv = np.ones(len(cells), dtype=bool)
-    for m, (x, e, ok_flag) in zip(owner, results):
+    for m, (x, e, _converged) in zip(owner, results):
         pool[m].append(canonical_params(model, x))
         evals[m] += e
     out_x = np.array([X[c] for c in cells], dtype=float).reshape(len(cells), -1)
@@ -169,21 +262,13 @@ def smooth_cells(
         prob = ForceProblem(
             model, fx, fz, v, weights=cfg.weights, bird=cfg.bird, n=st.n_search, climb=vc
         )
-        R, h = prob.parts(cand)
-        cost = np.abs(R) @ prob.weights + h
-        err = np.max(np.abs(R[:, :2]), axis=1)
+        cost, err = candidate_costs(prob, cand)
         evals[m] += len(cand)
         best[m] = min(best[m], float(cost.min()))
-        admissible = (cost <= best[m] + st.smooth_tol) & (
-            (err <= 0.5 * st.reach_tol) | (err <= err[0] + 1e-9)
+        scores = [local_score(names, X, ok, cell, x) for x in cand]
+        pick = choose(
+            cost, err, best[m], scores, _same_minimum(names, cand), st.smooth_tol, st.reach_tol
         )
-        if not admissible.any():  # the current one lost to a much cheaper candidate
-            admissible = cost <= cost.min()
-        scores = [
-            local_score(names, X, ok, cell, cand[i]) + (i,) if admissible[i] else None
-            for i in range(len(cand))
-        ]
-        pick = min(s for s in scores if s is not None)[2]
         out_x[m], out_cost[m] = cand[pick], cost[pick]
     return {
         "params": out_x,
@@ -194,4 +279,12 @@ def smooth_cells(
     }
 
 
-__all__ = ["ZIGZAG_RAD", "local_score", "smooth_cells", "zigzag_cells"]
+__all__ = [
+    "COST_TIE",
+    "ZIGZAG_RAD",
+    "candidate_costs",
+    "choose",
+    "local_score",
+    "smooth_cells",
+    "zigzag_cells",
+]
