@@ -47,6 +47,7 @@ FORCES = ["forces", "--model", "m1", "--speed", "0"]
 HOVER_PARAMS = dict(pitch=1.5, flap_amp=1.5, twist_amp=0.7)
 BUILD = ["tables", "build", "--model", "base", "--grid", "Fx=0|0.2,Fz=-0.5|-0.2,V=0|0.9", "--jobs", "1", "--quiet"]
 RENDER = ["render", "hover", "--model", "base", "--table", "{w}/table.npz", "--quiet"]
+M5_PARAMS = [x for n in ("pitch=0.2", "flap_amp=0.5", "twist_amp=0.2", "stroke_plane=0.2", "wrist_amp=0.1", "wrist_bias=0.1", "wrist_lag=0.5", "fold_phase=0", "supination_amp=0.3") for x in ("--param", n)]
 TINY = Grid.parse("Fx=0|0.2,Fz=-0.5|-0.2,V=0|0.9")
 # fmt: on
 
@@ -111,6 +112,9 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("examples/unknown-option", ["examples", "--model", "m1"], "unrecognized arguments: --model"),
     # ---- birdsim tables build -----------------------------------------------------------
     ("build/unknown-model", ["tables", "build", "--model", "m9"], "--model 'm9' is unknown"),
+    ("build/m5-bird-without-hand", [*BUILD[:3], "m5", *BUILD[4:], "--bird", "{w}/nohand.toml"], "--bird: bird.hand_span_fraction=0.0 leaves no arm or no hand"),
+    ("build/m5-coupling-out-of-range", [*BUILD[:3], "m5", *BUILD[4:], "--bird", "{w}/badfold.toml"], "--bird '{w}/badfold.toml': bird.fold_coupling=3.0 is invalid; allowed: a number in [0, 2]"),
+    ("forces/m5-fold-out-of-bounds", ["forces", "--model", "m5", "--speed", "0.3", *M5_PARAMS, "--param", "fold_amp=1.5"], "--param fold_amp=1.5 is out of bounds for model m5; allowed: [0, 1.0472]"),
     ("build/grid-malformed", [*BUILD, "--grid", "Fx=1:2"], "--grid 'Fx=1:2' is malformed"),
     ("build/grid-nan", [*BUILD, "--grid", "Fx=nan:1:3"], "--grid"),
     ("build/grid-negative-V", [*BUILD, "--grid", "V=-1:1:3"], "--grid V starts at -1"),
@@ -294,6 +298,8 @@ def template(tmp_path_factory: pytest.TempPathFactory) -> Path:
     (w / "bird_unknown_key.toml").write_text("wingspan = 2.0\n")
     (w / "bird_negative.toml").write_text("semispan = -1.0\n")
     (w / "bird_nan.toml").write_text("chord = nan\n")
+    (w / "nohand.toml").write_text("hand_span_fraction = 0.0\n")
+    (w / "badfold.toml").write_text("fold_coupling = 3.0\n")
     (w / "bird_type.toml").write_text('semispan = "long"\n')
     (w / "bird_bool.toml").write_text("semispan = true\n")
     (w / "bird_polar.toml").write_text('[polar]\nkind = "magic"\n')

@@ -39,6 +39,7 @@ from birdsim.physics.kinematics import (
     strip_positions,
     validate_params,
 )
+from birdsim.physics.m5 import fold_bird_error
 
 #: Samples per wingbeat of :func:`evaluate_cycle` (and of the CLI's ``forces`` and a table
 #: build's final check): the smallest even n that puts the mean force within 1e-7 of the
@@ -173,6 +174,8 @@ def evaluate_cycle(
         raise BirdsimError(
             f"bird={bird!r} is invalid; allowed: a birdsim.Bird (Bird.from_toml(path) reads a bird file) or None"
         )
+    if m.area_folds and (why := fold_bird_error(bird)) is not None:
+        raise BirdsimError(f"bird: {why}")
     p = validate_params(m, params, check_bounds=check_bounds)
     try:
         v = np.asarray(speed, dtype=float)

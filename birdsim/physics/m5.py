@@ -142,3 +142,33 @@ def fold_bird_error(bird: Bird) -> str | None:
             "allowed for model m5: a number in (0, 1)"
         )
     return None
+
+
+#: Where each m5 bound comes from (``birdsim params m5``).  Measured pigeon ranges were
+#: not read into numbers for any joint: every bound below is m4's (docs/design.md) or an
+#: estimate with its reasoning.
+BOUND_SOURCES: dict[str, str] = {
+    "pitch": "m4's bound [0, pi/2] (design.md); not a pigeon range",
+    "flap_amp": "m4's shoulder bound pi/4 (design.md); the wrist flap adds up to pi/4 at the tip",
+    "twist_amp": "m4's bound (design.md)",
+    "stroke_plane": "ESTIMATE pi/3 (m3/m4: 0.35 rad): m4's bound forced the body to 55-70 deg "
+    "in slow flight to tilt the stroke plane (issue 24); Usherwood et al. 2005 (J Exp Biol "
+    "208:355) give a stroke-plane inclination of 35 deg whose convention was not read",
+    "wrist_amp": "m4's bound (design.md)",
+    "wrist_bias": "m4's bound (design.md)",
+    "wrist_lag": "m4's bound (design.md)",
+    "fold_amp": "ESTIMATE, see the parameter's meaning",
+    "fold_phase": "ESTIMATE, see the parameter's meaning",
+    "supination_amp": "ESTIMATE, see the parameter's meaning",
+}
+
+#: The bird's skeleton constants of m5 and their status (``birdsim params m5``).
+SKELETON_SOURCES: dict[str, str] = {
+    "fold_coupling": "wrist flexion per radian of elbow flexion; 1 = the planar 'drawing "
+    "parallels' coupling, an ESTIMATE (Stowers, Matloff & Lentink 2017 J R Soc Interface "
+    "14:20170224 show elbow and wrist move together on 3-D paths; no slope read); allowed [0, 2]",
+    "elbow_span_fraction": "the elbow's place along the arm, ESTIMATE 0.45 (humerus a little "
+    "shorter than the forearm); allowed [0.05, 0.95]",
+    "hand_fold_area_loss": "fraction of the hand's area lost folded back on itself, ESTIMATE 0.6 "
+    "(primaries stacked); allowed [0, 1]",
+}
