@@ -112,7 +112,7 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("examples/unknown-option", ["examples", "--model", "m1"], "unrecognized arguments: --model"),
     # ---- birdsim tables build -----------------------------------------------------------
     ("build/unknown-model", ["tables", "build", "--model", "m9"], "--model 'm9' is unknown"),
-    ("build/m5-bird-without-hand", [*BUILD[:3], "m5", *BUILD[4:], "--bird", "{w}/nohand.toml"], "--bird: bird.hand_span_fraction=0.0 leaves no arm or no hand"),
+    ("build/m5-bird-without-hand", [*BUILD[:3], "m5", *BUILD[4:], "--bird", "{w}/nohand.toml"], "bird: bird.hand_span_fraction=0.0 leaves no arm or no hand; allowed for model m5"),
     ("build/m5-coupling-out-of-range", [*BUILD[:3], "m5", *BUILD[4:], "--bird", "{w}/badfold.toml"], "--bird '{w}/badfold.toml': bird.fold_coupling=3.0 is invalid; allowed: a number in [0, 2]"),
     ("forces/m5-fold-out-of-bounds", ["forces", "--model", "m5", "--speed", "0.3", *M5_PARAMS, "--param", "fold_amp=1.5"], "--param fold_amp=1.5 is out of bounds for model m5; allowed: [0, 1.0472]"),
     ("build/grid-malformed", [*BUILD, "--grid", "Fx=1:2"], "--grid 'Fx=1:2' is malformed"),
