@@ -227,6 +227,10 @@ PINNED = {
     "TD96_body_angle_trend": (-1.883, 0.05),
     "TD96_strokeplane_trend": (3.208, 0.05),
     "PA15_hover": (1.0, 0),
+    # issue 24's rows: m3's rigid wing keeps its span (ratio 1 at every speed)
+    "TD96_span_ratio_trend": (0.0, 0),
+    "PA15_fold_cruise": (0.0, 0),
+    "PA15_extend_hover": (0.0, 0),
 }
 VERDICTS = {
     "U05_wing_power": "rough",
@@ -235,6 +239,8 @@ VERDICTS = {
     "U05_strokeplane": "not",
     "B10_amplitude_trend": "same",
     "TD96_body_angle_trend": "same",
+    "TD96_span_ratio_trend": "opposite",
+    "PA15_fold_cruise": "off",
 }
 
 

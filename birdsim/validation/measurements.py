@@ -68,6 +68,9 @@ COMPARE_KEYS: dict[str, str] = {
     "body_angle_slope": "sign",
     "stroke_plane_slope": "sign",
     "hover_feasible": "yes=1",
+    "span_ratio_slope": "sign",
+    "folds_in_cruise": "yes=1",
+    "folds_in_hover": "yes=1",
 }
 #: Keys that need a speed (``speed_m_s``); trends need a window (``speed_to_m_s`` too).
 NEEDS_SPEED = {
@@ -78,6 +81,7 @@ NEEDS_SPEED = {
     "amplitude",
     "body_angle",
     "wing_weight_support",
+    "folds_in_cruise",
 }
 
 
