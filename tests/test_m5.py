@@ -62,7 +62,9 @@ def test_m5_without_fold_and_supination_is_m4(bird, backend):
             getattr(b.mean, k) / unit, getattr(a.mean, k) / unit, rtol=0, atol=1e-14
         )
     if backend == "numpy":
-        np.testing.assert_allclose(b.panel_force_earth / scale, a.panel_force_earth / scale, rtol=0, atol=1e-14)
+        np.testing.assert_allclose(
+            b.panel_force_earth / scale, a.panel_force_earth / scale, rtol=0, atol=1e-14
+        )
         np.testing.assert_allclose(b.cp_position_body, a.cp_position_body, atol=1e-15)
 
 
@@ -114,8 +116,12 @@ def test_hand_area_follows_the_wrist():
     wt = a.time * lossless.omega
     q = 1.3 * p["fold_amp"] * (1.0 - np.cos(wt - p["fold_phase"])) / 2.0
     factor = 1.0 - 0.7 * (1.0 - np.cos(q)) / 2.0
-    np.testing.assert_allclose(b.panel_force_earth[1], a.panel_force_earth[1] * factor[:, None], atol=1e-15)
-    np.testing.assert_allclose(b.panel_force_earth[0], a.panel_force_earth[0], atol=0)  # the arm keeps its area
+    np.testing.assert_allclose(
+        b.panel_force_earth[1], a.panel_force_earth[1] * factor[:, None], atol=1e-15
+    )
+    np.testing.assert_allclose(
+        b.panel_force_earth[0], a.panel_force_earth[0], atol=0
+    )  # the arm keeps its area
 
 
 @pytest.mark.parametrize("bird", [Bird(), OTHER, Bird(hand_fold_area_loss=1.0, fold_coupling=2.0)])
@@ -176,3 +182,18 @@ def test_bird_refuses_a_skeleton_out_of_range(field, value):
     with pytest.raises(BirdConfigError, match=f"bird.{field}=.*allowed") as info:
         Bird(**{field: value})
     assert "\n" not in str(info.value)
+
+
+def test_forces_reports_the_span_ratio(capsys):
+    # every wingbeat's output carries its span ratio: the CLI's equals physics.span's
+    import json
+
+    from birdsim.cli import main
+
+    args = ["forces", "--model", "m5", "--speed", "0.5", "--json"]
+    assert main([*args, "--param", "fold_amp=0.6"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["span_ratio"] == pytest.approx(float(span_ratio("m5", out["params"])), abs=0)
+    assert out["span_ratio"] < 0.95  # a fold of 0.6 rad at mid-upstroke shortens the span
+    assert main(["forces", "--model", "m3", "--speed", "0.5", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["span_ratio"] == pytest.approx(1.0, abs=1e-12)
