@@ -244,7 +244,7 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("py/load_manoeuvre-missing", lambda w: load_manoeuvre(w / "nope.toml"), "does not exist"),
     ("py/load_manoeuvre-malformed", lambda w: load_manoeuvre(w / "malformed.toml"), "is not valid TOML"),
     ("py/load_manoeuvre-no-keyframes", lambda w: load_manoeuvre(w / "man_empty.toml"), "give either [[keyframe]] tables or one [demands] table"),
-    ("py/get_model-unknown", lambda w: get_model("m5"), "model 'm5' is unknown"),
+    ("py/get_model-unknown", lambda w: get_model("m6"), "model 'm6' is unknown"),
 ]
 # fmt: on
 
