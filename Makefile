@@ -5,16 +5,19 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed-stamp
 PYTEST := $(BIN)/python -m pytest
 
+
+.PHONY: web screenshots
 .PHONY: setup demo test test-slow test-all bench tables report lint clean test-blender flight-tables
 
 $(STAMP): pyproject.toml
 	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install -q --upgrade pip
-	$(BIN)/python -m pip install -q -e '.[test,plots]'
+	$(BIN)/python -m pip install -q -e '.[test,plots,studio]'
 	@touch $(STAMP)
 
 setup: $(STAMP)
 	@sh scripts/setup_gl.sh
+	@sh scripts/setup_browser.sh
 
 # the four preset manoeuvres in free flight (demo bird models/seed-bird.toml, demo model m3,
 # tables/seed-m3.npz) into renders/ (regenerated: --force); 3 wingbeats per second of video
@@ -45,6 +48,15 @@ test-blender: setup
 	@mkdir -p .blender-check
 	$(BIN)/python scripts/blender_check.py prepare .blender-check
 	$(BLENDER_VENV)/bin/python scripts/blender_check.py check .blender-check
+
+# Rebuild the web bundle birdsim/studio/static/ (committed, with PROVENANCE.json) from web/
+# (three.js and uPlot from the npm registry, pinned by web/package-lock.json; esbuild).
+web:
+	cd web && npm ci --no-audit --no-fund && npm run build
+
+# The README's screenshots (docs/img/), taken by the browser tests.
+screenshots: setup
+	BIRDSIM_SCREENSHOTS=docs/img $(PYTEST) tests/test_studio_browser.py -q
 
 bench: setup
 	$(BIN)/python benchmarks/run.py

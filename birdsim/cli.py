@@ -7,7 +7,7 @@ import argparse
 import importlib
 import sys
 
-from birdsim.commands.common import translate
+from birdsim.commands.common import StoreOnce, forget_given, translate
 from birdsim.errors import BirdsimError
 
 #: Subcommand modules, in the order ``birdsim --help`` lists them.
@@ -24,6 +24,8 @@ COMMAND_MODULES = (
     "birdsim.commands.params",
     "birdsim.commands.envelope",
     "birdsim.commands.validate",
+    "birdsim.commands.view",
+    "birdsim.commands.studio",
 )
 
 
@@ -70,7 +72,13 @@ DESCRIPTION = (
 
 
 class _Parser(argparse.ArgumentParser):
-    """argparse, but a usage mistake is one line (no usage dump) and exit status 2."""
+    """argparse, but a usage mistake is one line (no usage dump) and exit status 2, and a
+    single-valued option given twice is refused (:class:`commands.common.StoreOnce`)."""
+
+    def __init__(self, *args: object, **kwargs: object) -> None:
+        super().__init__(*args, **kwargs)  # type: ignore[arg-type]
+        self.register("action", None, StoreOnce)
+        self.register("action", "store", StoreOnce)
 
     def error(self, message: str) -> None:  # type: ignore[override]
         self.exit(2, f"{self.prog}: error: {message}\n")
@@ -92,7 +100,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
-    args = build_parser().parse_args(argv)
+    args = forget_given(build_parser().parse_args(argv))
     try:
         return int(args.func(args) or 0)
     except BirdsimError as exc:

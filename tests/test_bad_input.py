@@ -12,7 +12,8 @@ Each row of :data:`CASES` is ``(case id, call, text)``:
   command line, the Python argument in the API).
 
 Every case asserts: exit status 2 (a Python row: a :class:`BirdsimError`), exactly one
-line on stderr, no traceback, nothing written or changed in the work folder.  A Ctrl-C
+line on stderr, no traceback, no RuntimeWarning (numpy's overflow warnings are errors
+here), nothing written or changed in the work folder.  A Ctrl-C
 row expects status 130 and one line instead (and keeps nothing but a build's
 checkpoints).  Python rows also assert that the message names no command-line flag.
 
@@ -37,18 +38,29 @@ import pytest
 from birdsim import Bird, LookupTable, evaluate_cycle, load_table
 from birdsim.cli import main
 from birdsim.errors import BirdsimError
-from birdsim.flight.manoeuvre import get_manoeuvre, load_manoeuvre
+from birdsim.flight.freeflight import Gust, fly
+from birdsim.flight.manoeuvre import Keyframe, Manoeuvre, get_manoeuvre, load_manoeuvre
+from birdsim.flight.path_file import get_flight
+from birdsim.flight.presets import PATH_PRESETS, demo_bird
+from birdsim.mujoco.crosscheck import crosscheck
 from birdsim.physics.kinematics import get_model
+from birdsim.physics.moments import wingbeat_moments
 from birdsim.tables.build import BuildConfig, BuildSettings, Grid, build_table
+from birdsim.tables.optimize import ForceProblem
 
 # fmt: off
 HOVER = ["--param", "pitch=1.5", "--param", "flap_amp=1.5", "--param", "twist_amp=0.7"]
 FORCES = ["forces", "--model", "m1", "--speed", "0"]
 HOVER_PARAMS = dict(pitch=1.5, flap_amp=1.5, twist_amp=0.7)
-BUILD = ["tables", "build", "--model", "base", "--grid", "Fx=0|0.2,Fz=-0.5|-0.2,V=0|0.9", "--jobs", "1", "--quiet"]
-RENDER = ["render", "hover", "--model", "base", "--table", "{w}/table.npz", "--quiet"]
+BUILD_BASE = ["tables", "build", "--model", "base", "--quiet"]  # a single-valued option is given once
+TINY_GRID = ["--grid", "Fx=0|0.2,Fz=-0.5|-0.2,V=0|0.9"]
+BUILD = [*BUILD_BASE, *TINY_GRID, "--jobs", "1"]
+BUILD_NO_GRID = [*BUILD_BASE, "--jobs", "1"]
+RENDER_NO_MODEL = ["render", "hover", "--table", "{w}/table.npz", "--quiet"]
+RENDER = [*RENDER_NO_MODEL, "--model", "base"]
 M5_PARAMS = [x for n in ("pitch=0.2", "flap_amp=0.5", "twist_amp=0.2", "stroke_plane=0.2", "wrist_amp=0.1", "wrist_bias=0.1", "wrist_lag=0.5", "fold_phase=0", "supination_amp=0.3") for x in ("--param", n)]
 TINY = Grid.parse("Fx=0|0.2,Fz=-0.5|-0.2,V=0|0.9")
+SEED_TABLE = Path(__file__).resolve().parent.parent / "tables" / "seed-m3.npz"
 # fmt: on
 
 
@@ -108,6 +120,24 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("forces/set-unknown-polar", [*FORCES, *HOVER, "--set", "polar.kind=magic"], "--set polar.kind='magic' is unknown"),
     ("forces/set-malformed", [*FORCES, *HOVER, "--set", "strips"], "--set 'strips' is malformed"),
     ("forces/unknown-option", [*FORCES, *HOVER, "--sped", "1"], "unrecognized arguments: --sped"),
+    # issue 28 item 6: a single-valued option given twice is refused (argparse keeps the last)
+    ("forces/model-twice", ["forces", "--model", "m1", "--model", "m3", "--speed", "0", *HOVER], "--model is given twice ('m1', 'm3'); allowed: once"),
+    ("forces/bird-twice", [*FORCES, *HOVER, "--bird", "{w}/a.toml", "--bird", "{w}/b.toml"], "--bird is given twice"),
+    ("forces/speed-twice", [*FORCES, *HOVER, "--speed", "0.5"], "--speed is given twice ('0', '0.5')"),
+    ("fly/bird-twice", ["fly", "cruise", "--bird", "{w}/a.toml", "--bird", "{w}/b.toml"], "--bird is given twice"),
+    ("fly/out-twice", ["fly", "cruise", "--out", "{w}/a.npz", "--out", "{w}/b.npz"], "--out is given twice"),
+    ("render/camera-twice", [*RENDER, "--camera", "side", "--camera", "top"], "--camera is given twice"),
+    ("export/format-twice", ["export", "cruise", "--format", "csv", "--format", "bvh", "--out", "{w}/x.csv"], "--format is given twice"),
+    ("build/grid-twice", [*BUILD, "--grid", "V=0|1"], "--grid is given twice"),
+    # absurd but finite numbers (issue 21 item 4): birdsim.errors.MAX_MAGNITUDE / MIN_POSITIVE
+    ("forces/speed-huge", ["forces", "--model", "m3", "--speed", "1e300"], "--speed=1e+300 is invalid; allowed: a finite number >= 0, at most 1e+06 in magnitude"),
+    ("forces/speed-overflows", ["forces", "--model", "m1", "--speed", "1e160", *HOVER], "--speed=1e+160 is invalid"),
+    ("forces/climb-huge", [*FORCES, *HOVER, "--climb=-1e300"], "--climb=-1e+300 is invalid"),
+    ("forces/set-mass-huge", [*FORCES, *HOVER, "--set", "mass=1e300"], "--set mass=1e+300 is invalid; allowed: a finite number > 0, at least 1e-06 and at most 1e+06"),
+    ("forces/set-semispan-huge", [*FORCES, *HOVER, "--set", "semispan=1e300"], "--set semispan=1e+300 is invalid"),
+    ("forces/set-omega-tiny", [*FORCES, *HOVER, "--set", "omega=1e-300"], "--set omega=1e-300 is invalid"),
+    ("forces/set-gravity-huge", [*FORCES, *HOVER, "--set", "gravity=1e300"], "--set gravity=1e+300 is invalid"),
+    ("forces/bird-huge", [*FORCES, *HOVER, "--bird", "{w}/bird_huge.toml"], "--bird '{w}/bird_huge.toml': bird.chord=1e+300 is invalid"),
     # ---- birdsim examples ---------------------------------------------------------------
     ("examples/unknown-option", ["examples", "--model", "m1"], "unrecognized arguments: --model"),
     # ---- birdsim tables build -----------------------------------------------------------
@@ -115,12 +145,15 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("build/m5-bird-without-hand", [*BUILD[:3], "m5", *BUILD[4:], "--bird", "{w}/nohand.toml"], "bird: bird.hand_span_fraction=0.0 leaves no arm or no hand; allowed for model m5"),
     ("build/m5-coupling-out-of-range", [*BUILD[:3], "m5", *BUILD[4:], "--bird", "{w}/badfold.toml"], "--bird '{w}/badfold.toml': bird.fold_coupling=3.0 is invalid; allowed: a number in [0, 2]"),
     ("forces/m5-fold-out-of-bounds", ["forces", "--model", "m5", "--speed", "0.3", *M5_PARAMS, "--param", "fold_amp=1.5"], "--param fold_amp=1.5 is out of bounds for model m5; allowed: [0, 1.0472]"),
-    ("build/grid-malformed", [*BUILD, "--grid", "Fx=1:2"], "--grid 'Fx=1:2' is malformed"),
-    ("build/grid-nan", [*BUILD, "--grid", "Fx=nan:1:3"], "--grid"),
-    ("build/grid-negative-V", [*BUILD, "--grid", "V=-1:1:3"], "--grid V starts at -1"),
-    ("build/grid-huge", [*BUILD, "--grid", "Fx=-1:1:1000,Fz=-1:0:1000,V=0:1:1000"], "--grid"),
+    ("build/grid-malformed", [*BUILD_NO_GRID, "--grid", "Fx=1:2"], "--grid 'Fx=1:2' is malformed"),
+    ("build/grid-nan", [*BUILD_NO_GRID, "--grid", "Fx=nan:1:3"], "--grid"),
+    ("build/grid-negative-V", [*BUILD_NO_GRID, "--grid", "V=-1:1:3"], "--grid V starts at -1"),
+    ("build/grid-huge", [*BUILD_NO_GRID, "--grid", "Fx=-1:1:1000,Fz=-1:0:1000,V=0:1:1000"], "--grid"),
+    ("build/grid-value-huge", [*BUILD_NO_GRID, "--grid", "Fx=-1e300:1e300:2,Fz=-0.5:0:2,V=0:1:2"], "--grid Fx=[-1e+300, 1e+300] is invalid"),
+    ("build/grid-speed-huge", [*BUILD_NO_GRID, "--grid", "Fx=0:0.2:2,Fz=-0.5:0:2,V=0:1e300:2"], "--grid V=[0.0, 1e+300] is invalid"),
+    ("build/set-chord-huge", [*BUILD, "--set", "chord=1e300"], "--set chord=1e+300 is invalid"),
     ("build/size-zero", ["tables", "build", "--model", "base", "--size", "0"], "--size 0 is invalid"),
-    ("build/jobs-zero", [*BUILD, "--jobs", "0"], "--jobs 0 is invalid"),
+    ("build/jobs-zero", [*BUILD_BASE, *TINY_GRID, "--jobs", "0"], "--jobs 0 is invalid"),
     ("build/screen-zero", [*BUILD, "--screen", "0"], "--screen"),
     ("build/starts-negative", [*BUILD, "--starts", "-1"], "--starts"),
     ("build/relax-too-large", [*BUILD, "--relax", "2"], "--relax"),
@@ -141,6 +174,11 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("info/foreign-json", ["tables", "info", "{w}/foreign.json"], "table file '{w}/foreign.json' has format version None"),
     ("info/not-json", ["tables", "info", "{w}/notjson.npz"], "table file '{w}/notjson.json' is unreadable"),
     ("info/foreign-npz", ["tables", "info", "{w}/alien.npz"], "table file '{w}/alien.npz' is unreadable or incomplete"),
+    ("jacobians/in-place-without-force", ["tables", "jacobians", "{w}/table.npz"], "--out is missing"),
+    ("jacobians/out-exists", ["tables", "jacobians", "{w}/table.npz", "--out", "{w}/table.npz"], "--out '{w}/table.npz' exists"),
+    ("jacobians/missing", ["tables", "jacobians", "{w}/nope.npz", "--out", "{w}/new.npz"], "table file '{w}/nope.npz' does not exist"),
+    ("api/moments-u-length", lambda w: wingbeat_moments("m1", HOVER_PARAMS, 0.5, u=[1.0]), "u=[1.0] is invalid"),
+    ("api/moments-rate-nan", lambda w: wingbeat_moments("m1", HOVER_PARAMS, 0.5, body_rate=(0, float("nan"), 0)), "body_rate=nan is invalid"),
     ("lookup/Fx-nan", ["tables", "lookup", "{w}/table.npz", "--Fx", "nan", "--Fz", "-0.3", "--V", "0"], "--Fx='nan' is not finite"),
     ("lookup/Fz-inf", ["tables", "lookup", "{w}/table.npz", "--Fx", "0", "--Fz=-inf", "--V", "0"], "--Fz='-inf' is not finite"),
     ("lookup/Fx-not-a-number", ["tables", "lookup", "{w}/table.npz", "--Fx", "a", "--Fz", "-0.3", "--V", "0"], "--Fx='a' is not a number"),
@@ -161,6 +199,26 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("crosscheck/figure-exists", ["crosscheck", "--model", "base", "--figure", "{w}/exists.png"], "--figure '{w}/exists.png' exists"),
     ("crosscheck/figure-unwritable", ["crosscheck", "--model", "base", "--figure", "/proc/f.png"], "--figure '/proc/f.png'"),
     ("crosscheck/bird-missing", ["crosscheck", "--model", "base", "--bird", "{w}/nope.toml"], "--bird '{w}/nope.toml' does not exist"),
+    ("crosscheck/set-semispan-huge", ["crosscheck", "--model", "base", "--set", "semispan=1e300"], "--set semispan=1e+300 is invalid"),
+    ("envelope/set-mass-huge", ["envelope", "--set", "mass=1e300"], "--set mass=1e+300 is invalid"),
+    ("envelope/bird-huge", ["envelope", "--bird", "{w}/bird_huge.toml"], "--bird '{w}/bird_huge.toml': bird.chord=1e+300 is invalid"),
+    ("fly/gust-wind-huge", ["fly", "cruise", "--quiet", "--gust", "0:1:1e300:0"], "--gust '0:1:1e300:0': gust wx=1e+300 is invalid"),
+    ("fly/gust-duration-huge", ["fly", "cruise", "--quiet", "--gust", "0:1e300:1:0"], "gust duration=1e+300 is invalid"),
+    ("fly/gust-start-huge", ["fly", "cruise", "--quiet", "--gust", "1e300:1:1:0"], "gust t0=1e+300 is invalid"),
+    ("fly/manoeuvre-speed-huge", ["fly", "{w}/man_huge_v.toml", "--quiet"], "keyframe 1 V=1e+300 is invalid"),
+    ("fly/manoeuvre-height-huge", ["fly", "{w}/man_huge_z.toml", "--quiet"], "keyframe 1 z=1e+300 is invalid"),
+    ("fly/path-speed-huge", ["fly", "{w}/path_huge_v.toml", "--quiet"], "keyframe 2 V=1e+300 is invalid"),
+    ("fly/bird-huge", ["fly", "cruise", "--quiet", "--bird", "{w}/bird_huge.toml"], "--bird '{w}/bird_huge.toml': bird.chord=1e+300 is invalid"),
+    ("fly/seconds-huge", ["fly", "cruise", "--quiet", "--seconds", "1e300"], "--seconds 1e300 is"),
+    ("render/gust-huge", [*RENDER, "--gust", "0:1:0:1e300"], "gust wz=1e+300 is invalid"),
+    ("export/metres-per-unit-huge", ["export", "cruise", "--format", "csv", "--out", "{w}/x.csv", "--metres-per-unit", "1e300"], "--metres-per-unit '1e300' is invalid"),
+    ("export/beat-rate-tiny", ["export", "cruise", "--format", "csv", "--out", "{w}/x.csv", "--beat-rate", "1e-300"], "--beat-rate 1e-300 is invalid"),
+    ("export/gust-huge", ["export", "cruise", "--format", "csv", "--out", "{w}/x.csv", "--gust", "0:1:1e300:0"], "gust wx=1e+300 is invalid"),
+    ("bird/mass-huge", ["bird", "new", "big", "--mass", "1e300", "--span", "1", "--mean-chord", "0.1", "--frequency", "5", "--out", "{w}/b.toml"], "--mass 1e+300 is invalid"),
+    ("bird/span-huge", ["bird", "new", "big", "--mass", "1", "--span", "1e300", "--mean-chord", "0.1", "--frequency", "5", "--out", "{w}/b.toml"], "--span 1e+300 is invalid"),
+    ("bird/frequency-tiny", ["bird", "new", "big", "--mass", "1", "--span", "1", "--mean-chord", "0.1", "--frequency", "1e-300", "--out", "{w}/b.toml"], "--frequency 1e-300 is invalid"),
+    ("validate/data-speed-huge", ["validate", "--data", "{w}/measurements_huge.csv"], "speed_m_s='1e300' is invalid"),
+    ("validate/bird-mass-huge", ["validate", "--bird", "{w}/bird_heavy.toml"], "bird.mass=1e+300 is invalid"),
     ("crosscheck/ctrl-c", Interrupt(["crosscheck", "--model", "base", "--forward", "none", "--samples", "8", "--figure", "{w}/new.png"],
                                     "birdsim.mujoco.crosscheck:crosscheck", after=1), "interrupted"),
     # ---- birdsim render (every mistake is found before any rendering) --------------------
@@ -173,8 +231,15 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("render/manoeuvre-nan", ["render", "{w}/man_nan.toml", "--table", "{w}/table.npz"], "keyframe 1: Fz=nan is not a finite number"),
     ("render/manoeuvre-below-floor", ["render", "{w}/man_below.toml", "--kinematic", "--table", "{w}/table.npz"], "keyframe 2 (t=3) has z=-1, below the floor"),
     ("fly/manoeuvre-below-floor", ["fly", "{w}/man_below.toml"], "keyframe 2 (t=3) has z=-1, below the floor"),
+    # issue 28 item 3: the keyframe that is itself below the floor is named, else the segment
+    ("fly/path-keyframe-below-floor", ["fly", "{w}/path_kf2_low.toml", "--quiet"], "path 'path_kf2_low': keyframe 2 (t=4) is below the floor clearance"),
+    ("fly/path-segment-below-floor", ["fly", "{w}/path_dip.toml", "--quiet"], "the segment from keyframe 2 (t=4) to keyframe 3 (t=8) goes below the floor clearance"),
+    ("fly/bird-missing", ["fly", "cruise", "--quiet", "--bird", "{w}/nope.toml"], "--bird '{w}/nope.toml' does not exist"),
+    ("render/bird-missing", [*RENDER, "--bird", "{w}/nope.toml"], "--bird '{w}/nope.toml' does not exist"),
+    ("export/bird-missing", ["export", "cruise", "--format", "csv", "--out", "{w}/x.csv", "--bird", "{w}/nope.toml"], "--bird '{w}/nope.toml' does not exist"),
+    ("envelope/bird-missing", ["envelope", "--bird", "{w}/nope.toml"], "--bird '{w}/nope.toml' does not exist"),
     ("render/manoeuvre-huge-t", ["render", "{w}/man_huge_t.toml", "--table", "{w}/table.npz"], "keyframe t=1e+12"),
-    ("render/unknown-model", [*RENDER, "--model", "m9"], "--model 'm9' is unknown"),
+    ("render/unknown-model", [*RENDER_NO_MODEL, "--model", "m9"], "--model 'm9' is unknown"),
     ("render/size-odd", [*RENDER, "--size", "100x100"], "--size"),
     ("render/size-malformed", [*RENDER, "--size", "big"], "--size 'big' is malformed"),
     ("render/fps-zero", [*RENDER, "--fps", "0"], "--fps 0 is invalid"),
@@ -182,6 +247,11 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("render/seconds-nan", [*RENDER, "--seconds", "nan"], "--seconds nan is invalid"),
     ("render/seconds-negative", [*RENDER, "--seconds", "-1"], "--seconds -1.0 is invalid"),
     ("render/beat-rate-inf", [*RENDER, "--beat-rate", "inf"], "--beat-rate inf is invalid"),
+    ("render/slow-motion-zero", [*RENDER, "--slow-motion", "0"], "--slow-motion 0 is invalid; allowed: a number in (0, 1000]"),
+    ("render/slow-motion-and-beat-rate", [*RENDER, "--slow-motion", "2", "--beat-rate", "3"], "--beat-rate and --slow-motion both set the time base"),
+    ("render/overlay-unknown", [*RENDER, "--overlay", "most"], "--overlay 'most' is unknown; allowed: short, full or none"),
+    ("render/clean-with-forces", [*RENDER, "--clean", "--forces"], "--clean draws no force arrows"),
+    ("export/slow-motion-text", ["export", "hover", "--format", "csv", "--out", "{w}/x.csv", "--slow-motion", "lots"], "--slow-motion 'lots' is not a number"),
     ("render/camera-unknown", [*RENDER, "--camera", "drone"], "--camera 'drone' is unknown"),
     ("render/gl-unknown", [*RENDER, "--gl", "vulkan"], "--gl 'vulkan' is unknown"),
     ("render/out-not-mp4", [*RENDER, "--out", "{w}/x.avi"], "--out '{w}/x.avi' does not end in .mp4"),
@@ -191,6 +261,18 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("render/table-missing", ["render", "hover", "--model", "base", "--table", "{w}/nope.npz", "--out", "{w}/x.mp4"], "--table '{w}/nope.npz' does not exist"),
     ("render/table-corrupt", ["render", "hover", "--model", "base", "--table", "{w}/corrupt.npz", "--out", "{w}/x.mp4"], "do not belong together"),
     ("render/table-other-model", ["render", "hover", "--model", "m4", "--table", "{w}/table.npz", "--out", "{w}/x.mp4"], "--table"),
+    # ---- birdsim view / studio -------------------------------------------------------------
+    ("view/out-not-html", ["view", "hover", "--out", "{w}/x.png"], "--out '{w}/x.png' does not end in .html"),
+    ("view/out-exists", ["view", "hover", "--out", "{w}/done/index.html"], "--out '{w}/done/index.html' exists"),
+    ("view/fps-zero", ["view", "hover", "--out", "{w}/x.html", "--fps", "0"], "--fps '0' is out of range; allowed: 1 to 240"),
+    ("view/fps-text", ["view", "hover", "--out", "{w}/x.html", "--fps", "fast"], "--fps 'fast' is not a number"),
+    ("view/source-unknown", ["view", "loop", "--out", "{w}/x.html"], "manoeuvre 'loop' is unknown"),
+    ("view/source-malformed", ["view", "{w}/malformed.toml", "--out", "{w}/x.html"], "is not valid TOML"),
+    ("view/log-not-a-log", ["view", "{w}/table.npz", "--out", "{w}/x.html"], "is not a birdsim flight log"),
+    ("view/log-with-model", ["view", "{w}/table.npz", "--out", "{w}/x.html", "--model", "m4"], "--model does not apply to a flight log"),
+    ("view/model-unknown", ["view", "hover", "--out", "{w}/x.html", "--model", "m9"], "model 'm9' is unknown"),
+    ("studio/port-out-of-range", ["studio", "--port", "70000"], "--port '70000' is out of range; allowed: 1 to 65535"),
+    ("studio/port-text", ["studio", "--port", "web"], "--port 'web' is not a whole number"),
     # ---- birdsim report -------------------------------------------------------------------
     ("report/only-unknown", ["report", "--out", "{w}/r", "--only", "nonsense"], "--only 'nonsense' is unknown"),
     ("report/out-exists", ["report", "--out", "{w}/done", "--only", "thrust"], "--out '{w}/done' already holds a report"),
@@ -214,6 +296,15 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("py/evaluate_cycle-n-one", lambda w: evaluate_cycle("base", HOVER_PARAMS, 0.0, n=1), "n=1 is invalid"),
     ("py/evaluate_cycle-no-broadcast", lambda w: evaluate_cycle("base", {**HOVER_PARAMS, "pitch": np.zeros(2), "flap_amp": np.ones(3)}, 0.0), "do not broadcast"),
     ("py/evaluate_cycle-bird-not-a-bird", lambda w: evaluate_cycle("base", HOVER_PARAMS, 0.0, bird="pigeon"), "bird='pigeon'"),
+    ("py/evaluate_cycle-speed-huge", lambda w: evaluate_cycle("base", HOVER_PARAMS, 1e300), "speed=1e+300 is invalid; allowed: a finite number >= 0, at most 1e+06 in magnitude"),
+    ("py/evaluate_cycle-speed-array-huge", lambda w: evaluate_cycle("base", HOVER_PARAMS, np.array([0.5, 1e200])), "speed=1e+200 is invalid"),
+    ("py/evaluate_cycle-climb-huge", lambda w: evaluate_cycle("base", HOVER_PARAMS, 0.0, climb=1e300), "climb=1e+300 is invalid"),
+    ("py/ForceProblem-demand-huge", lambda w: ForceProblem("base", 1e300, -0.3, 0.0), "Fx_demand=1e+300 is invalid"),
+    ("py/ForceProblem-speed-huge", lambda w: ForceProblem("base", 0.0, -0.3, 1e300), "speed=1e+300 is invalid"),
+    ("py/crosscheck-speed-huge", lambda w: crosscheck("base", HOVER_PARAMS, 1e300), "speed=1e+300 is invalid"),
+    ("py/fly-beats-huge", lambda w: fly(PATH_PRESETS["cruise"], load_table(SEED_TABLE), demo_bird(), "m3", beats=1e300), "beats=1e+300 is invalid"),
+    ("py/Gust-huge", lambda w: Gust(0.0, 1.0, 1e300, 0.0), "gust wx=1e+300 is invalid"),
+    ("py/Grid-huge", lambda w: Grid(Fx=np.array([0.0, 1e300]), Fz=np.array([-0.5, 0.0]), V=np.array([0.0, 1.0])), "grid Fx=[0.0, 1e+300] is invalid"),
     # ---- Python: tables ---------------------------------------------------------------
     ("py/load_table-missing", lambda w: load_table(w / "nope.npz"), "table file"),
     ("py/load_table-folder", lambda w: load_table(w / "folder.npz"), "does not exist"),
@@ -234,6 +325,10 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("py/Bird-strips-huge", lambda w: Bird(strips=10**9), "bird.strips=1000000000 is invalid"),
     ("py/Bird-fraction", lambda w: Bird(hand_span_fraction=2.0), "bird.hand_span_fraction=2.0 is invalid"),
     ("py/Bird-bool", lambda w: Bird(mass=True), "bird.mass=True is invalid"),
+    ("py/Bird-mass-huge", lambda w: Bird(mass=1e300), "bird.mass=1e+300 is invalid; allowed: a finite number > 0, at least 1e-06 and at most 1e+06"),
+    ("py/Bird-omega-tiny", lambda w: Bird(omega=1e-300), "bird.omega=1e-300 is invalid"),
+    ("py/Bird-drag-area-huge", lambda w: Bird(body_drag_area=1e300), "bird.body_drag_area=1e+300 is invalid"),
+    ("py/Bird.from_toml-huge", lambda w: Bird.from_toml(w / "bird_huge.toml"), "bird.chord=1e+300 is invalid"),
     ("py/Bird.from_toml-missing", lambda w: Bird.from_toml(w / "nope.toml"), "path='"),
     ("py/Bird.from_toml-malformed", lambda w: Bird.from_toml(w / "malformed.toml"), "is not valid TOML"),
     ("py/Bird.from_toml-folder", lambda w: Bird.from_toml(w / "folder"), "is a folder"),
@@ -244,6 +339,9 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("py/load_manoeuvre-missing", lambda w: load_manoeuvre(w / "nope.toml"), "does not exist"),
     ("py/load_manoeuvre-malformed", lambda w: load_manoeuvre(w / "malformed.toml"), "is not valid TOML"),
     ("py/load_manoeuvre-no-keyframes", lambda w: load_manoeuvre(w / "man_empty.toml"), "give either [[keyframe]] tables or one [demands] table"),
+    ("py/load_manoeuvre-speed-huge", lambda w: load_manoeuvre(w / "man_huge_v.toml"), "keyframe 1 V=1e+300 is invalid"),
+    ("py/Manoeuvre-force-huge", lambda w: Manoeuvre("m", (Keyframe(0.0, 1e300, -0.3, 0.0, 6.0),), 1.0), "keyframe 1 Fx=1e+300 is invalid"),
+    ("py/get_flight-path-huge", lambda w: get_flight(str(w / "path_huge_v.toml")), "keyframe 2 V=1e+300 is invalid"),
     ("py/get_model-unknown", lambda w: get_model("m6"), "model 'm6' is unknown"),
 ]
 # fmt: on
@@ -303,6 +401,25 @@ def template(tmp_path_factory: pytest.TempPathFactory) -> Path:
     (w / "bird_type.toml").write_text('semispan = "long"\n')
     (w / "bird_bool.toml").write_text("semispan = true\n")
     (w / "bird_polar.toml").write_text('[polar]\nkind = "magic"\n')
+    (w / "bird_huge.toml").write_text("chord = 1e300\n")
+    shipped = (
+        Path(__file__).resolve().parent.parent / "birdsim" / "data" / "pigeon_measurements.csv"
+    )
+    (w / "measurements_huge.csv").write_text(shipped.read_text().replace(",4.46,,", ",1e300,,", 1))
+    (w / "path_kf2_low.toml").write_text(
+        "duration = 8\n[[keyframe]]\nt = 0\nV = 0.5\nz = 6\n[[keyframe]]\nt = 4\nV = 0.5\nz = 0.3\n"
+        "[[keyframe]]\nt = 8\nV = 0.5\nz = 6\n"
+    )
+    (w / "path_dip.toml").write_text(
+        "duration = 8\n[[keyframe]]\nt = 0\nx = 0\nz = 1.2\n[[keyframe]]\nt = 4\nx = 1\nz = 1.2\nvz = -2\n"
+        "[[keyframe]]\nt = 8\nx = 2\nz = 6\n"
+    )
+    (w / "bird_heavy.toml").write_text("mass = 1e300\ngravity = 0.012\n")
+    (w / "man_huge_v.toml").write_text("[[keyframe]]\nt = 0\nFx = 0\nFz = -0.3\nV = 1e300\n")
+    (w / "man_huge_z.toml").write_text("[[keyframe]]\nt = 0\nFx = 0\nFz = -0.3\nV = 0\nz = 1e300\n")
+    (w / "path_huge_v.toml").write_text(
+        "[[keyframe]]\nt = 0\nz = 6\nV = 0.5\n[[keyframe]]\nt = 4\nz = 6\nV = 1e300\n"
+    )
     (w / "man_unknown_key.toml").write_text(
         "speed = 2\n[[keyframe]]\nt = 0\nFx = 0\nFz = -0.3\nV = 0\n"
     )
@@ -406,6 +523,7 @@ def _ids(cases: list) -> list:
     return out
 
 
+@pytest.mark.filterwarnings("error::RuntimeWarning")  # no numpy overflow warning on the way
 @pytest.mark.parametrize("case_id, call, text", _ids(CASES))
 def test_bad_input(
     case_id: str,
@@ -463,6 +581,11 @@ def test_the_matrix_covers_every_subcommand_and_function() -> None:
         "render",
         "report",
         "py",
+        "fly",
+        "export",
+        "bird",
+        "envelope",
+        "validate",
     ):
         assert part in prefixes, part
     for fn in (

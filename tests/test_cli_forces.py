@@ -69,7 +69,7 @@ def test_missing_subcommand_names_the_choices(capsys):
     assert (
         exc.value.code == 2
         and err.count("\n") == 1
-        and "{build,info,lookup}" in err
+        and "{build,info,lookup,jacobians}" in err
         and "tables_command" not in err
     )
 
@@ -86,7 +86,7 @@ def test_console_script_usage_error_is_one_line():
 def test_examples_table(capsys):
     assert main(["examples"]) == 0
     out = capsys.readouterr().out
-    assert out.count("\n") == 12 and " 88 m4" in out
+    assert out.count("\n") == 13 and " 88 m4" in out and "units: V in omega s" in out
 
 
 def test_forces_fills_missing_parameters_from_the_defaults(capsys):

@@ -7,10 +7,6 @@ import math
 import mujoco
 import numpy as np
 import pytest
-
-bvh = pytest.importorskip("bvh")
-pytest.importorskip("pybvh")
-
 from export_helpers import (
     CHECK_FRAMES,
     FPS,
@@ -18,11 +14,14 @@ from export_helpers import (
     cruise_frames,
     one_beat_per_period,
     reference_body_position,
-)  # noqa: E402
+)
 
-from birdsim.errors import BirdsimError  # noqa: E402
-from birdsim.export.bvh import build_bvh, write_bvh  # noqa: E402
-from birdsim.mujoco.model import build_model  # noqa: E402
+from birdsim.errors import BirdsimError
+from birdsim.export.bvh import build_bvh, write_bvh  # pybvh is imported only when writing
+from birdsim.mujoco.model import build_model
+
+bvh = pytest.importorskip("bvh")
+pytest.importorskip("pybvh")
 
 SCALE = 0.3
 FROM_BVH = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])  # MuJoCo = FROM_BVH @ BVH

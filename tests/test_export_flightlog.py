@@ -65,7 +65,7 @@ def _once_per_beat(series, frames_per_beat):
 
 @pytest.mark.parametrize("bird", ["seed", "pigeon"])
 def test_usd_of_a_real_log(logs, tmp_path, bird):
-    pxr = pytest.importorskip("pxr")
+    pytest.importorskip("pxr")
     from pxr import Usd, UsdGeom
 
     from birdsim.export.usd import BODY_PRIM

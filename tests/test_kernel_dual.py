@@ -10,7 +10,7 @@ from test_kernel import OPTIONS, _random
 
 import birdsim
 from birdsim import Bird, evaluate_cycle, get_model
-from birdsim.physics import kernel_fold as kernel  # every model: m5 needs the fold kernels
+from birdsim.physics import kernel
 from birdsim.physics.cycle import sample_phases
 
 

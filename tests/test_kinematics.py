@@ -49,7 +49,7 @@ def test_exact_velocity_equals_finite_difference(model):
     exact = _points(model, params, bird, phases)
     ahead = _points(model, params, bird, phases + h)
     behind = _points(model, params, bird, phases - h)
-    for (p, v), (pa, _), (pb, _) in zip(exact, ahead, behind):
+    for (_, v), (pa, _), (pb, _) in zip(exact, ahead, behind):
         np.testing.assert_allclose(np.broadcast_to(v, pa.shape), (pa - pb) / (2 * h), atol=1e-8)
 
 

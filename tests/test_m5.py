@@ -10,7 +10,7 @@ import pytest
 
 from birdsim import Bird, evaluate_cycle, get_model
 from birdsim.errors import BirdConfigError
-from birdsim.physics import kernel_fold
+from birdsim.physics import kernel
 from birdsim.physics.cycle import sample_phases
 from birdsim.physics.span import span_ratio, tip_span
 
@@ -140,15 +140,15 @@ def test_fold_kernel_equals_numpy_and_gradients_are_exact(bird):
         unit = scale * (bird.omega * bird.semispan if k == "P" else 1.0)
         np.testing.assert_allclose(getattr(a.mean, k) / unit, getattr(b.mean, k) / unit, atol=1e-12)
     ph = sample_phases(64, False)
-    vals, grads = kernel_fold.means_and_gradients(M5, p, V, C, bird, ph)
+    vals, grads = kernel.means_and_gradients(M5, p, V, C, bird, ph)
     X = np.stack([p[n] for n in M5.param_names], -1)
     h = 1e-6
     for i in range(X.shape[1]):
         Xp, Xm = X.copy(), X.copy()
         Xp[:, i] += h
         Xm[:, i] -= h
-        fp = kernel_fold.means_and_gradients(M5, dict(zip(M5.param_names, Xp.T)), V, C, bird, ph)[0]
-        fm = kernel_fold.means_and_gradients(M5, dict(zip(M5.param_names, Xm.T)), V, C, bird, ph)[0]
+        fp = kernel.means_and_gradients(M5, dict(zip(M5.param_names, Xp.T)), V, C, bird, ph)[0]
+        fm = kernel.means_and_gradients(M5, dict(zip(M5.param_names, Xm.T)), V, C, bird, ph)[0]
         fd = (fp - fm) / (2 * h)
         err = np.abs(grads[:, :, i] - fd)
         assert np.all(err <= 1e-6 * np.abs(fd) + 1e-9 * np.abs(vals).max()), (i, err.max())

@@ -96,8 +96,8 @@ def test_left_wing_mirrors_right(name):
         r_torso = d.xmat[torso].reshape(3, 3)
         for part in ("arm", "hand"):
             rb, lb = m.body(f"r_{part}").id, m.body(f"l_{part}").id
-            rel = lambda b: r_torso.T @ (d.xpos[b] - d.xpos[torso])  # noqa: E731
-            rot = lambda b: r_torso.T @ d.xmat[b].reshape(3, 3)  # noqa: E731
+            rel = lambda b, r=r_torso: r.T @ (d.xpos[b] - d.xpos[torso])  # noqa: E731
+            rot = lambda b, r=r_torso: r.T @ d.xmat[b].reshape(3, 3)  # noqa: E731
             # positions mirror; orientations are the mirrored rotation M R M (1e-12: rounding)
             np.testing.assert_allclose(rel(lb), mirror @ rel(rb), atol=1e-12)
             np.testing.assert_allclose(rot(lb), mirror @ rot(rb) @ mirror, atol=1e-12)

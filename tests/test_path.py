@@ -107,7 +107,8 @@ def test_perch_constants_match_the_scene():
 
 
 def test_below_the_floor_is_refused_naming_the_keyframe():
-    with pytest.raises(PathError, match=r"keyframe 2 \(t=3\).*below the floor"):
+    # keyframe 3 is itself below the floor: it is named, not keyframe 2 before the dip
+    with pytest.raises(PathError, match=r"keyframe 3 \(t=6\) is below the floor"):
         FlightPath(
             "dive",
             8.0,
@@ -118,7 +119,10 @@ def test_below_the_floor_is_refused_naming_the_keyframe():
 
 
 def test_through_the_perch_is_refused_naming_the_keyframe():
-    with pytest.raises(PathError, match=r"keyframe 1 \(t=0\).*through the perch"):
+    with pytest.raises(
+        PathError,
+        match=r"segment from keyframe 1 \(t=0\) to keyframe 2 \(t=5\) goes through the perch",
+    ):
         FlightPath("skim", 6.0, False, False, (K(0, 1.2, x=0.0), K(5, 1.2, x=12.0)))
     # the same height clear of the post is fine
     FlightPath("skim", 6.0, False, False, (K(0, 1.2, x=-12.0), K(5, 1.2, x=0.0)))

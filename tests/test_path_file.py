@@ -115,7 +115,7 @@ V = [0.9, 0.9]
         (
             "[[keyframe]]\nt = 0\nx = 0\nz = 6\n[[keyframe]]\nt = 4\nx = 10\nz = 0.2\n",
             PathError,
-            "keyframe 1 .* below the floor",
+            r"keyframe 2 \(t=4\) is below the floor",  # the keyframe that is itself below
         ),
         (
             "[[keyframe]]\nt = 0\nx = 0\nz = 1.0\n[[keyframe]]\nt = 4\nx = 12\nz = 1.0\n",

@@ -47,7 +47,7 @@ def _number(arg: str, raw: str | None) -> float | None:
 
 
 def run_new(args: argparse.Namespace) -> int:
-    from birdsim.commands.render import check_writable
+    from birdsim.commands.common import check_writable
     from birdsim.io import write_atomic
     from birdsim.physics.measured import bird_from_measurements, bird_toml, derived
 

@@ -14,7 +14,7 @@ from pathlib import Path
 
 import numpy as np
 
-from birdsim.commands.common import add_bird_arguments, bird_from_args
+from birdsim.commands.common import add_bird_arguments, bird_from_args, units_of
 from birdsim.errors import BirdsimError
 from birdsim.io import check_output, temporary_sibling
 from birdsim.physics.examples import EXAMPLES
@@ -118,12 +118,18 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         print(
             json.dumps(
-                {"force": FORCE_NOTE, "results": [{"case": c, **r.as_dict()} for c, r in results]},
+                {
+                    "force": FORCE_NOTE,
+                    "units": units_of(bird),
+                    "results": [{"case": c, **r.as_dict()} for c, r in results],
+                },
                 indent=2,
             )
         )
         return 0
+    u = units_of(bird)
     print(f"force: {FORCE_NOTE}; MuJoCo: mean force the held body transmits")
+    print(f"units: forces in {u['force']}, V in {u['speed']}; relative errors have none")
     head = f"{'model':5s} {'case':8s} {'V':>5s} {'analytic Fx':>11s} {'Fz':>9s} {'inverse Fx':>11s} {'Fz':>9s} {'rel.err':>8s}"
     if forward:
         head += f" {'forward Fx':>11s} {'Fz':>9s} {'rel.err':>8s}"

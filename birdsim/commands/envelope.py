@@ -9,10 +9,9 @@ import json
 import math
 from pathlib import Path
 
-from birdsim.commands.common import add_bird_arguments, parse_pairs
+from birdsim.commands.common import REDUCED_UNITS, SI_UNITS, add_bird_arguments, bird_from_args
 from birdsim.flight.envelope import envelope
 from birdsim.flight.presets import DEMO_MODEL, demo_bird
-from birdsim.physics.bird import Bird
 from birdsim.physics.kinematics import get_model
 from birdsim.physics.units import scales
 from birdsim.tables.lookup import load_table
@@ -56,16 +55,24 @@ def _fmt(x: float | None, spec: str = ".3f") -> str:
 
 def run(args: argparse.Namespace) -> int:
     model = get_model(args.model).name
-    bird = Bird.from_toml(args.bird) if args.bird else demo_bird()
-    overrides = parse_pairs(args.set, "--set")
-    bird = bird.with_overrides(overrides) if overrides else bird
+    bird = bird_from_args(args, default=None if args.bird else demo_bird())
     path = Path(args.table) if args.table else shipped_table(bird, model)
     table = load_table(path)
     table.require_model(model)
     table.require_bird(bird)
     env = envelope(table, bird)
     if args.json:
-        print(json.dumps({"table": str(path), "force": FORCE_NOTE, **env.to_dict()}, indent=2))
+        units = {
+            "reduced": REDUCED_UNITS,
+            "si": {k: v for k, v in SI_UNITS.items()},
+            "note": "plain keys in reduced units (table units); *_si keys in the bird file's units",
+        }
+        print(
+            json.dumps(
+                {"table": str(path), "force": FORCE_NOTE, "units": units, **env.to_dict()},
+                indent=2,
+            )
+        )
         return 0
     sc = scales(bird)
     si = bird.rho != 1.0 or bird.omega != 1.0 or bird.semispan != 1.0 or bird.chord != 1.0

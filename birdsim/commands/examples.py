@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 
+from birdsim.commands.common import REDUCED_UNITS
 from birdsim.physics.cycle import evaluate_cycle
 from birdsim.physics.examples import EXAMPLES
 
@@ -19,6 +20,8 @@ def run(args: argparse.Namespace) -> int:
     print(
         "Dissertation examples (sec. 3.5); force = right wing + body drag, seed axes (Fz < 0 is up)"
     )
+    u = REDUCED_UNITS  # the seed bird
+    print(f"units: V in {u['speed']}, Fx, Fy, Fz in {u['force']}, P in {u['power']}")
     print(
         f"{'eq':>3s} {'model':5s} {'regime':6s} {'V':>4s} {'Fx':>8s} {'Fy':>8s} {'Fz':>8s} {'P':>8s} {'Fz range':>17s}"
     )

@@ -12,7 +12,7 @@ from pathlib import Path
 
 from birdsim.commands.common import add_bird_arguments, bird_from_args
 from birdsim.commands.render_flight import add_flight_arguments
-from birdsim.errors import BirdsimError
+from birdsim.errors import BirdsimError, limits_text, magnitude_ok
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -55,7 +55,12 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--beat-rate",
         metavar="HZ",
-        help="wingbeats per second of animation (default: real time for an SI bird, 2 for the seed bird)",
+        help="wingbeats per second of animation (default: real time for an SI bird, 2 for the seed bird; as birdsim render)",
+    )
+    p.add_argument(
+        "--slow-motion",
+        metavar="F",
+        help="F times slower than the default time base (e.g. 4 for the pigeon's 8 Hz wingbeat)",
     )
     p.add_argument(
         "--metres-per-unit",
@@ -78,20 +83,32 @@ def _positive(arg: str, raw: str | None) -> float | None:
         v = float(raw)
     except ValueError:
         raise BirdsimError(f"{arg} {raw!r} is not a number; allowed: a number > 0") from None
-    if not (math.isfinite(v) and v > 0):
-        raise BirdsimError(f"{arg} {raw!r} is invalid; allowed: a number > 0")
+    if not (math.isfinite(v) and magnitude_ok(v, positive=True)):
+        raise BirdsimError(
+            f"{arg} {raw!r} is invalid; allowed: a number > 0, {limits_text(positive=True)}"
+        )
     return v
 
 
 def run(args: argparse.Namespace) -> int:
     from birdsim import export
-    from birdsim.commands.render import _load_table, check_writable, require_bird
+    from birdsim.commands.common import check_writable, load_model_table, require_bird
     from birdsim.export.frames import check_fps
 
     # every cheap check first: a mistake costs nothing and writes nothing
     export.check_format(args.format, Path(args.out))
     fps = check_fps(args.fps)
-    beat_rate = _positive("--beat-rate", args.beat_rate)
+    from birdsim.render.timebase import beat_rate_for, check_time_flags, describe
+
+    check_time_flags(args.beat_rate, args.slow_motion)
+
+    def rate_for(bird) -> float:  # the time base of birdsim render; printed
+        from birdsim.physics.bird import Bird
+
+        rate, words = beat_rate_for(bird or Bird(), args.beat_rate, args.slow_motion)
+        print(f"birdsim export: {describe(rate, words, fps)}", flush=True)
+        return rate
+
     metres = _positive("--metres-per-unit", args.metres_per_unit)
     seconds = _positive("--seconds", args.seconds)
     out = Path(args.out)
@@ -99,6 +116,11 @@ def run(args: argparse.Namespace) -> int:
         from birdsim.export.usd import require_usd
 
         require_usd()
+        if usd_assets(out).exists() and not args.force:
+            raise BirdsimError(
+                f"--out {str(out)!r}: its texture folder {str(usd_assets(out))!r} exists; "
+                "allowed: a new path, or --force to overwrite"
+            )
     if args.format == "bvh":
         from birdsim.export.bvh import require_bvh
 
@@ -129,19 +151,24 @@ def run(args: argparse.Namespace) -> int:
         frames = frames_from_log(
             log,
             fps=fps,
-            beat_rate=beat_rate,
+            beat_rate=rate_for(log["bird_obj"]),
             metres_per_unit=metres,
             source=f"flight log {Path(args.source).name}",
         )  # type: ignore[arg-type]
     elif not args.kinematic:  # free flight, the default: flown as `birdsim render` flies it
-        from birdsim.commands.fly import load_bird
-        from birdsim.commands.render_flight import flight_reference, fly_reference
+        from birdsim.commands.render_flight import (
+            flight_bird_and_table,
+            flight_reference,
+            fly_reference,
+        )
         from birdsim.export.flightlog import frames_from_log
         from birdsim.export.frames import time_per_second
         from birdsim.flight.manoeuvre import MAX_BEATS
 
         reference, model, gusts = flight_reference(args.source, args.model, args.gust)
-        bird = load_bird(args.bird)
+        bird_and_table = flight_bird_and_table(args, model)  # --bird and --set, as flown
+        bird = bird_and_table[0]
+        beat_rate = rate_for(bird)
         per_s = time_per_second(bird, beat_rate)
         if seconds is None:
             seconds = float(reference.duration_beats) * bird.period / per_s
@@ -151,7 +178,9 @@ def run(args: argparse.Namespace) -> int:
             raise BirdsimError(
                 f"--seconds {args.seconds} is {beats:g} wingbeats of flight; allowed: at most {MAX_BEATS:g} wingbeats"
             )
-        log = fly_reference(reference, model, args, beats=beats, gusts=gusts)
+        log = fly_reference(
+            reference, model, args, beats=beats, gusts=gusts, bird_and_table=bird_and_table
+        )
         frames = frames_from_log(
             log,
             fps=fps,
@@ -174,7 +203,7 @@ def run(args: argparse.Namespace) -> int:
         from birdsim.tables.shipped import table_folder
 
         table_path = Path(args.table) if args.table else table_folder() / f"{model}.npz"
-        table = _load_table(table_path, model, explicit=bool(args.table))
+        table = load_model_table(table_path, model, explicit=bool(args.table))
         bird = bird_from_args(args) if (args.bird or args.set) else None
         if bird is not None:
             require_bird(table, bird, table_path)
@@ -184,7 +213,7 @@ def run(args: argparse.Namespace) -> int:
             bird=bird,
             model=model,
             fps=fps,
-            beat_rate=beat_rate,
+            beat_rate=rate_for(bird),
             seconds=seconds,
             metres_per_unit=metres,
         )  # type: ignore[arg-type]
@@ -193,5 +222,24 @@ def run(args: argparse.Namespace) -> int:
     print(
         f"wrote {path} ({args.format}, {frames.frames} frames @ {fps:g} fps = {(frames.frames - 1) / fps:.2f} s, "
         f"{size / 1e6:.2f} MB, model {frames.model}, bird {frames.bird.name}, in {time.perf_counter() - wall0:.1f} s)"
+        + (assets_note(path) if args.format == "usd" else "")
     )
     return 0
+
+
+def usd_assets(out: Path) -> Path:
+    """The folder beside a USD file that holds the textures it references (``c.usd`` ->
+    ``c_assets/``; :func:`birdsim.export.usd.write_usd`)."""
+    return out.with_name(out.stem + "_assets")
+
+
+def assets_note(out: Path) -> str:
+    """The end of the output line: the texture folder that must travel with the file."""
+    folder = usd_assets(out)
+    files = sorted(p.name for p in folder.iterdir()) if folder.is_dir() else []
+    if not files:
+        return ""
+    return (
+        f"; and {folder}/ ({len(files)} textures the file references by relative path: "
+        "move or copy it together with the file)"
+    )

@@ -9,6 +9,13 @@ import math
 import sys
 from pathlib import Path
 
+from birdsim.commands.common import (
+    check_writable,
+    load_bird,
+    load_table_for,
+    short_length,
+    units_of,
+)
 from birdsim.errors import BirdsimError
 from birdsim.flight.presets import DEMO_MODEL as DEFAULT_MODEL
 
@@ -58,59 +65,14 @@ def register(sub: argparse._SubParsersAction) -> None:
         metavar="S",
         help="simulated time in the bird's time units (default: the manoeuvre's length)",
     )
+    p.add_argument(
+        "--strict",
+        action="store_true",
+        help="a flight with saturated wingbeats is an error (exit 2, nothing written); else one warning line on stderr",
+    )
     p.add_argument("--force", action="store_true", help="overwrite an existing --out")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.set_defaults(func=run)
-
-
-def default_bird_path() -> Path:
-    """models/seed-bird.toml (here, else the repository's)."""
-    local = Path("models") / "seed-bird.toml"
-    return (
-        local
-        if local.is_file()
-        else Path(__file__).resolve().parents[2] / "models" / "seed-bird.toml"
-    )
-
-
-def load_bird(arg: str | None):
-    from birdsim.physics.bird import Bird
-
-    if arg:
-        return Bird.from_toml(arg)
-    path = default_bird_path()
-    return Bird.from_toml(path) if path.is_file() else Bird()
-
-
-def load_table_for(bird, model: str, table_arg: str | None):
-    """The table: --table, else the shipped one for this bird and model; refused with
-    one line when built for another model or another reduced bird."""
-    from birdsim.tables.lookup import load_table
-
-    if table_arg:
-        path = Path(table_arg)
-        npz = path if path.suffix in (".npz", ".json") else path.with_name(path.name + ".npz")
-        if not npz.with_suffix(".npz").exists():
-            raise BirdsimError(
-                f"--table {str(path)!r} does not exist; allowed: a table file (.npz) written by `birdsim tables build`"
-            )
-    else:
-        try:
-            from birdsim.tables.shipped import shipped_table
-        except ImportError:  # pragma: no cover - before the shipped-table finder lands
-            path = Path("tables") / f"{model}.npz"
-        else:
-            path = shipped_table(bird, model)
-    table = load_table(path)
-    if table.model != model:
-        raise BirdsimError(
-            f"--table {str(path)!r} was built for model {table.model!r}, not {model!r}; allowed: a table for {model}"
-        )
-    try:
-        table.require_bird(bird)
-    except BirdsimError as exc:
-        raise BirdsimError(f"--table {str(path)!r}: {exc}") from None
-    return table
 
 
 def parse_seconds(raw: str | None) -> float | None:
@@ -130,7 +92,6 @@ def parse_seconds(raw: str | None) -> float | None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from birdsim.commands.render import check_writable
     from birdsim.flight.freeflight import DemandSchedule, fly, parse_gust
     from birdsim.flight.manoeuvre import MAX_BEATS, Manoeuvre
     from birdsim.flight.path_file import get_flight
@@ -192,12 +153,18 @@ def run(args: argparse.Namespace) -> int:
     if isinstance(flight, Manoeuvre):
         phases = flight.regime
     info = summary(arrays, phases=phases)
+    from birdsim.flight.saturation import report_saturation
+    from birdsim.flight.summary_units import with_units
+
+    report_saturation(arrays, command="fly", bird_arg=args.bird, model=model, strict=args.strict)
+    info = with_units(info, bird)
     if out is not None:
         save_log(arrays, out, args.force)
         info["log"] = str(out)
     if args.json:
         print(json.dumps(info, indent=2))
     else:
+        m = short_length(units_of(bird))
         sat = (
             f", saturated in {info['wingbeats_saturated']} wingbeat(s)"
             if info["wingbeats_saturated"]
@@ -205,9 +172,10 @@ def run(args: argparse.Namespace) -> int:
         )
         print(
             f"flew {reference.name} ({model}, {bird.name}, {'open loop' if result.open_loop else 'closed loop'}): "
-            f"{info['wingbeats']:.1f} wingbeats, position error RMS {info['rms_error']:.3g} max {info['max_error']:.3g}"
+            f"{info['wingbeats']:.1f} wingbeats, position error RMS {info['rms_error']:.3g} {m}, "
+            f"max {info['max_error']:.3g} {m}"
             + (
-                f" (after 2 wingbeats RMS {info['rms_error_after_start']:.3g})"
+                f" (after 2 wingbeats RMS {info['rms_error_after_start']:.3g} {m})"
                 if info["wingbeats"] > 2
                 else ""
             )

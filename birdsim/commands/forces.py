@@ -6,8 +6,8 @@ import argparse
 import json
 import math
 
-from birdsim.commands.common import add_bird_arguments, bird_from_args, parse_pairs
-from birdsim.errors import BirdsimError
+from birdsim.commands.common import add_bird_arguments, bird_from_args, parse_pairs, units_of
+from birdsim.errors import BirdsimError, check_number
 from birdsim.physics.cycle import DEFAULT_SAMPLES, evaluate_cycle
 from birdsim.physics.kinematics import get_model
 from birdsim.physics.span import span_ratio
@@ -75,6 +75,7 @@ def run(args: argparse.Namespace) -> int:
         raise BirdsimError(
             f"--climb {args.climb} is invalid; allowed: a finite number (positive up)"
         )
+    check_number("--climb", climb, "a finite number (positive up)")
     if not args.appendix_grid and not 2 <= args.samples <= MAX_SAMPLES:
         raise BirdsimError(
             f"--samples {args.samples} is invalid; allowed: an integer >= 2 and <= {MAX_SAMPLES}"
@@ -95,6 +96,7 @@ def run(args: argparse.Namespace) -> int:
         "body_drag_x": float(cyc.body_drag_x),
         "body_drag_z": float(cyc.body_drag_z),
         "span_ratio": float(span_ratio(model, params, bird=bird)),
+        "units": units_of(bird),
     }
     if len(cyc.joint_power_mean) > 1:
         out["joint_power"] = {g: float(v) for g, v in cyc.joint_power_mean.items()}
@@ -111,6 +113,8 @@ def run(args: argparse.Namespace) -> int:
             + ", ".join(f"{k} = {v:g}" for k, v in filled.items())
         )
     print(f"force: {FORCE_NOTE}")
+    u = out["units"]
+    print(f"units: Fx, Fy, Fz in {u['force']}, P in {u['power']}, V and climb in {u['speed']}")
     print(f"{'':12s}{'Fx':>10s}{'Fy':>10s}{'Fz':>10s}{'P':>10s}")
     rows = [("mean", out["mean"]), ("whole bird", out["whole_bird"])]
     rows += [(f"panel {k}", v) for k, v in out["panels"].items()] if len(out["panels"]) > 1 else []

@@ -4,10 +4,17 @@ rendered headlessly to an MP4 (H.264, yuv420p)."""
 from __future__ import annotations
 
 import argparse
-import re
 from pathlib import Path
 
-from birdsim.commands.common import add_bird_arguments, bird_from_args
+from birdsim.commands.common import (
+    add_bird_arguments,
+    bird_from_args,
+    check_still,
+    check_writable,
+    load_model_table,
+    require_bird,
+    slug,
+)
 from birdsim.commands.render_flight import add_flight_arguments, is_log, run_flight
 from birdsim.errors import BirdsimError
 from birdsim.flight.manoeuvre import PRESETS
@@ -30,7 +37,11 @@ def register(sub: argparse._SubParsersAction) -> None:
         default=None,
         help="kinematic model: base, m1, m2, m3 or m4 (default: the demo model m3 in free flight, m4 with --kinematic)",
     )
-    p.add_argument("--table", metavar="FILE", help="lookup table (default tables/<model>.npz)")
+    p.add_argument(
+        "--table",
+        metavar="FILE",
+        help="lookup table (default: the shipped table for the bird and model in free flight, tables/seed-m3.npz for the demo bird; tables/<model>.npz with --kinematic)",
+    )
     p.add_argument(
         "--out", metavar="FILE.mp4", help="output video (default renders/<manoeuvre>-<model>.mp4)"
     )
@@ -48,9 +59,15 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
     p.add_argument(
         "--beat-rate",
-        default="2",
+        default=None,
         metavar="HZ",
-        help="wingbeats shown per second of video (default 2)",
+        help="wingbeats shown per second of video (default: real time for an SI bird, 2 for the seed bird; as birdsim export)",
+    )
+    p.add_argument(
+        "--slow-motion",
+        default=None,
+        metavar="F",
+        help="F times slower than the default time base (e.g. 4 for the pigeon's 8 Hz wingbeat)",
     )
     p.add_argument(
         "--camera",
@@ -78,7 +95,18 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="time of the --still frame in wingbeats from the start (default: the middle)",
     )
     p.add_argument("--no-trails", action="store_true", help="no control-point pathlines")
-    p.add_argument("--no-overlay", action="store_true", help="no text overlay")
+    p.add_argument("--no-overlay", action="store_true", help="no text overlay (= --overlay none)")
+    p.add_argument(
+        "--overlay",
+        default="short",
+        metavar="WHAT",
+        help="short (default: at most three lines: time, position error, saturation), full (the engineering view: forces, parameters, tail moment) or none",
+    )
+    p.add_argument(
+        "--clean",
+        action="store_true",
+        help="the bird and the world only: no text, plot strip, pathlines or reference path",
+    )
     p.add_argument(
         "--gl", default="auto", help="auto (OSMesa if installed, else EGL), osmesa or egl"
     )
@@ -102,10 +130,6 @@ def _number(arg: str, raw: str | None, kind: type = float) -> float | int | None
         raise BirdsimError(f"{arg} {raw!r} is not {what}") from None
 
 
-def _slug(text: str) -> str:
-    return re.sub(r"[^A-Za-z0-9_.-]+", "_", text).strip("_") or "manoeuvre"
-
-
 def _options(args: argparse.Namespace):
     """RenderOptions from the command line (one clear line for a bad value)."""
     from birdsim.render.renderer import RenderOptions, parse_size
@@ -113,36 +137,45 @@ def _options(args: argparse.Namespace):
     if args.gl not in GL_CHOICES:
         raise BirdsimError(f"--gl {args.gl!r} is unknown; allowed: {', '.join(GL_CHOICES)}")
     width, height = parse_size(args.size)
+    detail = "none" if args.no_overlay else args.overlay
+    if detail not in ("short", "full", "none"):
+        raise BirdsimError(f"--overlay {detail!r} is unknown; allowed: short, full or none")
+    if args.clean and args.forces is not None:
+        raise BirdsimError("--clean draws no force arrows; allowed: --clean or --forces, not both")
     return RenderOptions(
         width=width,
         height=height,
         fps=_number("--fps", args.fps, int),  # type: ignore[arg-type]
         seconds=_number("--seconds", args.seconds),
-        beats_per_second=_number("--beat-rate", args.beat_rate),  # type: ignore[arg-type]
+        beats_per_second=_beat_rate(args, _number("--fps", args.fps, int)),
         camera=args.camera,
         quality=args.quality,
         forces=_forces_scale(args.forces),
-        trails=not args.no_trails,
-        overlay=not args.no_overlay,
+        trails=not (args.no_trails or args.clean),
+        overlay=detail != "none" and not args.clean,
+        overlay_detail="full" if detail == "full" else "short",
+        reference=not args.clean,
         gl=args.gl,
         progress=not args.quiet,
     )
 
 
-def check_still(args: argparse.Namespace, clip_beats: float) -> float | None:
-    """``--still``/``--at``/``--sheet`` checked before any work; the still's time in
-    wingbeats (None when no still is asked for)."""
-    if args.at is not None and not args.still:
-        raise BirdsimError(f"--at {args.at!r} needs --still FILE.png; allowed: --at with --still")
-    if args.sheet and args.still:
-        raise BirdsimError("--sheet needs a video; allowed: --sheet without --still")
-    if not args.still:
-        return None
-    at = _at_beats(args.at, clip_beats)
-    if Path(args.still).suffix.lower() != ".png":
-        raise BirdsimError(f"--still {args.still!r} does not end in .png; allowed: a .png path")
-    check_writable(Path(args.still), args.force, "--still")
-    return at
+def _beat_rate(args: argparse.Namespace, fps: int | float | None) -> float:
+    """Wingbeats per second of video (birdsim.render.timebase, the same as export's);
+    prints the time base chosen."""
+    from birdsim.render.timebase import beat_rate_for, check_time_flags, describe
+
+    check_time_flags(args.beat_rate, args.slow_motion)
+    if is_log(args.manoeuvre):
+        from birdsim.flight.flightlog import load_log
+
+        bird = load_log(args.manoeuvre, "LOG")["bird_obj"]
+    else:
+        bird = bird_from_args(args)
+    rate, words = beat_rate_for(bird, args.beat_rate, args.slow_motion)
+    if fps is not None and 1 <= fps <= 240:
+        print(f"birdsim render: {describe(rate, words, fps)}", flush=True)
+    return rate
 
 
 def run(args: argparse.Namespace) -> int:
@@ -166,7 +199,7 @@ def run(args: argparse.Namespace) -> int:
     at = check_still(args, seconds * options.beats_per_second)
     if at is None:
         out = (
-            Path(args.out) if args.out else Path("renders") / f"{_slug(manoeuvre.name)}-{model}.mp4"
+            Path(args.out) if args.out else Path("renders") / f"{slug(manoeuvre.name)}-{model}.mp4"
         )
         if out.suffix.lower() != ".mp4":
             raise BirdsimError(f"--out {str(out)!r} does not end in .mp4; allowed: a .mp4 path")
@@ -179,7 +212,7 @@ def run(args: argparse.Namespace) -> int:
     from birdsim.tables.shipped import table_folder
 
     table_path = Path(args.table) if args.table else table_folder() / f"{model}.npz"
-    table = _load_table(table_path, model, explicit=bool(args.table))
+    table = load_model_table(table_path, model, explicit=bool(args.table))
     bird = bird_from_args(args) if (args.bird or args.set) else None
     if bird is not None:
         require_bird(table, bird, table_path)
@@ -223,65 +256,3 @@ def _forces_scale(raw: str | None) -> float | None:
             f"--forces {raw!r} is not a positive number; allowed: semispans per weight in (0, 1e6], e.g. --forces 1.5"
         )
     return value
-
-
-def _at_beats(raw: str | None, clip_beats: float) -> float:
-    """``--at BEATS`` inside the clip [0, clip_beats] (default: the middle)."""
-    if raw is None:
-        return 0.5 * clip_beats
-    try:
-        value = float(raw)
-    except ValueError:
-        value = float("nan")
-    if not (0.0 <= value <= clip_beats):
-        raise BirdsimError(
-            f"--at {raw!r} is outside the clip; allowed: a time in wingbeats in [0, {clip_beats:g}]"
-        )
-    return value
-
-
-def check_writable(out: Path, force: bool, arg: str = "--out") -> None:
-    """Refuse an existing file without --force and a folder we cannot write into
-    (probed by creating and removing the temporary sibling the writer will use)."""
-    import os
-
-    from birdsim.io import check_output, temporary_sibling
-
-    check_output(out, force, arg)
-    try:
-        os.unlink(temporary_sibling(out))
-    except OSError as exc:
-        raise BirdsimError(
-            f"{arg} {str(out)!r} is not writable: {exc.strerror}; allowed: a path in a writable folder"
-        ) from None
-
-
-def require_bird(table, bird, table_path: Path) -> None:
-    """Refuse, in one line naming the table and both birds, a bird whose reduced bird is
-    not the one the table was built for (:meth:`LookupTable.require_bird`; the same line
-    as free flight's ``birdsim.commands.fly.load_table_for``)."""
-    try:
-        table.require_bird(bird)
-    except BirdsimError as exc:
-        raise BirdsimError(f"--table {str(table_path)!r}: {exc}") from None
-
-
-def _load_table(path: Path, model: str, *, explicit: bool):
-    from birdsim.flight.playback import check_table_model
-
-    if not path.exists():
-        hint = (
-            f"build it with `birdsim tables build --model {model}`"
-            if not explicit
-            else "a table file (.npz)"
-        )
-        raise BirdsimError(f"--table {str(path)!r} does not exist; allowed: {hint}")
-    try:
-        from birdsim.tables.lookup import load_table
-    except ImportError:  # pragma: no cover - tables land with issue 3
-        raise BirdsimError(
-            "--table: this birdsim has no table support (birdsim.tables.lookup is missing)"
-        ) from None
-    table = load_table(path)
-    check_table_model(table, model)
-    return table

@@ -8,6 +8,14 @@ import argparse
 import dataclasses
 from pathlib import Path
 
+from birdsim.commands.common import (
+    bird_from_args,
+    check_still,
+    check_writable,
+    load_bird,
+    load_table_for,
+    slug,
+)
 from birdsim.errors import BirdsimError
 
 
@@ -27,6 +35,11 @@ def add_flight_arguments(p: argparse.ArgumentParser) -> None:
     )
     p.add_argument(
         "--open-loop", action="store_true", help="free flight: feed-forward only (no feedback)"
+    )
+    p.add_argument(
+        "--strict",
+        action="store_true",
+        help="free flight: saturated wingbeats are an error (exit 2, nothing written); else one warning line",
     )
 
 
@@ -58,31 +71,53 @@ def flight_reference(source: str, model_arg: str | None, gust_args: list[str]):
     return reference, model, gusts
 
 
-def fly_reference(
-    reference, model: str, args: argparse.Namespace, *, beats: float, gusts: list
-) -> dict:
-    """Fly ``reference`` in MuJoCo for ``beats`` wingbeats with the bird of ``--bird``/
-    ``--set`` and the table of ``--table`` (else the shipped one for that bird), as
-    ``birdsim render`` and ``birdsim export`` do; the flight log's arrays (bird units).
+def flight_bird_and_table(args: argparse.Namespace, model: str) -> tuple:
+    """The bird of ``--bird``/``--set`` (default the demo bird) and the table of
+    ``--table`` (else the shipped one for that bird), checked for free flight.
 
     Raises:
-        BirdsimError: a bird without gravity, a table for another model or bird.
+        BirdsimError: a bad bird file or value, a bird without gravity, a table missing
+            or built for another model or bird (one line).
     """
-    from birdsim.commands.common import parse_pairs
-    from birdsim.commands.fly import load_bird, load_table_for
-    from birdsim.flight.flightlog import log_arrays
-    from birdsim.flight.freeflight import fly
-
-    bird = load_bird(args.bird)
-    overrides = parse_pairs(getattr(args, "set", None), "--set")
-    bird = bird.with_overrides(overrides) if overrides else bird
+    bird = bird_from_args(args, default=None if args.bird else load_bird(None))
     if bird.gravity <= 0:
         raise BirdsimError(
             f"--bird {bird.name!r} has gravity={bird.gravity:g}; allowed: a bird file with gravity > 0 for free flight (or --kinematic)"
         )
-    table = load_table_for(bird, model, args.table)
+    return bird, load_table_for(bird, model, args.table)
+
+
+def fly_reference(
+    reference,
+    model: str,
+    args: argparse.Namespace,
+    *,
+    beats: float,
+    gusts: list,
+    bird_and_table: tuple | None = None,
+) -> dict:
+    """Fly ``reference`` in MuJoCo for ``beats`` wingbeats with ``bird_and_table``
+    (default :func:`flight_bird_and_table`), as ``birdsim render`` and ``birdsim
+    export`` do; the flight log's arrays (bird units).
+
+    Raises:
+        BirdsimError: a bird without gravity, a table for another model or bird.
+    """
+    from birdsim.flight.flightlog import log_arrays
+    from birdsim.flight.freeflight import fly
+
+    bird, table = bird_and_table or flight_bird_and_table(args, model)
     result = fly(reference, table, bird, model, beats=beats, gusts=gusts, open_loop=args.open_loop)
     log = log_arrays(result, reference.name)
+    from birdsim.flight.saturation import report_saturation
+
+    report_saturation(
+        log,
+        command=getattr(args, "command", "render"),
+        bird_arg=args.bird,
+        model=model,
+        strict=getattr(args, "strict", False),
+    )
     log["bird_obj"] = bird
     return log
 
@@ -92,7 +127,6 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
 
     ``options_from_args(args, seconds=None)`` builds the RenderOptions as the kinematic
     path does (one place for size, fps, camera, quality...)."""
-    from birdsim.commands.render import _slug, check_still, check_writable
     from birdsim.flight.flightlog import load_log
     from birdsim.flight.flightstates import flight_states
     from birdsim.render.gl import select_gl
@@ -105,12 +139,12 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
             )
         log = load_log(args.manoeuvre, "LOG")
         name = str(log.get("manoeuvre", "")) or Path(args.manoeuvre).stem
-        default_out = Path("renders") / f"{_slug(Path(args.manoeuvre).stem)}.mp4"
+        default_out = Path("renders") / f"{slug(Path(args.manoeuvre).stem)}.mp4"
         reference = None
     else:
         reference, model, gusts = flight_reference(args.manoeuvre, args.model, args.gust)
         name = reference.name
-        default_out = Path("renders") / f"{_slug(name)}-{model}.mp4"
+        default_out = Path("renders") / f"{slug(name)}-{model}.mp4"
     if options.seconds is None:  # the whole flight: one line when it would exceed the longest video
         from birdsim.render.options import MAX_SECONDS, RenderError
 
@@ -134,6 +168,9 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
     else:
         clip_beats = float(log["t"][-1]) * float(log["omega"]) / (2 * 3.141592653589793)
     at = check_still(args, clip_beats)
+    select_gl(args.gl)  # a missing GL library -> one line; MUJOCO_GL set before the renderer starts
+    # the bird and the table before any output is checked (checking makes its folder)
+    bird_and_table = flight_bird_and_table(args, model) if reference is not None else None
     out = Path(args.out) if args.out else default_out
     if at is None:
         if out.suffix.lower() != ".mp4":
@@ -143,14 +180,15 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
         if Path(args.sheet).suffix.lower() != ".png":
             raise BirdsimError(f"--sheet {args.sheet!r} does not end in .png; allowed: a .png path")
         check_writable(Path(args.sheet), args.force, "--sheet")
-    select_gl(args.gl)  # a missing GL library -> one line; MUJOCO_GL set before the renderer starts
     if reference is not None:
         beats = (
             reference.duration_beats
             if options.seconds is None
             else options.seconds * options.beats_per_second
         )
-        log = fly_reference(reference, model, args, beats=beats, gusts=gusts)
+        log = fly_reference(
+            reference, model, args, beats=beats, gusts=gusts, bird_and_table=bird_and_table
+        )
     states = flight_states(
         log,
         dataclasses.replace(options, seconds=None) if reference is not None else options,

@@ -1,4 +1,6 @@
 """``birdsim tables build|info|lookup``: optimal-wingbeat lookup tables over (Fx, Fz, V).
+This module registers the three and builds; ``info`` and ``lookup`` are in
+:mod:`birdsim.commands.tables_info`.
 
 Forces are the dissertation's: right wing + body drag, seed earth axes, Fz < 0 is up.
 """
@@ -6,22 +8,26 @@ Forces are the dissertation's: right wing + body drag, seed earth axes, Fz < 0 i
 from __future__ import annotations
 
 import argparse
-import json
 from pathlib import Path
 
-import numpy as np
-
+from birdsim.commands import table_jacobians
 from birdsim.commands.common import add_bird_arguments, bird_from_args
+from birdsim.commands.tables_info import FORCE_NOTE, run_info, run_lookup
 from birdsim.errors import BirdsimError, check_finite
 from birdsim.io import check_output
 from birdsim.physics.kinematics import get_model
 from birdsim.physics.units import reduced_bird
 from birdsim.tables.build import BuildConfig, BuildSettings, Grid, build_table
-from birdsim.tables.cost import FRACTION_NAMES, CostWeights
-from birdsim.tables.lookup import STATUS_NAMES, load_table, table_paths
-from birdsim.tables.smoothness import table_smoothness
+from birdsim.tables.cost import CostWeights
+from birdsim.tables.lookup import table_paths
 
-FORCE_NOTE = "right wing + body drag (the dissertation's flapcost force), Fz < 0 is up"
+#: The flight grid (``make flight-tables``, docs/flight.md): Fx, Fz in table force units,
+#: V in omega s; 21 x 17 x 17 cells over what the presets ask.  ``tables build --bird``
+#: builds it unless ``--grid`` or ``--size`` says otherwise, so that the command the
+#: table finder suggests for a new bird builds a table that flies the presets.
+FLIGHT_GRID = "Fx=-0.2:0.3:21,Fz=-0.4:0:17,V=0:0.8:17"
+#: Nodes per axis of the general grid (Fx=-0.5:0.5, Fz=-0.5:0, V=0:1), as ``make tables``.
+DEFAULT_SIZE = 11
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -31,7 +37,10 @@ def register(sub: argparse._SubParsersAction) -> None:
         description=__doc__,
     )
     tsub = p.add_subparsers(
-        dest="tables_command", metavar="{build,info,lookup}", required=True, parser_class=type(p)
+        dest="tables_command",
+        metavar="{build,info,lookup,jacobians}",
+        required=True,
+        parser_class=type(p),
     )
 
     b = tsub.add_parser("build", help="optimise every cell of a (Fx, Fz, V) grid for one model")
@@ -40,13 +49,15 @@ def register(sub: argparse._SubParsersAction) -> None:
         "--grid",
         default="",
         help='e.g. "Fx=-0.5:0.5:11,Fz=-0.5:0:11,V=0:1:11" or "V=0|0.5|1"; '
-        "axes left out take the default range (Fx=-0.5:0.5, Fz=-0.5:0, V=0:1)",
+        "axes left out take the default range (Fx=-0.5:0.5, Fz=-0.5:0, V=0:1); "
+        f'default with --bird: the flight grid "{FLIGHT_GRID}" (flies the presets)',
     )
     b.add_argument(
         "--size",
         type=int,
-        default=11,
-        help="nodes per axis for axes not given in --grid (default 11)",
+        default=None,
+        help=f"nodes per axis for axes not given in --grid (default {DEFAULT_SIZE}; "
+        "given with --bird: the general grid instead of the flight grid)",
     )
     b.add_argument(
         "--climb",
@@ -135,6 +146,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     q.add_argument("--clip", action="store_true", help="clip demands outside the grid to its edge")
     q.add_argument("--json", action="store_true", help="print JSON")
     q.set_defaults(func=run_lookup)
+    table_jacobians.register(tsub)
 
 
 def _positive_int(name: str, value: int | None) -> None:
@@ -166,6 +178,17 @@ def _check_build_options(args: argparse.Namespace) -> None:
         raise BirdsimError(f"--starts {args.starts} is invalid; allowed: an integer >= 0")
 
 
+def _grid_spec(args: argparse.Namespace) -> str:
+    """``--grid``; with ``--bird`` and neither ``--grid`` nor ``--size``, the flight grid."""
+    if not args.grid and args.bird is not None and args.size is None:
+        return FLIGHT_GRID
+    return args.grid
+
+
+def _size(args: argparse.Namespace) -> int:
+    return DEFAULT_SIZE if args.size is None else args.size
+
+
 def run_build(args: argparse.Namespace) -> int:
     import sys
 
@@ -179,7 +202,7 @@ def run_build(args: argparse.Namespace) -> int:
             raise BirdsimError(
                 f"--jobs {args.jobs} with --dask {args.dask!r}; allowed: one of them (the cluster has its own workers)"
             )
-    grid = Grid.parse(args.grid, args.size, climb=args.climb)
+    grid = Grid.parse(_grid_spec(args), _size(args), climb=args.climb)
     # an SI bird gets a table in table units: the table records the reduced bird
     bird = reduced_bird(bird_from_args(args))
     if model.name == "m5":
@@ -245,163 +268,12 @@ def run_build(args: argparse.Namespace) -> int:
     return 0
 
 
-def table_summary(path: str) -> dict:
-    t = load_table(path)
-    m = t.meta
-    status = t.status
-    unreachable = np.argwhere(status == "unreachable")
-    cells = int(np.prod(t.shape))
-    per_v = {
-        f"{v:g}": int(np.sum(status[:, :, k] == "unreachable")) for k, v in enumerate(t.axes["V"])
-    }
-    frac = t.cost_fractions.reshape(-1, len(FRACTION_NAMES)).mean(axis=0)
-    return {
-        "file": str(table_paths(path)[0]),
-        "model": t.model,
-        "bird": t.bird.name,
-        "force": FORCE_NOTE,
-        "param_names": list(t.param_names),
-        "grid": {
-            a: {"min": float(t.axes[a][0]), "max": float(t.axes[a][-1]), "count": len(t.axes[a])}
-            for a in t.axis_names
-        },
-        "climb_axis": t.has_climb,
-        "cells": cells,
-        "status": {s: int(np.sum(status == s)) for s in STATUS_NAMES},
-        "coverage": float(np.mean(status == "ok")),
-        "solver_not_converged": int(np.sum(~np.asarray(t.converged, dtype=bool))),
-        "unreachable_per_V": per_v,
-        "unreachable_examples": [
-            {a: float(t.axes[a][idx[k]]) for k, a in enumerate(t.axis_names)}
-            | {
-                "achieved_Fx": float(t.achieved[tuple(idx)][0]),
-                "achieved_Fz": float(t.achieved[tuple(idx)][1]),
-            }
-            for idx in unreachable[:: max(1, len(unreachable) // 5)][:5]
-        ],
-        "max_force_error_ok": float(t.force_error[status == "ok"].max())
-        if np.any(status == "ok")
-        else None,
-        "smoothness": smoothness(t),
-        "cost": {
-            "min": float(t.cost.min()),
-            "median": float(np.median(t.cost)),
-            "max": float(t.cost.max()),
-        },
-        "mean_cost_fractions": dict(zip(FRACTION_NAMES, map(float, frac))),
-        "evaluations": int(t.evaluations.sum()),
-        "provenance": {
-            k: m.get(k)
-            for k in (
-                "package_version",
-                "git_commit",
-                "built_at",
-                "build_seconds",
-                "cells_per_second",
-                "cost_weights",
-                "solver",
-                "regularising_pass",
-            )
-        },
-    }
-
-
-def smoothness(t) -> dict:
-    """The library's smoothness measure (:mod:`birdsim.tables.smoothness`) as a dict."""
-    return table_smoothness(t).to_dict()
-
-
-def run_info(args: argparse.Namespace) -> int:
-    s = table_summary(args.file)
-    if args.json:
-        print(json.dumps(s, indent=2))
-        return 0
-    print(f"{s['file']}: model {s['model']}, bird {s['bird']}; force: {s['force']}")
-    print(
-        "grid: "
-        + ", ".join(
-            f"{a} [{g['min']:g}, {g['max']:g}] x {g['count']}" for a, g in s["grid"].items()
-        )
-        + ("" if s["climb_axis"] else "; no climb axis (level flight: lookups answer climb = 0)")
-    )
-    print(f"parameters: {', '.join(s['param_names'])}")
-    st = s["status"]
-    print(
-        f"cells: {s['cells']}; ok {st['ok']} ({100 * s['coverage']:.1f} %), unreachable {st['unreachable']}, failed {st['failed']}"
-    )
-    print(
-        f"cells whose kept SLSQP answer stopped without converging (e.g. iteration limit): {s['solver_not_converged']}"
-    )
-    print("unreachable per V: " + ", ".join(f"{v}: {n}" for v, n in s["unreachable_per_V"].items()))
-    for ex in s["unreachable_examples"]:
-        print(
-            f"  e.g. demand Fx={ex['Fx']:+.3f} Fz={ex['Fz']:+.3f} V={ex['V']:.3f} -> achieved Fx={ex['achieved_Fx']:+.3f} Fz={ex['achieved_Fz']:+.3f}"
-        )
-    if s["max_force_error_ok"] is not None:
-        print(f"largest force error of an ok cell: {s['max_force_error_ok']:.2e}")
-    sm = s["smoothness"]
-    print(
-        f"smoothness: zig-zag share {100 * sm['zigzag_share']:.1f} % ({sm['zigzag_triples']} of {sm['triples']} reachable "
-        f"triples go out and back by > {sm['zigzag_rad']} rad; "
-        + ", ".join(f"along {a} {100 * v:.1f} %" for a, v in sm["per_axis"].items())
-        + ")"
-    )
-    print(
-        "largest step between reachable neighbours (rad): "
-        + ", ".join(f"{n} {v:.3f}" for n, v in sm["largest_jump"].items())
-    )
-    for w in sm["worst"][:3]:
-        where = " ".join(f"{a}={w[a]:+.3f}" for a in s["grid"])
-        print(f"  zig-zag of {w['size_rad']:.3f} rad in {w['param']} along {w['axis']} at {where}")
-    c = s["cost"]
-    print(
-        f"cost: min {c['min']:.4f}, median {c['median']:.4f}, max {c['max']:.4f}; mean fractions "
-        + ", ".join(f"{k} {100 * v:.0f} %" for k, v in s["mean_cost_fractions"].items())
-    )
-    p = s["provenance"]
-    print(
-        f"built {p['built_at']} by birdsim {p['package_version']} (commit {p['git_commit']}) in {p['build_seconds']} s "
-        f"({p['cells_per_second']} cells/s), {s['evaluations']} cycle evaluations"
-    )
-    print(f"cost weights: {p['cost_weights']}")
-    rp = p.get("regularising_pass")
-    if rp:
-        print(
-            f"regularising pass (tolerance {p['solver'].get('smooth_tol')}): {rp['rounds']} rounds, {rp['cells_resolved']} cells "
-            f"re-solved, {rp['cells_changed']} changed, zig-zag cells per round {rp['zigzag_cells']}, {rp['seconds']} s"
-        )
-    else:
-        print("regularising pass: none")
-    return 0
-
-
-def _demand(name: str, raw: str) -> float:
-    return check_finite(f"--{name}", raw, "a finite number inside the table grid")
-
-
-def run_lookup(args: argparse.Namespace) -> int:
-    t = load_table(args.file)
-    fx, fz, v = _demand("Fx", args.Fx), _demand("Fz", args.Fz), _demand("V", args.V)
-    vc = _demand("climb", args.climb)
-    out = t.lookup_many(fx, fz, v, clip=args.clip, climb=vc)
-    params = {n: float(out[n]) for n in t.param_names}
-    result = {
-        "model": t.model,
-        "demand": {"Fx": fx, "Fz": fz, "V": v, "climb": vc},
-        "clipped": bool(args.clip),
-        "params": params,
-        "achieved_interpolated": {k: float(out[f"achieved_{k}"]) for k in ("Fx", "Fz", "P")},
-        "status": t.status_at(fx, fz, v, clip=args.clip, climb=vc),
-        "force": FORCE_NOTE,
-    }
-    if args.json:
-        print(json.dumps(result, indent=2))
-        return 0
-    print(
-        f"model {t.model}, demand Fx={fx:g} Fz={fz:g} V={v:g} climb={vc:g} ({FORCE_NOTE}); cell status: {result['status']}"
-    )
-    for n, val in params.items():
-        print(f"  {n:14s} {val:+.4f} rad")
-    a = result["achieved_interpolated"]
-    print(f"  achieved (interpolated): Fx={a['Fx']:+.4f} Fz={a['Fz']:+.4f} P={a['P']:+.4f}")
-    return 0
+__all__ = [
+    "DEFAULT_SIZE",
+    "FLIGHT_GRID",
+    "FORCE_NOTE",
+    "register",
+    "run_build",
+    "run_info",
+    "run_lookup",
+]

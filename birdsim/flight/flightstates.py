@@ -127,6 +127,23 @@ def flight_states(log: dict[str, Any], options: Any, *, title: str = "") -> Any:
             lines.append(("saturated: the demand is beyond the table's reach", AMBER))
         return lines
 
+    def brief(k: int) -> list:
+        """The default overlay: time and flight, position error and airspeed, saturation."""
+        err = math.hypot(
+            sampled["x"][k] - sampled["x_ref"][k], sampled["z"][k] - sampled["z_ref"][k]
+        )
+        unit_v = "m/s" if unit_l == "m" else "omega s"
+        lines: list = [
+            (
+                f"t {t[k] / omega * TWO_PI:5.2f} {unit_t} ({t[k]:4.1f} wingbeats)  {manoeuvre}",
+                WHITE,
+            ),
+            (f"error {err:.3f} {unit_l}   airspeed {sampled['V_air'][k]:.2f} {unit_v}", WHITE),
+        ]
+        if sat[k]:
+            lines.append(("saturated: beyond the table's reach", AMBER))
+        return lines
+
     demanded = np.column_stack([sampled["Fx_demand"], np.zeros(t.size), sampled["Fz_demand"]])
     return StateSequence(
         model=model,
@@ -139,6 +156,7 @@ def flight_states(log: dict[str, Any], options: Any, *, title: str = "") -> Any:
         instants_per_frame=sub,
         title=title or manoeuvre,
         demanded_force=demanded,
+        brief=brief,
     )
 
 

@@ -16,7 +16,7 @@ from typing import Any
 
 import numpy as np
 
-from birdsim.errors import BirdsimError
+from birdsim.errors import BirdsimError, limits_text, magnitude_ok
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.simulate import FreeBird, SimConfig
 from birdsim.flight.wingbeat import WingbeatSchedule
@@ -48,13 +48,13 @@ class Gust:
     def __post_init__(self) -> None:
         for name in ("t0", "duration", "wx", "wz"):
             v = getattr(self, name)
-            if not (isinstance(v, (int, float)) and math.isfinite(v)):
+            if not (isinstance(v, (int, float)) and math.isfinite(v) and magnitude_ok(v)):
                 raise GustError(
-                    f"--gust {name}={v!r} is not finite; allowed: T0:DURATION:WX:WZ, four finite numbers"
+                    f"gust {name}={v!r} is invalid; allowed: a finite number, {limits_text()}"
                 )
         if self.t0 < 0 or self.duration < 0:
             raise GustError(
-                f"--gust T0={self.t0:g}, DURATION={self.duration:g}; allowed: times >= 0 (wingbeats)"
+                f"gust t0={self.t0:g}, duration={self.duration:g}; allowed: times >= 0 (wingbeats)"
             )
 
 
@@ -75,7 +75,10 @@ def parse_gust(text: str) -> Gust:
         raise GustError(
             f"--gust {text!r} is not finite; allowed: T0:DURATION:WX:WZ, four finite numbers"
         )
-    return Gust(*vals)
+    try:
+        return Gust(*vals)
+    except GustError as exc:
+        raise GustError(f"--gust {text!r}: {exc}") from None
 
 
 def wind_at(gusts: Sequence[Gust], t_beats: float, speed_scale: float = 1.0) -> np.ndarray:
@@ -186,8 +189,10 @@ def fly(
     red = reduced_bird(bird)
     speed = scales(bird).speed
     beats = float(reference.duration_beats if beats is None else beats)
-    if not (math.isfinite(beats) and beats > 0):
-        raise BirdsimError(f"--seconds gives {beats!r} wingbeats; allowed: a positive finite time")
+    if not (math.isfinite(beats) and beats > 0 and magnitude_ok(beats)):
+        raise BirdsimError(
+            f"beats={beats!r} is invalid; allowed: a positive finite number of wingbeats, {limits_text()}"
+        )
     gains = gains or gains_for(red)
     demands_only = bool(getattr(reference, "open_loop_demands", False))
     ctl = Controller(

@@ -30,7 +30,7 @@ from typing import Any
 import numpy as np
 from scipy.interpolate import CubicHermiteSpline, PchipInterpolator
 
-from birdsim.errors import BirdsimError
+from birdsim.errors import BirdsimError, limits_text, magnitude_ok
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -104,6 +104,12 @@ class Manoeuvre:
         )  # one floor rule for paths and force keyframes
 
         for i, k in enumerate(self.keyframes):
+            for field in ("t", "Fx", "Fz", "V", "z"):
+                v = getattr(k, field)
+                if not (math.isfinite(v) and magnitude_ok(v)):
+                    raise ManoeuvreError(
+                        f"manoeuvre {self.name!r}: keyframe {i + 1} {field}={v!r} is invalid; allowed: a finite number, {limits_text()}"
+                    )
             if not (math.isfinite(k.z) and k.z >= FLOOR_CLEARANCE):
                 raise ManoeuvreError(
                     f"manoeuvre {self.name!r}: keyframe {i + 1} (t={k.t:g}) has z={k.z:g}, below the floor; "

@@ -34,7 +34,7 @@ from typing import Any
 import numpy as np
 from scipy.interpolate import PPoly
 
-from birdsim.errors import BirdsimError
+from birdsim.errors import BirdsimError, limits_text, magnitude_ok
 
 #: Where the torso origin sits when the bird is perched (semispans, x forward, z up):
 #: the scene's perch post at x = 6 s, its top site at 1.54 s, plus the torso's half
@@ -188,6 +188,10 @@ def _validate(p: FlightPath) -> None:
             f"{where}: duration={p.duration_beats!r}; allowed: a number of wingbeats in (0, "
             f"{MAX_BEATS:g}]"
         )
+    if not (isinstance(p.x0, (int, float)) and math.isfinite(p.x0) and magnitude_ok(p.x0)):
+        raise PathError(
+            f"{where}: x0={p.x0!r} is invalid; allowed: a finite number, {limits_text()}"
+        )
     forms = {k.x is not None for k in p.keyframes}
     if len(forms) != 1 or any((k.x is None) == (k.V is None) for k in p.keyframes):
         bad = next(
@@ -204,6 +208,10 @@ def _validate(p: FlightPath) -> None:
             v = getattr(k, name)
             if v is not None and not (isinstance(v, (int, float)) and math.isfinite(v)):
                 raise PathError(f"{where}: keyframe {i} {name}={v!r} is not a finite number")
+            if v is not None and not magnitude_ok(v):
+                raise PathError(
+                    f"{where}: keyframe {i} {name}={v!r} is invalid; allowed: {limits_text()}"
+                )
         if k.t < 0 or k.t > MAX_BEATS:
             raise PathError(
                 f"{where}: keyframe {i} t={k.t:g}; allowed: 0 <= t <= {MAX_BEATS:g} wingbeats"
@@ -297,9 +305,31 @@ def _eval_extrapolated(pp: PPoly, t: np.ndarray) -> tuple[np.ndarray, np.ndarray
     return y + v * (t - tc), v, a
 
 
+def _where_bad(path: FlightPath, tb: np.ndarray, bad: np.ndarray) -> tuple[str, int]:
+    """The place to fix and the sample to show: the first keyframe that is itself in the
+    way (its own sample), else the segment (between two keyframes, before the first or
+    after the last) where the path first is (the first offending sample)."""
+    ks = path.keyframes
+    for j, k in enumerate(ks, 1):
+        i = int(np.searchsorted(tb, k.t - 1e-12))
+        if i < len(tb) and abs(tb[i] - k.t) < 1e-9 and bad[i]:
+            return f"keyframe {j} (t={k.t:g}) is", i
+    i = int(np.argmax(bad))
+    if tb[i] < ks[0].t:
+        return f"the path before keyframe 1 (t={ks[0].t:g}) goes", i
+    k = path.keyframe_before(tb[i])
+    if k >= len(ks):
+        return f"the path after keyframe {k} (t={ks[k - 1].t:g}) goes", i
+    return (
+        f"the segment from keyframe {k} (t={ks[k - 1].t:g}) to keyframe {k + 1} "
+        f"(t={ks[k].t:g}) goes",
+        i,
+    )
+
+
 def check_obstacles(path: FlightPath) -> None:
-    """Refuse a path below the floor or through the perch (one line naming the keyframe
-    before the first offending sample).
+    """Refuse a path below the floor or through the perch, in one line naming the first
+    keyframe that is itself in the way, else the segment where the path first is.
 
     Raises:
         PathError: the first sample closer to the floor than ``FLOOR_CLEARANCE`` or within
@@ -316,12 +346,11 @@ def check_obstacles(path: FlightPath) -> None:
         (perch, f"through the perch (|x - {PERCH_X:g}| < {PERCH_KEEPOUT:g} below z = {PERCH_Z:g})"),
     ):
         if np.any(bad):
-            i = int(np.argmax(bad))
-            k = path.keyframe_before(tb[i])
+            place, i = _where_bad(path, tb, bad)
             raise PathError(
-                f"path {path.name!r}: keyframe {k} (t={path.keyframes[k - 1].t:g}) leads {what}: "
-                f"at t={tb[i]:.3g} wingbeats x={s['x'][i]:.3g}, z={s['z'][i]:.3g}; allowed: "
-                "a path above the floor and around the perch"
+                f"path {path.name!r}: {place} {what}: at t={tb[i]:.3g} wingbeats "
+                f"x={s['x'][i]:.3g}, z={s['z'][i]:.3g} semispans; allowed: a path above the "
+                "floor and around the perch"
             )
     for flag, idx, label in (
         (path.perch_start, 0, "perch_start"),

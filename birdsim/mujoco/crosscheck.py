@@ -33,7 +33,7 @@ from dataclasses import dataclass, field
 import mujoco
 import numpy as np
 
-from birdsim.errors import BirdsimError
+from birdsim.errors import BirdsimError, check_number
 from birdsim.mujoco.callback import aero_forces
 from birdsim.mujoco.driver import trajectory
 from birdsim.mujoco.model import HOLD_TIMECONST_STEPS, build_model
@@ -146,8 +146,7 @@ def _inverse_run(m, d, traj, aero_cb) -> tuple[np.ndarray, np.ndarray]:
 
 def _check_inputs(model_name: str, speed: float, samples: int, cycles: int, substeps: int) -> None:
     get_model(model_name)
-    if not (isinstance(speed, (int, float)) and np.isfinite(speed) and speed >= 0):
-        raise BirdsimError(f"speed={speed!r} is invalid; allowed: a finite number >= 0")
+    check_number("speed", speed, "a finite number >= 0", minimum=0.0)
     for name, v, lo in (("samples", samples, 2), ("cycles", cycles, 1), ("substeps", substeps, 1)):
         if not isinstance(v, int) or isinstance(v, bool) or v < lo:
             raise BirdsimError(f"{name}={v!r} is invalid; allowed: an integer >= {lo}")

@@ -21,7 +21,7 @@ from dataclasses import asdict, dataclass, field, fields, replace
 from pathlib import Path
 from typing import Any
 
-from birdsim.errors import BirdConfigError
+from birdsim.errors import BirdConfigError, limits_text, magnitude_ok
 from birdsim.physics.aero import Polar, SeedPolar, polar_from_dict
 
 if sys.version_info >= (3, 11):
@@ -79,8 +79,10 @@ class Bird:
         positive = ("semispan", "chord", "hand_chord", "rho", "omega", "disc_area", "mass")
         for name in positive:
             v = getattr(self, name)
-            if not (_is_number(v) and math.isfinite(v) and v > 0):
-                raise BirdConfigError(f"bird.{name}={v!r} is invalid; allowed: a finite number > 0")
+            if not (_is_number(v) and math.isfinite(v) and magnitude_ok(v, positive=True)):
+                raise BirdConfigError(
+                    f"bird.{name}={v!r} is invalid; allowed: a finite number > 0, {limits_text(positive=True)}"
+                )
         fractions = ("hand_span_fraction", "cp_span_fraction")
         for name in fractions:
             v = getattr(self, name)
@@ -88,9 +90,9 @@ class Bird:
                 raise BirdConfigError(f"bird.{name}={v!r} is invalid; allowed: a number in [0, 1]")
         for name in ("wrist_twist_ratio", "body_drag_area", "gravity"):
             v = getattr(self, name)
-            if not (_is_number(v) and math.isfinite(v) and v >= 0):
+            if not (_is_number(v) and math.isfinite(v) and v >= 0 and magnitude_ok(v)):
                 raise BirdConfigError(
-                    f"bird.{name}={v!r} is invalid; allowed: a finite number >= 0"
+                    f"bird.{name}={v!r} is invalid; allowed: a finite number >= 0, {limits_text()}"
                 )
         for name, lo, hi, why in _FOLD_RANGES:
             v = getattr(self, name)

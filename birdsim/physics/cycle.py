@@ -22,11 +22,12 @@ from functools import lru_cache
 
 import numpy as np
 
-from birdsim.errors import BirdsimError
+from birdsim.errors import BirdsimError, check_numbers
 from birdsim.physics.aero import body_drag, induced_velocity
 from birdsim.physics.bird import Bird
 from birdsim.physics.cycle_result import Cycle, MeanForces, PanelMeans, _Histories, cycle_mean  # noqa: F401 (re-exported)
 from birdsim.physics.frames import Vec3, _is_zero, body_to_earth, earth_to_body
+from birdsim.physics.inputs import _check_climb, check_body_rate, cross
 from birdsim.physics.kinematics import (
     Joint,
     KinematicModel,
@@ -83,18 +84,22 @@ def element_forces(
     chord: float,
     air_velocity_body: Vec3,
     bird: Bird,
+    body_rate: Vec3 | None = None,
 ) -> ElementForces:
     """Blade-element force on each element of a panel, in body axes.
 
     ``air_velocity_body`` is the velocity of the body relative to the air (the
     freestream seen from the body, e.g. ``(V cos theta, 0, V sin theta)``).  The element
-    moves relative to the air at that plus its flapping velocity; its velocity is
-    rotated into panel axes, the polar gives the panel-axes force, and it is rotated
-    back.  This is the one implementation of the aerodynamics (MuJoCo uses it too).
+    moves relative to the air at that plus its flapping velocity (plus ``omega x r`` for
+    a ``body_rate`` omega, body axes, r from the torso origin); its velocity is rotated
+    into panel axes, the polar gives the panel-axes force, and it is rotated back.  This
+    is the one implementation of the aerodynamics (MuJoCo uses it too).
     """
     pos, vel_groups = points_in_body(chain, states, span_positions)
     v_flap = _sum_groups(vel_groups)
     v_rel = tuple(_add(a, b) for a, b in zip(air_velocity_body, v_flap))
+    if body_rate is not None:
+        v_rel = tuple(_add(a, b) for a, b in zip(v_rel, cross(body_rate, pos)))
     vx, _, vz = body_to_panel(chain, states, v_rel)
     fx, fz = bird.polar.force_panel(vx, vz, widths * chord, bird.rho)
     force = panel_to_body(chain, states, (fx, 0.0, fz))
@@ -140,6 +145,7 @@ def evaluate_cycle(
     endpoint: bool = False,
     check_bounds: bool = True,
     backend: str = "kernel",
+    body_rate: object = (0.0, 0.0, 0.0),
 ) -> Cycle:
     """Force and power histories of one wingbeat and their means.
 
@@ -157,6 +163,10 @@ def evaluate_cycle(
             read, have the same n, so the mean is the mean of the histories);
             ``endpoint=True, n=11`` is the appendix grid.
         check_bounds: refuse parameters outside the model's bounds.
+        body_rate: the body's angular velocity (p, q, r) in body axes [rad per unit
+            time], shape (3,) or ``B + (3,)``: every element's air velocity gains
+            ``omega x r`` (r from the torso origin: shoulders and centre of mass).  Zero
+            (the default) is today's result bit for bit.  Power stays ``-F . v_flap``.
         backend: ``"kernel"`` (default: the fused, compiled kernel of
             :mod:`birdsim.physics.kernel` computes the means; histories, when read, come
             from the numpy path) or ``"numpy"`` (the readable reference, everything
@@ -177,20 +187,16 @@ def evaluate_cycle(
     if m.area_folds and (why := fold_bird_error(bird)) is not None:
         raise BirdsimError(f"bird: {why}")
     p = validate_params(m, params, check_bounds=check_bounds)
-    try:
-        v = np.asarray(speed, dtype=float)
-    except (TypeError, ValueError):
-        raise BirdsimError(
-            f"speed={speed!r} is not a number; allowed: a finite number >= 0"
-        ) from None
-    if not np.all(np.isfinite(v)) or np.any(v < 0):
-        bad = float(v[~(np.isfinite(v) & (v >= 0))].flat[0]) if v.ndim else float(v)
-        raise BirdsimError(f"speed={bad} is invalid; allowed: a finite number >= 0")
+    v = check_numbers("speed", speed, "a finite number >= 0", minimum=0.0)
     vc = _check_climb(climb)
+    rate = check_body_rate(body_rate)
     try:
-        batch = np.broadcast_shapes(v.shape, vc.shape, *(a.shape for a in p.values()))
+        batch = np.broadcast_shapes(
+            v.shape, vc.shape, rate.shape[:-1], *(a.shape for a in p.values())
+        )
     except ValueError:
-        shapes = ", ".join(f"{k} {a.shape}" for k, a in {"speed": v, "climb": vc, **p}.items())
+        named = {"speed": v, "climb": vc, "body_rate[..., 0]": rate[..., 0], **p}
+        shapes = ", ".join(f"{k} {a.shape}" for k, a in named.items())
         raise BirdsimError(
             f"parameter shapes do not broadcast ({shapes}); allowed: arrays of one common shape"
         ) from None
@@ -199,15 +205,16 @@ def evaluate_cycle(
     climb_flat = np.broadcast_to(vc, batch).reshape(-1)
     phases = sample_phases(n, endpoint)
     climbing = bool(np.any(climb_flat != 0.0))
+    rate_flat = np.broadcast_to(rate, batch + (3,)).reshape(-1, 3)
+    rates = rate_flat if np.any(rate_flat != 0.0) else None  # None: bit for bit today's path
+    vc_or_none = climb_flat if climbing else None
 
     def shaped(a: np.ndarray) -> np.ndarray:
         return a.reshape(batch + a.shape[1:])
 
     def histories() -> _Histories:
         air_earth = np.zeros(v_flat.shape + (3,))
-        hist = _histories(
-            m, flat, v_flat, bird, phases, air_earth, climb_flat if climbing else None
-        )
+        hist = _histories(m, flat, v_flat, bird, phases, air_earth, vc_or_none, rates)
         if bird.induced_velocity:
             # Actuator disc (appendix 1A): the disc pushes the air against the mean force of
             # both wings (seed earth axes); iterate the coupling to a fixed point (damped by
@@ -224,9 +231,7 @@ def evaluate_cycle(
                 if np.max(np.abs(target - air_earth), initial=0.0) < INDUCED_TOL:
                     break
                 air_earth = 0.5 * air_earth + 0.5 * target
-                hist = _histories(
-                    m, flat, v_flat, bird, phases, air_earth, climb_flat if climbing else None
-                )
+                hist = _histories(m, flat, v_flat, bird, phases, air_earth, vc_or_none, rates)
         return _Histories(
             shaped(hist.force_earth),
             shaped(hist.power),
@@ -239,7 +244,7 @@ def evaluate_cycle(
         raise BirdsimError(f"backend={backend!r} is unknown; allowed: {', '.join(BACKENDS)}")
     means = None
     if backend == "kernel":
-        means = _kernel_means(m, flat, v_flat, climb_flat, climbing, bird, phases)
+        means = _kernel_means(m, flat, v_flat, climb_flat, climbing, bird, phases, rates)
         if means is not None:
             means = PanelMeans(
                 shaped(means.force_earth),
@@ -261,7 +266,7 @@ def evaluate_cycle(
         panel_means=means,
     )
     if means is None:
-        cyc._hist  # the numpy path computes its histories now (errors surface here)
+        _ = cyc._hist  # the numpy path computes its histories now (errors surface here)
     return cyc
 
 
@@ -276,13 +281,14 @@ def _kernel_means(
     climbing: bool,
     bird: Bird,
     phases: np.ndarray,
+    rate: np.ndarray | None = None,
 ) -> PanelMeans | None:
     """Panel means from the fused kernel (flat batch), the induced-velocity coupling
     iterated exactly as the numpy path does; None where the kernel cannot run."""
-    from birdsim.physics import kernel_fold as kernel  # every model (m5's hand folds)
+    from birdsim.physics import kernel
 
     air = np.zeros(v.shape + (3,))
-    out = kernel.means(m, flat, v, climb, air, bird, phases)
+    out = kernel.means(m, flat, v, climb, air, bird, phases, body_rate=rate)
     if out is None:
         return None
     if bird.induced_velocity:
@@ -296,25 +302,11 @@ def _kernel_means(
             if np.max(np.abs(target - air), initial=0.0) < INDUCED_TOL:
                 break
             air = 0.5 * air + 0.5 * target
-            out = kernel.means(m, flat, v, climb, air, bird, phases)
+            out = kernel.means(m, flat, v, climb, air, bird, phases, body_rate=rate)
             if out is None:
                 return None
     groups = kernel.setup(m, bird).groups
     return PanelMeans(out[0], out[1], {g: out[2][:, i] for i, g in enumerate(groups)})
-
-
-def _check_climb(climb: object) -> np.ndarray:
-    """``climb`` as a float array; one line naming a non-number or non-finite value."""
-    try:
-        vc = np.asarray(climb, dtype=float)
-    except (TypeError, ValueError):
-        raise BirdsimError(
-            f"climb={climb!r} is not a number; allowed: a finite number (positive up)"
-        ) from None
-    if not np.all(np.isfinite(vc)):
-        bad = float(vc[~np.isfinite(vc)].flat[0]) if vc.ndim else float(vc)
-        raise BirdsimError(f"climb={bad} is invalid; allowed: a finite number (positive up)")
-    return vc
 
 
 #: The induced-velocity coupling stops when the disc's inflow changes by less than this
@@ -335,8 +327,10 @@ def _histories(
     phases: np.ndarray,
     air_earth: np.ndarray,
     climb: np.ndarray | None = None,
+    body_rate: np.ndarray | None = None,
 ) -> _Histories:
-    """Histories for flat (B,) parameter arrays, evaluated chunk by chunk."""
+    """Histories for flat (B,) parameter arrays, evaluated chunk by chunk (``body_rate``
+    B x 3 or None for a body that does not rotate)."""
     panels = m.chain_with_geometry(bird)
     groups = sorted({el.group for chain, _, _ in panels for el in chain if isinstance(el, Joint)})
     b, k, n = speed.shape[0], len(panels), len(phases)
@@ -350,6 +344,7 @@ def _histories(
     for lo in range(0, b, CHUNK):
         sl = slice(lo, min(lo + CHUNK, b))
         vc = None if climb is None else climb[sl]
+        w = None if body_rate is None else tuple(body_rate[sl, i][:, None, None] for i in range(3))
         _chunk(
             {name: a[sl] for name, a in p.items()},
             speed[sl],
@@ -361,11 +356,14 @@ def _histories(
             phases,
             out,
             sl,
+            w,
         )
     return out
 
 
-def _chunk(p, speed, climb, air_earth, m, panels, bird, phases, out: _Histories, sl: slice) -> None:
+def _chunk(
+    p, speed, climb, air_earth, m, panels, bird, phases, out: _Histories, sl: slice, rate=None
+) -> None:
     pitch_b = p["pitch"][:, None, None]
     states = joint_states(m, p, bird, phases, trailing=1)
     # the body relative to the air, in body axes: ((V, 0, -climb) - w_air) rotated by the pitch
@@ -375,7 +373,7 @@ def _chunk(p, speed, climb, air_earth, m, panels, bird, phases, out: _Histories,
     for k, (chain, span, chord) in enumerate(panels):
         r, w = strip_positions(span, bird.cp_span_fraction, bird.strips)
         el = element_forces(
-            chain, states, r, w, chord * m.area_scale(k, states, bird), air_body, bird
+            chain, states, r, w, chord * m.area_scale(k, states, bird), air_body, bird, rate
         )
         v_flap = _sum_groups(el.velocity_body)
         f_earth = body_to_earth(pitch_b, el.force_body)

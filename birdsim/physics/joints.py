@@ -15,15 +15,20 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 import numpy as np
 
 from birdsim.physics.bird import Bird
 from birdsim.physics.frames import Axis, Vec3, _is_zero, cross_axis, rotate
 
-if TYPE_CHECKING:
-    from birdsim.physics.kinematics import KinematicModel
+
+class _Moving(Protocol):
+    """What :func:`joint_states` needs of a model (a
+    :class:`birdsim.physics.kinematics.KinematicModel`; a protocol, so that this module
+    does not import kinematics, which imports it)."""
+
+    def joint_motion(self, params: Mapping[str, np.ndarray], bird: Bird) -> Mapping: ...
 
 
 @dataclass(frozen=True)
@@ -122,7 +127,7 @@ class JointState:
 
 
 def joint_states(
-    model: KinematicModel,
+    model: _Moving,
     params: Mapping[str, np.ndarray],
     bird: Bird,
     omega_t: np.ndarray,

@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from birdsim.errors import BirdConfigError
+from birdsim.errors import BirdConfigError, limits_text, magnitude_ok
 from birdsim.physics.bird import Bird
 from birdsim.physics.units import mass_ratio, scales, weight_in_table_units
 
@@ -25,8 +25,14 @@ TABLE_SPEED_RANGE = (0.0, 1.0)
 
 
 def _positive(arg: str, value: float, unit: str) -> float:
-    if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
-        raise BirdConfigError(f"{arg} {value!r} is invalid; allowed: a number > 0 ({unit})")
+    if not (
+        isinstance(value, (int, float))
+        and math.isfinite(value)
+        and magnitude_ok(value, positive=True)
+    ):
+        raise BirdConfigError(
+            f"{arg} {value!r} is invalid; allowed: a number > 0 ({unit}), {limits_text(positive=True)}"
+        )
     return float(value)
 
 
@@ -72,9 +78,10 @@ def bird_from_measurements(
         isinstance(body_drag_area, (int, float))
         and math.isfinite(body_drag_area)
         and body_drag_area >= 0
+        and magnitude_ok(body_drag_area)
     ):
         raise BirdConfigError(
-            f"--body-drag-area {body_drag_area!r} is invalid; allowed: a number >= 0 (m^2)"
+            f"--body-drag-area {body_drag_area!r} is invalid; allowed: a number >= 0 (m^2), {limits_text()}"
         )
     return Bird(
         name=name,

@@ -48,6 +48,10 @@ MAX_SIDE = 4096
 MAX_SECONDS = 3600.0  # longest video (--seconds, or the whole manoeuvre at --beat-rate)
 
 
+#: How much text the overlay shows (``--overlay``; ``none`` is ``overlay=False``).
+OVERLAY_DETAILS = ("short", "full")
+
+
 class RenderError(BirdsimError):
     """A bad rendering option (size, fps, camera...)."""
 
@@ -67,6 +71,8 @@ class RenderOptions:
     trail_beats: float = 1.0
     trail_substeps: int = 4
     overlay: bool = True
+    overlay_detail: str = "short"  # "short": at most three lines; "full": the engineering view
+    reference: bool = True  # draw the reference path (off with --clean)
     quality: str = "good"
     forces: float | None = None  # force arrows: length per weight in semispans (None = no arrows)
     gl: str = "auto"
@@ -97,6 +103,10 @@ class RenderOptions:
             )
         if self.camera not in CAMERAS:
             raise RenderError(f"--camera {self.camera!r} is unknown; allowed: {', '.join(CAMERAS)}")
+        if self.overlay_detail not in OVERLAY_DETAILS:
+            raise RenderError(
+                f"--overlay {self.overlay_detail!r} is unknown; allowed: {', '.join(OVERLAY_DETAILS)} (or none)"
+            )
         if self.quality not in QUALITIES:
             raise RenderError(
                 f"--quality {self.quality!r} is unknown; allowed: {', '.join(QUALITIES)}"

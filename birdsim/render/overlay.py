@@ -181,7 +181,9 @@ class PlotStrip:
     ):
         from PIL import Image, ImageDraw
 
-        self.h = max(24, height // 7)
+        # the legend has its own row above the curves, so that they never over-print it
+        self.label_h = int(font.getbbox("Fg")[3]) + 4 if hasattr(font, "getbbox") else 14
+        self.h = max(24, height // 7) + self.label_h
         self.w = width
         self.t0, self.t1 = float(t[0]), float(t[-1]) if len(t) > 1 else float(t[0]) + 1.0
         vals = np.concatenate([np.asarray(v, dtype=float) for _, v, _ in series] + [np.zeros(1)])
@@ -190,9 +192,10 @@ class PlotStrip:
         self.lo, self.hi = lo - pad, hi + pad
         layer = Image.new("RGBA", (width, self.h), (0, 0, 0, 0))
         draw = ImageDraw.Draw(layer)
+        draw.rectangle([(0, 0), (width, self.label_h - 1)], fill=(0, 0, 0, 150))
         y0 = self._y(0.0)
         draw.line([(0, y0), (width, y0)], fill=(200, 200, 200, 140), width=1)
-        for label, v, rgb in series:
+        for _label, v, rgb in series:
             if len(v) < 2:  # a label only
                 continue
             pts = list(
@@ -211,7 +214,9 @@ class PlotStrip:
         return ((np.asarray(t) - self.t0) / max(self.t1 - self.t0, 1e-12) * (self.w - 1)).tolist()
 
     def _y(self, v):
-        return ((self.hi - np.asarray(v)) / (self.hi - self.lo) * (self.h - 1)).tolist()
+        """Pixel rows of values: the curves' area lies below the legend row."""
+        rows = self.h - 1 - self.label_h
+        return (self.label_h + (self.hi - np.asarray(v)) / (self.hi - self.lo) * rows).tolist()
 
     def draw(self, img: np.ndarray, t_now: float) -> None:
         """Composite the strip and a cursor at ``t_now`` into the bottom of ``img``

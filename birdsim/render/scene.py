@@ -249,7 +249,7 @@ class Scene:
         self.renderer.update_scene(self.d, camera=self.camera, scene_option=self.option)
         scn = self.renderer.scene
         scn.flags[self._mj.mjtRndFlag.mjRND_SHADOW] = int(self.shadows[i])
-        if self.states.reference_path is not None:
+        if self.states.reference_path is not None and self.options.reference:
             add_polyline(self._mj, scn, self.states.reference_path)
         if self.trails is not None:
             self._add_trails(i)
@@ -266,19 +266,24 @@ class Scene:
         )
 
     def overlay_lines(self, k: int) -> list:
-        """The overlay of instant ``k``: the states' own lines, the demanded and achieved
-        force, and the arrows' legend when they are drawn."""
-        dem = self.states.demanded_force
-        lines = list(self.states.overlay_at(k))
-        lines[1:1] = force_lines(None if dem is None else dem[k], self.achieved[k])
+        """The overlay of instant ``k``. Short (the default): the states' brief lines (at
+        most three; the arrows' legend takes the third when they are drawn). Full: the
+        states' own lines, the demanded and achieved force, and the arrows' legend."""
+        legend = []
         if self.options.forces is not None:
-            lines.append(
+            legend.append(
                 legend_line(
                     "1 weight" if self.force_unit_name == "the weight" else "largest force",
                     self.options.forces,
                 )
             )
-        return lines
+        if self.options.overlay_detail == "short":
+            lines = self.states.brief_at(k)
+            return (lines[:2] + legend) if legend else lines
+        dem = self.states.demanded_force
+        lines = list(self.states.overlay_at(k))
+        lines[1:1] = force_lines(None if dem is None else dem[k], self.achieved[k])
+        return lines + legend
 
     def finish(self, img: np.ndarray, i: int) -> np.ndarray:
         """Sky, overlay and plot strip of frame ``i`` drawn into the rendered pixels

@@ -67,6 +67,7 @@ class StateSequence:
     title: str = ""
     clip_note: str = ""
     demanded_force: np.ndarray | None = None
+    brief: OverlaySource = None  # the default overlay: at most three short lines
 
     def __post_init__(self) -> None:
         t = np.asarray(self.t_beats, dtype=float)
@@ -126,6 +127,15 @@ class StateSequence:
         if self.overlay is None:
             return []
         return list(self.overlay(k) if callable(self.overlay) else self.overlay[k])
+
+    def brief_at(self, k: int) -> list[OverlayLine]:
+        """The short overlay of instant ``k`` (``brief``, else the first two lines of the
+        full one), at most three lines."""
+        if self.brief is not None:
+            lines = list(self.brief(k) if callable(self.brief) else self.brief[k])
+        else:
+            lines = self.overlay_at(k)[:2]
+        return lines[:3]
 
 
 def playback_state(pb: Playback, m: Any | None = None) -> tuple[np.ndarray, np.ndarray]:

@@ -4,13 +4,9 @@ from __future__ import annotations
 
 import html
 from collections.abc import Sequence
-from typing import TYPE_CHECKING
 
 from birdsim.report import plots
-from birdsim.report.records import Context
-
-if TYPE_CHECKING:
-    from birdsim.report.report import Section
+from birdsim.report.records import Context, Section
 
 _BADGE = {"agrees": "#2e7d32", "disagrees": "#c62828"}
 

@@ -1,10 +1,11 @@
 """Records of the report: grid sizes (:class:`Resolution`), one figure's
 :class:`Entry` with its :class:`Claim` checks, and the :class:`Context` a figure family
-draws into."""
+draws into; a figure :class:`Family` and the :class:`Section` it fills on the page."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections.abc import Callable
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from birdsim.physics.bird import Bird
@@ -109,3 +110,23 @@ class Context:
     def save(self, fig, name: str) -> str:
         plots.save_png(fig, self.out / f"{name}.png")
         return f"{name}.png"
+
+
+@dataclass(frozen=True)
+class Family:
+    """One family of figures: its key (``--only``), its heading on the page and the
+    function that draws its entries."""
+
+    key: str
+    heading: str
+    build: Callable[[Context], list[Entry]]
+
+
+@dataclass
+class Section:
+    """A family's part of the page: its entries, the time they took, an error if any."""
+
+    family: Family
+    entries: list[Entry] = field(default_factory=list)
+    seconds: float = 0.0
+    error: str = ""

@@ -22,8 +22,7 @@ import os
 import shutil
 import tempfile
 import time
-from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from collections.abc import Sequence
 from pathlib import Path
 
 from birdsim.errors import BirdsimError
@@ -35,7 +34,17 @@ from birdsim.report.fig_cycle import fig_histories, fig_paths, fig_thrust, fig_w
 from birdsim.report.fig_sweeps import fig_sweeps
 from birdsim.report.fig_tables import fig_optimisers, fig_tables
 from birdsim.report.page import render_html
-from birdsim.report.records import FULL, QUICK, SMALL_DEMAND, Claim, Context, Entry, Resolution
+from birdsim.report.records import (
+    FULL,
+    QUICK,
+    SMALL_DEMAND,
+    Claim,
+    Context,
+    Entry,
+    Family,
+    Resolution,
+    Section,
+)
 from birdsim.report.smoothness import fig_smoothness
 
 __all__ = [
@@ -52,13 +61,6 @@ __all__ = [
     "build_report",
     "render_html",
 ]
-
-
-@dataclass(frozen=True)
-class Family:
-    key: str
-    heading: str
-    build: Callable[[Context], list[Entry]]
 
 
 FAMILIES: tuple[Family, ...] = (
@@ -81,14 +83,6 @@ FAMILIES: tuple[Family, ...] = (
     ),
     Family("smoothness", "9. Smoothness of the lookup tables (sec. 4.1)", fig_smoothness),
 )
-
-
-@dataclass
-class Section:
-    family: Family
-    entries: list[Entry] = field(default_factory=list)
-    seconds: float = 0.0
-    error: str = ""
 
 
 def build_report(

@@ -185,7 +185,7 @@ def build_table(
     )
     if cfg.settings.smooth_tol > 0:
         table.meta["regularising_pass"] = smoothing
-    table.meta["reproduce"] = reproduce_record(X, X_slices)
+    table.meta["reproduce"] = reproduce_record(X, X_slices, table.status == "ok")
     if out is not None:
         write_table(table, out, force, ckpt)
     else:
@@ -193,14 +193,15 @@ def build_table(
     return table
 
 
-def reproduce_record(X: np.ndarray, X_slices: np.ndarray) -> dict[str, Any]:
+def reproduce_record(X: np.ndarray, X_slices: np.ndarray, ok: np.ndarray) -> dict[str, Any]:
     """Where the finished table can be checked in seconds: the V slice (at one climb
-    node on a 4-axis grid) of whose cells the most kept the slice task's answer through
-    the later passes (ties: the lowest index), and those cells' (Fx, Fz) indices.
-    Rebuilding that one task (:func:`solve_slice`) must give those cells' wingbeats
+    node on a 4-axis grid) with the most reachable (``ok``) cells that kept the slice
+    task's answer through the later passes (ties: the lowest index), and the (Fx, Fz)
+    indices of all its cells that kept it.  Rebuilding that one task
+    (:func:`solve_slice`) must give those cells' wingbeats
     (``tests/test_shipped_rebuild.py``)."""
     kept = np.all(X == X_slices, axis=-1)  # grid shape
-    per_slice = kept.reshape(kept.shape[:2] + (-1,)).sum(axis=(0, 1))
+    per_slice = (kept & ok).reshape(kept.shape[:2] + (-1,)).sum(axis=(0, 1))
     flat = int(np.argmax(per_slice))
     if kept.ndim == 3:
         k, c, mask = flat, None, kept[:, :, flat]

@@ -23,7 +23,7 @@ from dataclasses import asdict, dataclass
 import numpy as np
 
 from birdsim.errors import BirdsimError
-from birdsim.physics import kernel_fold
+from birdsim.physics import kernel
 from birdsim.physics.aero import body_drag
 from birdsim.physics.bird import Bird
 from birdsim.physics.cycle import DEFAULT_SAMPLES, evaluate_cycle, sample_phases
@@ -168,7 +168,7 @@ def forces_and_gradients(
     v = np.ascontiguousarray(np.broadcast_to(np.asarray(speed, dtype=float), (B,)))
     vc = np.ascontiguousarray(np.broadcast_to(np.asarray(climb, dtype=float), (B,)))
     flat = {name: np.ascontiguousarray(X[:, i]) for i, name in enumerate(model.param_names)}
-    out = kernel_fold.means_and_gradients(model, flat, v, vc, bird, sample_phases(n, False))
+    out = kernel.means_and_gradients(model, flat, v, vc, bird, sample_phases(n, False))
     if out is None:
         steps = FD_STEP * np.eye(d)
         Y = np.concatenate(
@@ -244,7 +244,7 @@ def _kernel_forces(
     except ValueError:
         return None  # let evaluate_cycle name the shapes
     flat = {name: np.ascontiguousarray(X[:, i]) for i, name in enumerate(model.param_names)}
-    out = kernel_fold.means(model, flat, v, vc, np.zeros((B, 3)), bird, sample_phases(n, False))
+    out = kernel.means(model, flat, v, vc, np.zeros((B, 3)), bird, sample_phases(n, False))
     if out is None:
         return None
     f, p = out[0].sum(axis=-2), out[1].sum(axis=-1)

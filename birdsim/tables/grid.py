@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from birdsim.errors import BirdsimError
+from birdsim.errors import BirdsimError, limits_text, magnitude_ok
 from birdsim.physics.bird import Bird
 from birdsim.physics.cycle import DEFAULT_SAMPLES
 from birdsim.tables.cost import CostWeights
@@ -53,11 +53,11 @@ class Grid:
             ax = getattr(self, a)
             if (
                 len(ax) < 2
-                or any(not np.isfinite(x) for x in ax)
+                or any(not (np.isfinite(x) and magnitude_ok(x)) for x in ax)
                 or any(b <= a_ for a_, b in zip(ax, ax[1:]))
             ):
                 raise BirdsimError(
-                    f"grid {a}={[float(x) for x in ax]} is invalid; allowed: >= 2 finite increasing values"
+                    f"grid {a}={[float(x) for x in ax]} is invalid; allowed: >= 2 finite increasing values, {limits_text()}"
                 )
         if self.V[0] < 0:
             raise BirdsimError(f"grid V starts at {self.V[0]:g}; allowed: speeds >= 0")

@@ -65,6 +65,9 @@ class LookupTable:
     converged: np.ndarray | None = (
         None  # nFx x nFz x nV, SLSQP's own convergence flag of the kept answer
     )
+    #: per-cell moments and Jacobians (birdsim.tables.jacobians), stored or None; see
+    #: :meth:`moment_jacobians` (computes and caches them when absent)
+    jacobians: Any = None
 
     def __post_init__(self) -> None:
         if not all(a in self.axes for a in AXES) or set(self.axes) - set(AXES + (CLIMB,)):
@@ -109,6 +112,10 @@ class LookupTable:
                 f"table param_names={list(self.param_names)} do not match model {self.model}; "
                 f"allowed: {', '.join(model.param_names)}"
             )
+        if self.jacobians is not None:
+            from birdsim.tables.jacobians import check_jacobians
+
+            check_jacobians(self, self.jacobians)
         codes = np.asarray(self.status_code)
         if codes.dtype.kind not in "iu" or np.any(codes < 0) or np.any(codes >= len(STATUS_NAMES)):
             raise TableError(
@@ -294,10 +301,30 @@ class LookupTable:
         codes = self.status_code[np.ix_(*idx)]
         return STATUS_NAMES[int(codes.max())]
 
+    # ---- moments and Jacobians (issue 22) ----------------------------------------------
+
+    def moment_jacobians(self):
+        """Every cell's moments and Jacobians (:class:`birdsim.tables.jacobians.TableJacobians`,
+        table units): the stored ones, else computed now and cached on the table."""
+        from birdsim.tables.jacobians import cached_jacobians
+
+        return cached_jacobians(self)
+
+    def lookup_jacobians(
+        self, Fx: float, Fz: float, V: float, clip: bool = False, *, climb: float = 0.0
+    ) -> dict[str, np.ndarray]:
+        """Moments and Jacobians at one demand, multilinear between the cells as
+        :meth:`lookup` (``birdsim.tables.jacobians.interpolate_jacobians``)."""
+        from birdsim.tables.jacobians import interpolate_jacobians
+
+        return interpolate_jacobians(self, self._points(Fx, Fz, V, clip, climb)[0])
+
     # ---- files -----------------------------------------------------------------------
 
     def save(self, path: str | Path, force: bool = False) -> tuple[Path, Path]:
         """Write ``<stem>.npz`` and ``<stem>.json`` atomically; refuse to overwrite without ``force``."""
+        from birdsim.tables.jacobians import to_arrays
+
         npz_path, json_path = table_paths(path)
         check_output(npz_path, force)
         check_output(json_path, force, arg="path (json)")
@@ -313,6 +340,7 @@ class LookupTable:
             status_code=self.status_code.astype(np.uint8),
             evaluations=self.evaluations.astype(np.int64),
             converged=np.asarray(self.converged, dtype=bool),
+            **({} if self.jacobians is None else to_arrays(self.jacobians)),
         )
         data = buf.getvalue()
         meta = dict(self.meta)
@@ -328,6 +356,8 @@ class LookupTable:
             npz_sha256=hashlib.sha256(data).hexdigest(),
             npz_file=npz_path.name,
         )
+        if self.jacobians is not None:
+            meta["jacobians"] = self.jacobians.meta()
         write_atomic(npz_path, data)
         write_atomic(json_path, (json.dumps(meta, indent=2, sort_keys=False) + "\n").encode())
         return npz_path, json_path
@@ -355,6 +385,8 @@ def load_table(path: str | Path) -> LookupTable:
             truncated, not a table, of another format version, or when the two do not
             belong together (checksum).
     """
+    from birdsim.tables.jacobians import from_arrays
+
     npz_path, json_path = table_paths(path)
     for p in (npz_path, json_path):
         if not p.is_file():
@@ -402,6 +434,7 @@ def load_table(path: str | Path) -> LookupTable:
             evaluations=arrays["evaluations"],
             meta=meta,
             converged=arrays.get("converged"),
+            jacobians=from_arrays(arrays, meta),
         )
         npz_version = int(arrays["format_version"])
     except TableError:

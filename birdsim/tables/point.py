@@ -22,12 +22,13 @@ import math
 
 import numpy as np
 
-from birdsim.physics import kernel, kernel_fold
+from birdsim.physics import kernel
 from birdsim.physics.bird import Bird
 from birdsim.physics.cycle import sample_phases
+from birdsim.physics.kernel_dual import _grad_kernel
 from birdsim.physics.kinematics import KinematicModel
 
-_COMPILED: dict[str, bool] = {}  # per means kernel: both kernels ran once in this process
+_COMPILED = {"ok": False}  # both kernels ran once in this process
 
 
 @functools.lru_cache(maxsize=64)
@@ -68,8 +69,7 @@ class PointForces:
     def __init__(
         self, model: KinematicModel, bird: Bird, speed: float, climb: float, n: int
     ) -> None:
-        st = kernel_fold.setup(model, bird)  # the fold column for m5
-        self._means_kernel, self._grad_kernel = kernel_fold.compiled(model)
+        st = kernel.setup(model, bird)
         names = model.param_names
         d = len(names)
         self.c0, self.D, const = _joint_map(model, bird)
@@ -161,8 +161,7 @@ class PointForces:
         ):
             return None
         pf = cls(model, bird, speed, climb, n)
-        key = pf._means_kernel.__name__
-        if not _COMPILED.get(key):
+        if not _COMPILED["ok"]:
             try:  # the first call compiles (or loads from the disk cache)
                 pf.values(np.mean(model.bounds, axis=0))
                 pf.gradients(np.mean(model.bounds, axis=0))
@@ -171,7 +170,7 @@ class PointForces:
                     f"{type(exc).__name__}: {str(exc).splitlines()[0] if str(exc) else ''}"
                 )
                 return None
-            _COMPILED[key] = True
+            _COMPILED["ok"] = True
         return pf
 
     def _load(self, x: np.ndarray) -> None:
@@ -188,7 +187,7 @@ class PointForces:
     def values(self, x: np.ndarray) -> tuple[float, float, float]:
         """Mean (Fx, Fz, P) of the row ``x`` (d,), columns in ``model.param_names`` order."""
         self._load(x)
-        self._means_kernel(0, 1, *self._means_args)
+        kernel._means_kernel(0, 1, *self._means_args)
         dx, dz = self._drag(float(x[self.ip]))
         panels = self.F[0].tolist()  # panel sums in the batched path's order
         return (
@@ -200,7 +199,7 @@ class PointForces:
     def gradients(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """``(r, J)``: (Fx, Fz, P) of the row ``x`` (3,) and their gradients (3 x d)."""
         self._load(x)
-        self._grad_kernel(0, 1, *self._grad_args)
+        _grad_kernel(0, 1, *self._grad_args)
         o = self.out[0]
         vals = o[(0, 2, 3), 0].copy()
         jac = o[(0, 2, 3), 1:].copy()

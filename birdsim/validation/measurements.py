@@ -25,7 +25,7 @@ from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
 
-from birdsim.errors import BirdsimError
+from birdsim.errors import BirdsimError, limits_text, magnitude_ok
 
 COLUMNS = (
     "id",
@@ -71,10 +71,13 @@ COMPARE_KEYS: dict[str, str] = {
     "span_ratio_slope": "sign",
     "folds_in_cruise": "yes=1",
     "folds_in_hover": "yes=1",
+    "roll_damping": "non-dimensional",
+    "fct_frequency_scaling": "yes=1",
 }
 #: Keys that need a speed (``speed_m_s``); trends need a window (``speed_to_m_s`` too).
 NEEDS_SPEED = {
     "power",
+    "roll_damping",
     "aoa_mid_downstroke",
     "aoa_mid_upstroke",
     "stroke_plane_angle",
@@ -230,8 +233,10 @@ def _parse_row(name: str, line: int, raw: dict[str, str | None], seen: set[str])
             v = float(s)
         except ValueError:
             raise bad(col, s, "a finite number") from None
-        if not math.isfinite(v) or (positive and v < 0):
-            raise bad(col, s, "a finite number" + (" >= 0" if positive else ""))
+        if not math.isfinite(v) or (positive and v < 0) or not magnitude_ok(v):
+            raise bad(
+                col, s, "a finite number" + (" >= 0" if positive else "") + f", {limits_text()}"
+            )
         return v
 
     value = number("value", True)

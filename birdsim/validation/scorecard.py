@@ -158,7 +158,9 @@ def model_value(m: Measurement, sweep: TrimSweep, bird: Bird) -> float | None:
         y = np.array([getattr(p, attr) for p in pts])
         return float(np.polyfit(x, y, 1)[0])
     speed = (
-        0.0 if key in ("hover_power", "hover_feasible", "folds_in_hover") else (m.speed_m_s or 0.0)
+        0.0
+        if key in ("hover_power", "hover_feasible", "folds_in_hover", "fct_frequency_scaling")
+        else (m.speed_m_s or 0.0)
     )
     p = sweep.at(speed)
     if key == "hover_feasible":
@@ -181,6 +183,12 @@ def model_value(m: Measurement, sweep: TrimSweep, bird: Bird) -> float | None:
         return p.amplitude_deg
     if key == "body_angle":
         return p.body_angle_deg
+    if key in ("roll_damping", "fct_frequency_scaling"):
+        from birdsim.validation.damping import damping_coefficients, frequency_scaling
+
+        if key == "roll_damping":
+            return damping_coefficients(sweep.model, bird, p.params, speed)[0]
+        return 1.0 if abs(frequency_scaling(sweep.model, bird, p.params) - 2.0) < 0.02 else 0.0
     raise BirdsimError(f"compare={key!r} has no birdsim value; allowed: a key of COMPARE_KEYS")
 
 

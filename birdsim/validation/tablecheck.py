@@ -24,12 +24,14 @@ from birdsim.tables.lookup import LookupTable, TableError, load_table
 
 @dataclass(frozen=True)
 class TableLevelFlight:
-    """Per speed [bird units]: the table's parameter row (or None outside its grid) and
-    the whole bird's interpolated power [W for an SI bird] (or None)."""
+    """Per speed [bird units]: the table's parameter row (or None outside its grid), the
+    whole bird's interpolated power [W for an SI bird] (or None) and the demand looked up
+    (table units: Fx, Fz, V; or None)."""
 
     path: str
     starts: tuple[np.ndarray | None, ...]
     power: tuple[float | None, ...]
+    demands: tuple[tuple[float, float, float] | None, ...] = ()
 
 
 def find_table(bird: Bird, model: str) -> LookupTable | None:
@@ -59,11 +61,13 @@ def level_flight_from_table(
     i_pitch = table.param_names.index("pitch")
     starts: list[np.ndarray | None] = []
     powers: list[float | None] = []
+    demands: list[tuple[float, float, float] | None] = []
     for v in speeds:
         v_red = v / sc.speed
         try:
-            fx = 0.0
+            fx = fx_looked_up = 0.0
             for _ in range(2):
+                fx_looked_up = fx
                 out = table.lookup_many(fx, -w / 2.0, v_red)
                 pitch = float(out[table.param_names[i_pitch]])
                 fx = (
@@ -74,10 +78,12 @@ def level_flight_from_table(
         except TableError:
             starts.append(None)
             powers.append(None)
+            demands.append(None)
             continue
         starts.append(np.array([float(out[n]) for n in table.param_names]))
         powers.append(2.0 * float(out["achieved_P"]) * sc.power)
-    return TableLevelFlight(str(path), tuple(starts), tuple(powers))
+        demands.append((fx_looked_up, -w / 2.0, float(v_red)))
+    return TableLevelFlight(str(path), tuple(starts), tuple(powers), tuple(demands))
 
 
 __all__ = ["TableLevelFlight", "find_table", "level_flight_from_table"]

@@ -1,175 +1,60 @@
-"""The fused kernel for models whose panel areas follow a joint (m5's folding hand):
-the same chain walk as :mod:`birdsim.physics.kernel`, with each element's area scaled by
-``1 - lambda (1 - cos q) / 2`` of its panel's fold joint (:func:`birdsim.physics.m5.area_factor`).
-
-Kept apart from the general kernel so that its code paths stay untouched: the fold is
-encoded as one extra chain column per panel (code 3 at index ``length[k]``: the joint
-in ``joint``, ``lambda`` in ``span``), which only these kernels read.
-:func:`means` and :func:`means_and_gradients` serve every model: without area folds they
-are :func:`birdsim.physics.kernel.means` and ``means_and_gradients``.
+"""The compiled code of the fused wingbeat kernel (:mod:`birdsim.physics.kernel`): the
+element force of a polar, the chain's rotations and the cycle-means kernels, with and
+without a body rate.  Called through :func:`birdsim.physics.kernel.means`; the chain
+encoding is :class:`birdsim.physics.kernel.Setup`'s.  An element's area is scaled by
+``1 - lambda (1 - cos q) / 2`` where its panel carries an area-fold column (code 3 at
+index ``length[k]``: the joint in ``joint``, ``lambda`` in ``span``; m5's folding hand,
+:func:`birdsim.physics.m5.area_factor`); models without one never reach that line.
 """
 
 from __future__ import annotations
 
-import functools
 import math
-from dataclasses import replace
 
 import numpy as np
 
-from birdsim.physics import kernel
-from birdsim.physics.bird import Bird
 from birdsim.physics.jit import jit as _jit
-from birdsim.physics.kernel import _polar_force, _rot
-from birdsim.physics.kinematics import KinematicModel
 
-_FOLD = 3  # chain element code of an area fold (after the chain's last element)
-
-
-def folds(m: KinematicModel) -> bool:
-    """True when a panel's area follows a joint (these kernels are needed)."""
-    return any(name is not None for name in m.area_folds)
-
-
-@functools.lru_cache(maxsize=64)
-def setup(m: KinematicModel, bird: Bird) -> kernel.Setup:
-    """:func:`birdsim.physics.kernel.setup` plus the area-fold column of each panel."""
-    st = kernel.setup(m, bird)
-    if not folds(m):
-        return st
-    K, L = st.kind.shape
-    kind, joint, axis, group = (np.zeros((K, L + 1), dtype=np.int64) for _ in range(4))
-    span = np.zeros((K, L + 1))
-    for new, old in ((kind, st.kind), (joint, st.joint), (axis, st.axis), (group, st.group)):
-        new[:, :L] = old
-    span[:, :L] = st.span
-    for k, name in enumerate(m.area_folds):
-        if name is not None:
-            n = st.length[k]
-            kind[k, n], joint[k, n] = _FOLD, st.joint_names.index(name)
-            span[k, n] = bird.hand_fold_area_loss
-    return replace(st, kind=kind, joint=joint, axis=axis, group=group, span=span)
-
-
-def compiled(m: KinematicModel) -> tuple:
-    """``(means_kernel, grad_kernel)`` for ``m``: the fold kernels or the general ones."""
-    if folds(m):
-        from birdsim.physics.kernel_fold_dual import _fold_grad_kernel
-
-        return _fold_means_kernel, _fold_grad_kernel
-    from birdsim.physics.kernel_dual import _grad_kernel
-
-    return kernel._means_kernel, _grad_kernel
-
-
-def means(
-    m: KinematicModel,
-    flat: dict[str, np.ndarray],
-    speed: np.ndarray,
-    climb: np.ndarray,
-    air_earth: np.ndarray,
-    bird: Bird,
-    phases: np.ndarray,
-) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
-    """:func:`birdsim.physics.kernel.means` for every model (area folds included)."""
-    if not folds(m):
-        return kernel.means(m, flat, speed, climb, air_earth, bird, phases)
-    if not kernel.available() or not kernel.supported(bird):
-        return None
-    st = setup(m, bird)
-    amp, phase, bias, const = kernel.joint_coefficients(m, flat, bird)
-    c = np.ascontiguousarray
-    B, K = len(speed), len(st.length)
-    F, P, JP = np.zeros((B, K, 3)), np.zeros((B, K)), np.zeros((B, 2))
-    args = (
-        c(flat["pitch"], dtype=float),
-        c(speed, dtype=float),
-        c(climb, dtype=float),
-        c(air_earth, dtype=float),
-        amp,
-        phase,
-        bias,
-        const,
-        c(phases, dtype=float),
-        kernel._half(phases),
-        float(bird.omega),
-        float(bird.rho),
-        *geometry(st),
-        F,
-        P,
-        JP,
-    )
-    if not kernel._run(_fold_means_kernel, B, args):
-        return None
-    return F, P, JP[:, [kernel._GROUPS.index(g) for g in st.groups]]
-
-
-def means_and_gradients(
-    m: KinematicModel,
-    flat: dict[str, np.ndarray],
-    speed: np.ndarray,
-    climb: np.ndarray,
-    bird: Bird,
-    phases: np.ndarray,
-) -> tuple[np.ndarray, np.ndarray] | None:
-    """:func:`birdsim.physics.kernel.means_and_gradients` for every model."""
-    if not folds(m):
-        return kernel.means_and_gradients(m, flat, speed, climb, bird, phases)
-    if not kernel.available() or not kernel.supported(bird) or bird.induced_velocity:
-        return None
-    from birdsim.physics.kernel_fold_dual import _fold_grad_kernel
-
-    st = setup(m, bird)
-    amp, phase, bias, const = kernel.joint_coefficients(m, flat, bird)
-    damp, dphase, dbias = kernel.joint_derivatives(m, bird)
-    c = np.ascontiguousarray
-    B, d = len(speed), len(m.param_names)
-    out = np.zeros((B, 4, d + 1))
-    args = (
-        c(flat["pitch"], dtype=float),
-        c(speed, dtype=float),
-        c(climb, dtype=float),
-        amp,
-        phase,
-        bias,
-        const,
-        damp,
-        dphase,
-        dbias,
-        m.param_names.index("pitch"),
-        c(phases, dtype=float),
-        float(bird.omega),
-        float(bird.rho),
-        *geometry(st),
-        out,
-    )
-    if not kernel._run(_fold_grad_kernel, B, args):
-        return None
-    return out[:, :, 0], out[:, :, 1:]
-
-
-def geometry(st: kernel.Setup) -> tuple:
-    """The chain and element arrays in the kernels' argument order."""
-    return (
-        st.kind,
-        st.joint,
-        st.axis,
-        st.group,
-        st.span,
-        st.length,
-        st.radius,
-        st.area,
-        st.strips,
-        st.polar,
-        st.coeffs,
-    )
-
-
-# ---- compiled code (a copy of kernel._means_kernel with the area fold) ------------------
+# ---- compiled code --------------------------------------------------------------------
+# Conventions as in frames.rotate: the passive Table 2 rotation about `axis` with (c, s);
+# the way back passes -s.  Values only here; the dual-number version follows.
 
 
 @_jit
-def _fold_means_kernel(
+def _polar_force(polar, coeffs, vx, vz, area, rho):
+    """Panel-axes (fx, fz) of an element: the seed polar's algebraic form, or robofly."""
+    if polar == 0:
+        vx2, vz2 = vx * vx, vz * vz
+        u2 = vx2 + vz2
+        u = math.sqrt(u2)
+        inv_u = 0.5 * rho * area / u if u > 0.0 else 0.0
+        drag_u2 = coeffs[1] * u2 + coeffs[2] * vz2
+        lift2 = 2.0 * coeffs[0]
+        return inv_u * vx * (lift2 * vz2 - drag_u2), -inv_u * vz * (lift2 * vx2 + drag_u2)
+    alpha = math.atan2(vz, vx)
+    x = alpha + 0.5 * math.pi
+    a = x % math.pi - 0.5 * math.pi  # Python's float mod is numpy's: the sign of pi
+    deg = abs(a) * (180.0 / math.pi)
+    cl = 0.225 + 1.58 * math.sin((2.13 * deg - 7.20) * (math.pi / 180.0))
+    cd = 1.92 - 1.55 * math.cos((2.04 * deg - 9.82) * (math.pi / 180.0))
+    sg = 1.0 if a > 0.0 else (-1.0 if a < 0.0 else (0.0 if a == 0.0 else a))
+    cl = sg * cl
+    q_area = 0.5 * rho * (vx * vx + vz * vz) * area
+    ca, sa = math.cos(alpha), math.sin(alpha)
+    return q_area * (-cd * ca + cl * sa), q_area * (-cd * sa - cl * ca)
+
+
+@_jit
+def _rot(axis, c, s, x, y, z):
+    if axis == 1:
+        return c * x - s * z, y, s * x + c * z
+    if axis == 0:
+        return x, c * y + s * z, -s * y + c * z
+    return c * x + s * y, -s * x + c * y, z
+
+
+@_jit
+def _means_rate_kernel(
     lo,
     hi,
     pitch,
@@ -198,7 +83,10 @@ def _fold_means_kernel(
     F,
     P,
     JP,
+    rate,
+    rotating,
 ):
+    """The means of :func:`_means_kernel` with a body rate (B x 3) when ``rotating``."""
     J, N, K = amp.shape[1], phases.shape[0], kind.shape[0]
     ct, stt = np.cos(phases), np.sin(phases)
     for b in range(lo, hi):
@@ -284,6 +172,10 @@ def _fold_means_kernel(
                             wx, wy, wz = wx + dx, wy + dy, wz + dz
                     fx_, fy_, fz_ = sx + wx, sy + wy, sz + wz  # flapping velocity
                     vx, vy, vz = ax + fx_, ay + fy_, az + fz_
+                    if rotating:  # omega x r, r from the torso origin
+                        vx += rate[b, 1] * pz - rate[b, 2] * py
+                        vy += rate[b, 2] * px - rate[b, 0] * pz
+                        vz += rate[b, 0] * py - rate[b, 1] * px
                     for i in range(L):
                         if kind[k, i] == 1:
                             j = joint[k, i]
@@ -311,3 +203,69 @@ def _fold_means_kernel(
             P[b, k] = ps[k] / N
         JP[b, 0] = j0 / N
         JP[b, 1] = j1 / N
+
+
+@_jit
+def _means_kernel(
+    lo,
+    hi,
+    pitch,
+    speed,
+    climb,
+    air_earth,
+    amp,
+    phase,
+    bias,
+    const,
+    phases,
+    half,
+    omega,
+    rho,
+    kind,
+    joint,
+    axis,
+    group,
+    span,
+    length,
+    radius,
+    area,
+    strips,
+    polar,
+    coeffs,
+    F,
+    P,
+    JP,
+):
+    """Cycle means of rows [lo, hi) into F, P, JP (a body that does not rotate)."""
+    _means_rate_kernel(
+        lo,
+        hi,
+        pitch,
+        speed,
+        climb,
+        air_earth,
+        amp,
+        phase,
+        bias,
+        const,
+        phases,
+        half,
+        omega,
+        rho,
+        kind,
+        joint,
+        axis,
+        group,
+        span,
+        length,
+        radius,
+        area,
+        strips,
+        polar,
+        coeffs,
+        F,
+        P,
+        JP,
+        np.zeros((1, 3)),
+        False,
+    )

@@ -1,0 +1,111 @@
+"""``birdsim view``: a flight as ONE self-contained HTML file (scripts, styles and data
+inlined; it works with the network off): the dressed bird in 3-D with orbit, zoom and
+pan, a timeline (play, pause, scrub, playback speed), camera presets and plots linked to
+the timeline (docs/studio.md).
+
+SOURCE is a flight log .npz (``birdsim fly --out``) or a preset / manoeuvre .toml, flown
+first exactly as ``birdsim fly`` flies it. Playback at 1x is real time for an SI bird
+(the pigeon) and 2 wingbeats per second for the non-dimensional seed bird."""
+
+from __future__ import annotations
+
+import argparse
+import math
+from pathlib import Path
+
+from birdsim.errors import BirdsimError
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser(
+        "view",
+        help="write a flight as one self-contained 3-D HTML page (offline)",
+        description=__doc__,
+    )
+    p.add_argument(
+        "source",
+        metavar="SOURCE",
+        help="a flight log .npz, a preset (hover, cruise, take-off, landing) or a manoeuvre .toml",
+    )
+    p.add_argument("--out", required=True, metavar="FILE.html", help="the page to write")
+    p.add_argument(
+        "--fps",
+        default="60",
+        metavar="N",
+        help="frames per second of playback at 1x, 1 to 240 (default 60; at least 24 per wingbeat)",
+    )
+    p.add_argument("--model", default=None, help="kinematic model for a manoeuvre (default m3)")
+    p.add_argument("--bird", metavar="FILE.toml", help="the bird for a manoeuvre (default seed)")
+    p.add_argument(
+        "--gust",
+        action="append",
+        default=[],
+        metavar="T0:DURATION:WX:WZ",
+        help="a gust for a manoeuvre (see birdsim fly)",
+    )
+    p.add_argument("--open-loop", action="store_true", help="a manoeuvre flown feed-forward only")
+    p.add_argument("--force", action="store_true", help="overwrite an existing --out")
+    p.set_defaults(func=run)
+
+
+def parse_fps(raw: str) -> float:
+    try:
+        v = float(raw)
+    except ValueError:
+        raise BirdsimError(f"--fps {raw!r} is not a number; allowed: 1 to 240") from None
+    if not (math.isfinite(v) and 1 <= v <= 240):
+        raise BirdsimError(f"--fps {raw!r} is out of range; allowed: 1 to 240")
+    return v
+
+
+def run(args: argparse.Namespace) -> int:
+    from birdsim.io import check_output, write_atomic
+    from birdsim.studio.page import MAX_VIEW_BYTES, view_html
+    from birdsim.studio.scene import ViewOptions, flight_scene
+
+    fps = parse_fps(args.fps)
+    out = Path(args.out)
+    if out.suffix.lower() not in (".html", ".htm"):
+        raise BirdsimError(f"--out {str(out)!r} does not end in .html; allowed: a .html path")
+    check_output(out, args.force, "--out")
+    if args.source.lower().endswith(".npz"):
+        from birdsim.flight.flightlog import load_log
+
+        for flag, value in (
+            ("--model", args.model),
+            ("--bird", args.bird),
+            ("--gust", args.gust),
+            ("--open-loop", args.open_loop),
+        ):
+            if value:
+                raise BirdsimError(
+                    f"{flag} does not apply to a flight log; allowed: a preset or manoeuvre file with it"
+                )
+        log = load_log(args.source, "SOURCE")
+        how = "from the log"
+    else:
+        from birdsim.studio.flights import FlightRequest, fly_request
+
+        req = FlightRequest(
+            args.source,
+            model=args.model,
+            bird=args.bird,
+            gusts=tuple(args.gust),
+            open_loop=args.open_loop,
+        )
+        log, _ = fly_request(req)
+        how = "flown in MuJoCo"
+    scene = flight_scene(log, ViewOptions(fps=fps), title=Path(args.source).stem)
+    page = view_html(scene).encode("utf-8")
+    if len(page) > MAX_VIEW_BYTES:
+        raise BirdsimError(
+            f"the view would be {len(page) / 1e6:.1f} MB; allowed: at most {MAX_VIEW_BYTES / 1e6:g} MB (lower --fps)"
+        )
+    check_output(out, args.force, "--out")
+    write_atomic(out, page)
+    tb = scene["time_base"]
+    print(
+        f"wrote {out} ({len(page) / 1e6:.2f} MB, {len(scene['t'])} frames over "
+        f"{scene['duration']:.3g} {scene['units']['time']}, {how}; playback 1x = {tb['label']})"
+    )
+    return 0
