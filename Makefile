@@ -62,18 +62,20 @@ bench: setup
 	$(BIN)/python benchmarks/run.py
 
 # Rebuild the shipped lookup tables tables/<model>.npz + .json (11^3 grid; a few minutes in all).
-TABLE_MODELS := base m1 m2 m3 m4
+TABLE_MODELS := base m1 m2 m3 m4 m5
 tables: setup
 	@for m in $(TABLE_MODELS); do \
 	  $(BIN)/birdsim tables build --model $$m --out tables/$$m.npz --force || exit $$?; \
 	done
 
 # Rebuild the demo model's flight tables (finer grid; docs/flight.md): the seed bird's and the
-# pigeon's (tables build reduces a bird to its reduced bird: forces in table units); ~2 min each.
+# pigeon's (tables build reduces a bird to its reduced bird: forces in table units); ~2 min each
+# for m3; the pigeon's folding wing (m5, issue 24) took 25 min on the shared machine.
 FLIGHT_GRID := Fx=-0.2:0.3:21,Fz=-0.4:0:17,V=0:0.8:17
 flight-tables: setup
 	$(BIN)/birdsim tables build --model m3 --bird models/seed-bird.toml --grid "$(FLIGHT_GRID)" --out tables/seed-m3.npz --force
 	$(BIN)/birdsim tables build --model m3 --bird models/pigeon.toml --grid "$(FLIGHT_GRID)" --out tables/pigeon-m3.npz --force
+	$(BIN)/birdsim tables build --model m5 --bird models/pigeon.toml --grid "$(FLIGHT_GRID)" --out tables/pigeon-m5.npz --force
 
 # The dissertation's analysis as figures: report/index.html (a few minutes; QUICK=1 for coarse grids).
 report: setup

@@ -58,6 +58,7 @@ BUILD = [*BUILD_BASE, *TINY_GRID, "--jobs", "1"]
 BUILD_NO_GRID = [*BUILD_BASE, "--jobs", "1"]
 RENDER_NO_MODEL = ["render", "hover", "--table", "{w}/table.npz", "--quiet"]
 RENDER = [*RENDER_NO_MODEL, "--model", "base"]
+M5_PARAMS = [x for n in ("pitch=0.2", "flap_amp=0.5", "twist_amp=0.2", "stroke_plane=0.2", "wrist_amp=0.1", "wrist_bias=0.1", "wrist_lag=0.5", "fold_phase=0", "supination_amp=0.3") for x in ("--param", n)]
 TINY = Grid.parse("Fx=0|0.2,Fz=-0.5|-0.2,V=0|0.9")
 SEED_TABLE = Path(__file__).resolve().parent.parent / "tables" / "seed-m3.npz"
 # fmt: on
@@ -144,6 +145,9 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("examples/unknown-option", ["examples", "--model", "m1"], "unrecognized arguments: --model"),
     # ---- birdsim tables build -----------------------------------------------------------
     ("build/unknown-model", ["tables", "build", "--model", "m9"], "--model 'm9' is unknown"),
+    ("build/m5-bird-without-hand", [*BUILD[:3], "m5", *BUILD[4:], "--bird", "{w}/nohand.toml"], "bird: bird.hand_span_fraction=0.0 leaves no arm or no hand; allowed for model m5"),
+    ("build/m5-coupling-out-of-range", [*BUILD[:3], "m5", *BUILD[4:], "--bird", "{w}/badfold.toml"], "--bird '{w}/badfold.toml': bird.fold_coupling=3.0 is invalid; allowed: a number in [0, 2]"),
+    ("forces/m5-fold-out-of-bounds", ["forces", "--model", "m5", "--speed", "0.3", *M5_PARAMS, "--param", "fold_amp=1.5"], "--param fold_amp=1.5 is out of bounds for model m5; allowed: [0, 1.0472]"),
     ("build/grid-malformed", [*BUILD_NO_GRID, "--grid", "Fx=1:2"], "--grid 'Fx=1:2' is malformed"),
     ("build/grid-nan", [*BUILD_NO_GRID, "--grid", "Fx=nan:1:3"], "--grid"),
     ("build/grid-negative-V", [*BUILD_NO_GRID, "--grid", "V=-1:1:3"], "--grid V starts at -1"),
@@ -344,7 +348,7 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("py/load_manoeuvre-speed-huge", lambda w: load_manoeuvre(w / "man_huge_v.toml"), "keyframe 1 V=1e+300 is invalid"),
     ("py/Manoeuvre-force-huge", lambda w: Manoeuvre("m", (Keyframe(0.0, 1e300, -0.3, 0.0, 6.0),), 1.0), "keyframe 1 Fx=1e+300 is invalid"),
     ("py/get_flight-path-huge", lambda w: get_flight(str(w / "path_huge_v.toml")), "keyframe 2 V=1e+300 is invalid"),
-    ("py/get_model-unknown", lambda w: get_model("m5"), "model 'm5' is unknown"),
+    ("py/get_model-unknown", lambda w: get_model("m6"), "model 'm6' is unknown"),
 ]
 # fmt: on
 
@@ -398,6 +402,8 @@ def template(tmp_path_factory: pytest.TempPathFactory) -> Path:
     (w / "bird_unknown_key.toml").write_text("wingspan = 2.0\n")
     (w / "bird_negative.toml").write_text("semispan = -1.0\n")
     (w / "bird_nan.toml").write_text("chord = nan\n")
+    (w / "nohand.toml").write_text("hand_span_fraction = 0.0\n")
+    (w / "badfold.toml").write_text("fold_coupling = 3.0\n")
     (w / "bird_type.toml").write_text('semispan = "long"\n')
     (w / "bird_bool.toml").write_text("semispan = true\n")
     (w / "bird_polar.toml").write_text('[polar]\nkind = "magic"\n')

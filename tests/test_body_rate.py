@@ -16,7 +16,7 @@ from birdsim.physics.bird import Bird
 from birdsim.physics.cycle import evaluate_cycle
 from birdsim.physics.kinematics import get_model
 
-MODELS = ("base", "m1", "m2", "m3", "m4")
+MODELS = ("base", "m1", "m2", "m3", "m4", "m5")  # m5: the hand's area fold too
 
 
 def _means(c):

@@ -53,7 +53,7 @@ def test_exact_velocity_equals_finite_difference(model):
         np.testing.assert_allclose(np.broadcast_to(v, pa.shape), (pa - pb) / (2 * h), atol=1e-8)
 
 
-@pytest.mark.parametrize("model", ["m1", "m2", "m3", "m4"])
+@pytest.mark.parametrize("model", ["m1", "m2", "m3", "m4", "m5"])
 def test_left_wing_is_the_mirror_image(model):
     """The left wing's joints are the right wing's with flap and sweep angles negated
     (rotations about body x and z change sense in the mirror y -> -y) and the span
@@ -75,7 +75,9 @@ def test_left_wing_is_the_mirror_image(model):
         r = np.array([0.5 * span])
         pos_r, vel_r = points_in_body(chain, right, r)
         # the left wing's chain: offsets along -y
-        left_chain = tuple(Offset(-el.span) if isinstance(el, Offset) else el for el in chain)
+        left_chain = tuple(
+            Offset(-el.span, el.role) if isinstance(el, Offset) else el for el in chain
+        )
         pos_l, vel_l = points_in_body(left_chain, left, -r)
         for i in range(3):
             left_i, right_i = np.broadcast_arrays(pos_l[i], mirror[i] * pos_r[i])
@@ -153,8 +155,8 @@ def test_parameter_errors_are_one_clear_line():
         with pytest.raises(ParameterError, match=text) as info:
             validate_params(m, params)
         assert "\n" not in str(info.value), label
-    with pytest.raises(UnknownModelError, match="allowed: base, m1, m2, m3, m4"):
-        get_model("m5")
+    with pytest.raises(UnknownModelError, match="allowed: base, m1, m2, m3, m4, m5"):
+        get_model("m6")
     with pytest.raises(birdsim.BirdsimError, match="speed"):
         birdsim.evaluate_cycle("m1", good, -1.0)
     with pytest.raises(birdsim.BirdsimError, match="speed"):

@@ -18,7 +18,7 @@ from birdsim.physics.frames import earth_to_body
 from birdsim.physics.kinematics import get_model
 from birdsim.physics.moments import CONTROL_INPUTS, input_model, wing_params, wingbeat_moments
 
-MODELS = ("base", "m1", "m2", "m3", "m4")
+MODELS = ("base", "m1", "m2", "m3", "m4", "m5")  # m5: the hand's area fold too
 SYM_TOL = 1e-14
 FD_TOL = 1e-8
 

@@ -42,7 +42,7 @@ def test_dissertation_examples(ex):
 
 def _random_cases(per_model: int = 2):
     rng = np.random.default_rng(11)
-    for name in ("base", "m1", "m2", "m3", "m4"):
+    for name in ("base", "m1", "m2", "m3", "m4", "m5"):
         lo, hi = get_model(name).bounds
         for _ in range(per_model):
             yield (
@@ -115,7 +115,7 @@ def _param_sets():
         fields = {p.name: st.floats(p.lower, p.upper, allow_nan=False) for p in km.params}
         return st.tuples(st.just(name), st.fixed_dictionaries(fields), st.floats(0.0, 1.0))
 
-    return st.sampled_from(["base", "m1", "m2", "m3", "m4"]).flatmap(for_model)
+    return st.sampled_from(["base", "m1", "m2", "m3", "m4", "m5"]).flatmap(for_model)
 
 
 def test_inverse_matches_for_any_parameter_set():

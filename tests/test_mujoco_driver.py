@@ -19,7 +19,7 @@ C = np.diag([1.0, -1.0, -1.0])
 def _cases():
     cases = [(ex.model, ex.params, ex.speed) for ex in EXAMPLES]
     rng = np.random.default_rng(2024)
-    for name in ("base", "m1", "m2", "m3", "m4"):
+    for name in ("base", "m1", "m2", "m3", "m4", "m5"):
         lo, hi = get_model(name).bounds
         cases.append((name, dict(zip(get_model(name).param_names, rng.uniform(lo, hi))), 0.3))
     return cases
@@ -93,7 +93,9 @@ def test_set_pose_pitch_position_and_velocity():
 def test_set_pose_rejects_bad_input_in_one_line():
     m = build_model("m1")
     d = mujoco.MjData(m)
-    with pytest.raises(BirdsimError, match="names joint 'elbow'; allowed: heave"):
+    with pytest.raises(BirdsimError, match="names joint 'knee'; allowed: heave"):
+        set_pose(m, d, {"knee": 0.1}, pitch=0.0)
+    with pytest.raises(BirdsimError, match="joint elbow is not in this model; allowed: m5"):
         set_pose(m, d, {"elbow": 0.1}, pitch=0.0)
     with pytest.raises(BirdsimError, match="position_seed"):
         set_pose(m, d, {}, pitch=0.0, position_seed=(0.0, np.nan, 0.0))

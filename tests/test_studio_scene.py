@@ -45,13 +45,13 @@ def test_replayed_torso_is_the_logged_track(hover_log):
     replay = np.array(torso["pos"]).reshape(n, 3)
     track = np.array(scene["track"]["pos"]).reshape(n, 3)
     np.testing.assert_allclose(replay, track, atol=TOL)
-    # attitude: the replayed torso quaternion and the one from the logged pitch (q ~ -q)
+    # attitude: the replayed torso quaternion and the logged one (q ~ -q)
     qr = np.array(torso["quat"]).reshape(n, 4)
     qt = np.array(scene["track"]["quat"]).reshape(n, 4)
     qr /= np.linalg.norm(qr, axis=1, keepdims=True)
     qt /= np.linalg.norm(qt, axis=1, keepdims=True)
     np.testing.assert_allclose(np.abs(np.sum(qr * qt, axis=1)), 1.0, atol=TOL)
-    assert scene["attitude"] == "pitch"
+    assert scene["attitude"] == "quat"  # every flight log carries the body's quaternion
 
 
 def test_wings_move_and_world_is_static(hover_log):
@@ -66,8 +66,10 @@ def test_wings_move_and_world_is_static(hover_log):
 
 
 def test_track_uses_quat_and_y_when_the_log_has_them(hover_log):
-    """After the free-body merge the log carries ``quat`` and ``y``: the track takes
-    them instead of the pitch (a made-up roll of 0.3 rad proves which was read)."""
+    """A log with ``quat`` and ``y`` (every log since the free body): the track takes them
+    instead of the pitch (a made-up roll of 0.3 rad proves which was read); an older log
+    without them: the pitch, and y = 0."""
+    old = {k: v for k, v in hover_log.items() if k not in ("quat", "y")}
     log = dict(hover_log)
     n = log["t"].size
     roll = 0.3
@@ -76,9 +78,9 @@ def test_track_uses_quat_and_y_when_the_log_has_them(hover_log):
     pos, quat = body_track(log)
     np.testing.assert_allclose(pos[:, 1], 0.7)
     np.testing.assert_allclose(quat[0], [np.cos(roll / 2), np.sin(roll / 2), 0, 0])
-    pos0, quat0 = body_track(hover_log)
+    pos0, quat0 = body_track(old)
     np.testing.assert_allclose(pos0[:, 1], 0.0)
-    half = 0.5 * hover_log["pitch"]
+    half = 0.5 * old["pitch"]
     np.testing.assert_allclose(quat0[:, 2], -np.sin(half))  # nose up = about MuJoCo -y
     assert flight_scene(log)["attitude"] == "quat"
 

@@ -227,6 +227,10 @@ PINNED = {
     "TD96_body_angle_trend": (-1.883, 0.05),
     "TD96_strokeplane_trend": (3.208, 0.05),
     "PA15_hover": (1.0, 0),
+    # issue 24's rows: m3's rigid wing keeps its span (ratio 1 at every speed)
+    "TD96_span_ratio_trend": (0.0, 0),
+    "PA15_fold_cruise": (0.0, 0),
+    "PA15_extend_hover": (0.0, 0),
     "H07_roll_damping": (-0.318, 0.03),  # docs/moments.md: a factor 4.7 short of -1.5
     "H07_roll_damping_airplane": (-0.318, 0.03),
     "HCD09_fct": (1.0, 0),
@@ -240,6 +244,8 @@ VERDICTS = {
     "H07_roll_damping": "off",
     "H07_roll_damping_airplane": "not",
     "TD96_body_angle_trend": "same",
+    "TD96_span_ratio_trend": "opposite",
+    "PA15_fold_cruise": "off",
 }
 
 

@@ -10,6 +10,7 @@ from birdsim.commands.common import add_bird_arguments, bird_from_args, parse_pa
 from birdsim.errors import BirdsimError, check_number
 from birdsim.physics.cycle import DEFAULT_SAMPLES, evaluate_cycle
 from birdsim.physics.kinematics import get_model
+from birdsim.physics.span import span_ratio
 
 #: Most samples per wingbeat ``--samples`` accepts (the histories are N long per strip).
 MAX_SAMPLES = 100_000
@@ -94,6 +95,7 @@ def run(args: argparse.Namespace) -> int:
         "panels": {k: v.as_dict() for k, v in cyc.panel_mean.items()},
         "body_drag_x": float(cyc.body_drag_x),
         "body_drag_z": float(cyc.body_drag_z),
+        "span_ratio": float(span_ratio(model, params, bird=bird)),
         "units": units_of(bird),
     }
     if len(cyc.joint_power_mean) > 1:
@@ -118,4 +120,5 @@ def run(args: argparse.Namespace) -> int:
     rows += [(f"panel {k}", v) for k, v in out["panels"].items()] if len(out["panels"]) > 1 else []
     for label, row in rows:
         print(f"{label:12s}" + "".join(f"{row[k]:+10.4f}" for k in ("Fx", "Fy", "Fz", "P")))
+    print(f"span ratio (mid-upstroke / mid-downstroke tip-to-tip span): {out['span_ratio']:.4f}")
     return 0

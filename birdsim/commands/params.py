@@ -16,7 +16,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         description=__doc__,
     )
     p.add_argument(
-        "model", nargs="?", metavar="MODEL", help="base, m1, m2, m3 or m4 (default: all)"
+        "model", nargs="?", metavar="MODEL", help="base, m1, m2, m3, m4 or m5 (default: all)"
     )
     p.add_argument("--json", action="store_true", help="print JSON")
     p.set_defaults(func=run)
@@ -53,6 +53,12 @@ def reference(model_name: str | None = None) -> dict[str, Any]:
                 for p in km.params
             ],
         }
+        if name == "m5":
+            from birdsim.physics import m5
+
+            for p in out[name]["params"]:
+                p["bounds_source"] = m5.BOUND_SOURCES[p["name"]]
+            out[name]["skeleton"] = dict(m5.SKELETON_SOURCES)
     return out
 
 
@@ -83,5 +89,10 @@ def run(args: argparse.Namespace) -> int:
             print(
                 f"  {p['name']:13s}{p['symbol']:9s}{p['unit']:5s}{bounds:18s}{ex}   {p['meaning']}"
             )
-        print("  examples: " + "; ".join(examples))
+        print("  examples: " + ("; ".join(examples) or "none (beyond the dissertation)"))
+        for p in entry["params"]:
+            if "bounds_source" in p:
+                print(f"  bounds of {p['name']}: {p['bounds_source']}")
+        for field, text in entry.get("skeleton", {}).items():
+            print(f"  bird.{field}: {text}")
     return 0

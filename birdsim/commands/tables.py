@@ -205,6 +205,11 @@ def run_build(args: argparse.Namespace) -> int:
     grid = Grid.parse(_grid_spec(args), _size(args), climb=args.climb)
     # an SI bird gets a table in table units: the table records the reduced bird
     bird = reduced_bird(bird_from_args(args))
+    if model.name == "m5":
+        from birdsim.physics.m5 import fold_bird_error
+
+        if (why := fold_bird_error(bird)) is not None:
+            raise BirdsimError(f"--bird: {why}")
     _check_build_options(args)
     weights = CostWeights(power=args.power_weight, distance=args.distance)
     settings = BuildSettings(

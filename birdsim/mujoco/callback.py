@@ -31,6 +31,7 @@ import mujoco
 import numpy as np
 
 from birdsim.errors import BirdsimError
+from birdsim.mujoco.fold import fold_area_joints, fold_area_scale
 from birdsim.mujoco.model import aero_sites, span_sign
 from birdsim.mujoco.tail import TailControls, tail_force, tail_frame
 from birdsim.physics.aero import body_drag_magnitude
@@ -79,6 +80,8 @@ class AeroCallback:
         # element offsets from the site along its local y axis, (K, S)
         self.offsets = np.array([[span_sign(s.side) * o for o in s.strip_offsets] for s in sites])
         self.areas = np.array([[w * s.chord for w in s.strip_widths] for s in sites])
+        # m5: the hand's area follows the wrist flexion (physics.m5.area_factor)
+        self.fold_qpos = fold_area_joints(m, model_name, sites)
         self._vel = np.zeros((len(sites), 6))
         self._tvel = np.zeros(6)
         self.single = bool(np.all(self.offsets == 0.0))
@@ -111,18 +114,21 @@ class AeroCallback:
         for k, sid in enumerate(self.site_ids):
             mujoco.mj_objectVelocity(m, d, _SITE, int(sid), self._vel[k], 0)
         xmat = d.site_xmat[self.site_ids].reshape(-1, 3, 3)  # columns: site axes in world
+        areas = self.areas
+        if self.fold_qpos is not None:
+            areas = self.areas * fold_area_scale(d.qpos, self.fold_qpos, self.bird)[:, None]
         ang, lin = self._vel[:, :3], self._vel[:, 3:] - wind
         if self.single:  # one element per panel, at the site
             local = (lin[:, None, :] @ xmat)[:, 0, :]  # (K, 3) = xmat^T v
             # seed panel axes = C (site axes): vx = local x, vz = -local z
-            fx, fz = polar.force_panel(local[:, 0], -local[:, 2], self.areas[:, 0], rho)
+            fx, fz = polar.force_panel(local[:, 0], -local[:, 2], areas[:, 0], rho)
             force = fx[:, None] * xmat[:, :, 0] - fz[:, None] * xmat[:, :, 2]
             torque = self._zero_torque
         else:
             r = xmat[:, None, :, 1] * self.offsets[:, :, None]  # (K, S, 3) site -> element
             v = lin[:, None, :] + _cross(ang[:, None, :], r)  # element velocity rel. to air
             local = np.einsum("kji,ksj->ksi", xmat, v)
-            fx, fz = polar.force_panel(local[..., 0], -local[..., 2], self.areas, rho)
+            fx, fz = polar.force_panel(local[..., 0], -local[..., 2], areas, rho)
             f = fx[..., None] * xmat[:, None, :, 0] - fz[..., None] * xmat[:, None, :, 2]
             force = f.sum(axis=1)
             torque = _cross(r, f).sum(axis=1)

@@ -34,7 +34,14 @@ from birdsim.physics.kinematics import JOINTS, get_model, validate_params
 #: The core joints composed into the shoulder ball joint, outermost first.
 SHOULDER = ("sweep", "stroke", "flap", "twist")
 HINGES = ("wrist_flap", "wrist_twist")
-CORE_JOINTS = ("heave",) + SHOULDER + HINGES
+#: m5's hinges (only its MJCF has them: mujoco/fold.py)
+FOLD_HINGES = ("elbow", "wrist_sweep")
+#: m5's supination turns the hand about the same axis as the wrist twist, right after
+#: it: MuJoCo moves both with the ``X_wrist_twist`` hinge (the sum of the two angles; two
+#: collinear hinges in one body would make the mass matrix singular)
+SAME_AXIS = {"supination": "wrist_twist"}
+_JOINT = mujoco.mjtObj.mjOBJ_JOINT
+CORE_JOINTS = ("heave",) + SHOULDER + HINGES + FOLD_HINGES + tuple(SAME_AXIS)
 
 
 @dataclass(frozen=True)
@@ -145,7 +152,14 @@ def wing_arrays(
         ):
             _check_names(vals, arg)
     t = samples
-    get = lambda d, k: _as_series((d or {}).get(k, 0.0), t, k)  # noqa: E731
+
+    def get(d: Mapping[str, object] | None, k: str) -> np.ndarray:
+        out = _as_series((d or {}).get(k, 0.0), t, k)
+        for extra, into in SAME_AXIS.items():
+            if into == k and extra in (d or {}):
+                out = out + _as_series(d[extra], t, extra)  # type: ignore[index]
+        return out
+
     qpos = np.tile(m.qpos0, (t, 1))
     qvel = np.zeros((t, m.nv))
     qacc = np.zeros((t, m.nv))
@@ -167,7 +181,13 @@ def wing_arrays(
         qpos[:, qa : qa + 4] = quat
         qvel[:, da : da + 3] = omega
         qacc[:, da : da + 3] = alpha
-        for j in HINGES:
+        for j in HINGES + FOLD_HINGES:
+            if j in FOLD_HINGES and mujoco.mj_name2id(m, _JOINT, f"{side}_{j}") < 0:
+                if np.any(get(angles, j)) or np.any(get(rates, j)):
+                    raise BirdsimError(
+                        f"joint {j} is not in this model; allowed: m5's MJCF (build_model('m5'))"
+                    )
+                continue  # a model without m5's joints
             jid = m.joint(f"{side}_{j}").id
             qpos[:, m.jnt_qposadr[jid]] = get(angles, j)
             qvel[:, m.jnt_dofadr[jid]] = get(rates, j)

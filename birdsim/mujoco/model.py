@@ -46,6 +46,7 @@ from birdsim.mujoco.arena import (
 from birdsim.mujoco.arena import (
     camera_quat as _camera_quat,
 )
+from birdsim.mujoco.fold import add_elbow, add_hand_joints
 from birdsim.mujoco.plumage import plumage_for
 from birdsim.mujoco.sites import (  # noqa: F401 (re-exported)
     SIDES,
@@ -148,7 +149,7 @@ def _add_bird(
     # single-panel models draw their one panel split at the same wrist (kept straight)
     hand_span = bird.semispan * bird.hand_span_fraction
     arm_span = bird.semispan - hand_span
-    if km.name == "m4":
+    if km.name in ("m4", "m5"):
         arm_chord, hand_chord = panels[0].chord, panels[1].chord
     else:
         arm_chord = hand_chord = panels[0].chord
@@ -235,6 +236,8 @@ def _add_bird(
             name=f"{side}_heave", type=mujoco.mjtJoint.mjJNT_SLIDE, axis=slide_axis(side, "z")
         )
         arm.add_joint(name=f"{side}_shoulder", type=mujoco.mjtJoint.mjJNT_BALL)
+        if km.name == "m5":  # the elbow: the arm panel rides on the forearm (mujoco/fold.py)
+            arm = add_elbow(arm, side, bird, arm_span, sg, hinge_axis, wing_mass)
         panel(arm, f"{side}_arm_panel", arm_span, arm_chord, sg, "arm")
         arm.add_site(
             name=f"{side}_cp_wing", default=cp_cls, pos=[0.0, sg * bird.cp_span_fraction * s, 0.0]
@@ -245,12 +248,7 @@ def _add_bird(
             pos=[0.0, sg * bird.cp_span_fraction * arm_span, 0.0],
         )
         hand = arm.add_body(name=f"{side}_hand", pos=[0.0, sg * arm_span, 0.0])
-        hand.add_joint(
-            name=f"{side}_wrist_flap", type=mujoco.mjtJoint.mjJNT_HINGE, axis=hinge_axis(side, "x")
-        )
-        hand.add_joint(
-            name=f"{side}_wrist_twist", type=mujoco.mjtJoint.mjJNT_HINGE, axis=hinge_axis(side, "y")
-        )
+        add_hand_joints(hand, side, km.name, hinge_axis)  # m4's two hinges; m5 adds two
         panel(hand, f"{side}_hand_panel", hand_span, hand_chord, sg, "hand")
         hand.add_site(
             name=f"{side}_cp_hand",

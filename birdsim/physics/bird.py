@@ -7,7 +7,10 @@ says otherwise; any consistent unit system works.
 Geometry per model (docs/design.md): the single-panel models (base, m1, m2, m3) use one
 panel of span ``semispan`` and chord ``chord``.  m4 splits the semispan into an arm
 of span ``semispan * (1 - hand_span_fraction)`` (chord ``chord``) and a hand of span
-``semispan * hand_span_fraction`` (chord ``hand_chord``).
+``semispan * hand_span_fraction`` (chord ``hand_chord``).  m5 (the folding wing) has
+m4's panels, an elbow at ``elbow_span_fraction`` of the arm span, a wrist that flexes
+``fold_coupling`` times the elbow and a hand whose area shrinks by up to
+``hand_fold_area_loss`` as the wrist folds (:mod:`birdsim.physics.m5`).
 """
 
 from __future__ import annotations
@@ -60,6 +63,9 @@ class Bird:
     cp_span_fraction: float = 0.5
     strips: int = 1
     wrist_twist_ratio: float = 0.25
+    elbow_span_fraction: float = 0.45
+    fold_coupling: float = 1.0
+    hand_fold_area_loss: float = 0.6
     rho: float = 1.0
     omega: float = 1.0
     body_drag_area: float = 1.0
@@ -123,6 +129,10 @@ class Bird:
                 raise BirdConfigError(
                     f"bird.{name}={v!r} is invalid; allowed: a finite number >= 0, {limits_text()}"
                 )
+        for name, lo, hi, why in _FOLD_RANGES:
+            v = getattr(self, name)
+            if not (_is_number(v) and lo <= v <= hi):
+                raise BirdConfigError(f"bird.{name}={v!r} is invalid; allowed: {why}")
         if not (
             isinstance(self.strips, int)
             and not isinstance(self.strips, bool)
@@ -136,7 +146,7 @@ class Bird:
 
     def panels(self, model: str) -> tuple[PanelGeometry, ...]:
         """The wing panels of ``model``: one for base..m3, arm and hand for m4."""
-        if model == "m4":
+        if model in ("m4", "m5"):
             hand = self.semispan * self.hand_span_fraction
             arm = self.semispan - hand
             return (
@@ -253,6 +263,27 @@ class Bird:
 
 #: Bird fields that only free flight uses (the tables' wings do not depend on them).
 FLIGHT_FIELDS = ("tail_length", "tail_span", "tail_root", "body_inertia")
+
+#: m5's skeleton: (field, lower, upper, what is allowed and why).  Estimates, not
+#: measured ranges (docs/conventions.md): the elbow strictly inside the arm (a humerus and
+#: a forearm of non-zero length); the wrist flexing between not at all and twice the
+#: elbow (1 is the planar "drawing parallels" coupling); the hand losing at most all of
+#: its area when folded back on itself.
+_FOLD_RANGES = (
+    (
+        "elbow_span_fraction",
+        0.05,
+        0.95,
+        "a number in [0.05, 0.95] of the arm span (humerus and forearm both present)",
+    ),
+    ("fold_coupling", 0.0, 2.0, "a number in [0, 2] (wrist flexion per radian of elbow flexion)"),
+    (
+        "hand_fold_area_loss",
+        0.0,
+        1.0,
+        "a number in [0, 1] (fraction of the hand's area lost when folded back)",
+    ),
+)
 
 
 def _is_number(v: Any) -> bool:

@@ -7,6 +7,7 @@ in docs/moments.md."""
 from __future__ import annotations
 
 from collections.abc import Mapping
+from dataclasses import replace
 
 import numpy as np
 
@@ -58,7 +59,7 @@ def input_model(model: str | KinematicModel) -> KinematicModel:
                 chain = chain[:at] + (JOINTS[_ADDABLE[n]],) + chain[at:]
             chains.append(chain)
         params = m.params + tuple(_PARAMS[n] for n in missing)
-        _EXTENDED[key] = KinematicModel(m.name, params, tuple(chains), m.description)
+        _EXTENDED[key] = replace(m, params=params, chains=tuple(chains))  # keeps area_folds
     return _EXTENDED[key]
 
 

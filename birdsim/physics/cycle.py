@@ -40,6 +40,7 @@ from birdsim.physics.kinematics import (
     strip_positions,
     validate_params,
 )
+from birdsim.physics.m5 import fold_bird_error
 
 #: Samples per wingbeat of :func:`evaluate_cycle` (and of the CLI's ``forces`` and a table
 #: build's final check): the smallest even n that puts the mean force within 1e-7 of the
@@ -183,6 +184,8 @@ def evaluate_cycle(
         raise BirdsimError(
             f"bird={bird!r} is invalid; allowed: a birdsim.Bird (Bird.from_toml(path) reads a bird file) or None"
         )
+    if m.area_folds and (why := fold_bird_error(bird)) is not None:
+        raise BirdsimError(f"bird: {why}")
     p = validate_params(m, params, check_bounds=check_bounds)
     v = check_numbers("speed", speed, "a finite number >= 0", minimum=0.0)
     vc = _check_climb(climb)
@@ -369,7 +372,9 @@ def _chunk(
     air_body = earth_to_body(pitch_b, rel_earth)
     for k, (chain, span, chord) in enumerate(panels):
         r, w = strip_positions(span, bird.cp_span_fraction, bird.strips)
-        el = element_forces(chain, states, r, w, chord, air_body, bird, rate)
+        el = element_forces(
+            chain, states, r, w, chord * m.area_scale(k, states, bird), air_body, bird, rate
+        )
         v_flap = _sum_groups(el.velocity_body)
         f_earth = body_to_earth(pitch_b, el.force_body)
         for i in range(3):

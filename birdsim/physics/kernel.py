@@ -6,7 +6,9 @@ oracle; this module evaluates the same physics sample by sample with scalars, no
 temporaries, on every core (tasks of :data:`CHUNK` parameter sets on a thread pool;
 the compiled code releases the GIL).  The model is data: each
 panel's chain (hinges, slides, the wrist offset) is encoded as small integer arrays and
-walked at run time, so one compiled kernel serves every model, strip count and bird.
+walked at run time, so one compiled kernel serves every model, strip count and bird
+(a panel whose area follows a joint, m5's folding hand, carries one more column: see
+:func:`_fold_columns`).  The compiled code is in :mod:`birdsim.physics.kernel_means`.
 
 :func:`means` returns the cycle means per panel; :func:`means_and_gradients` adds the
 exact derivatives of the means with respect to every wingbeat parameter, by forward-mode
@@ -20,7 +22,6 @@ line) and callers use the numpy path.  Compiled code is cached on disk (``cache=
 from __future__ import annotations
 
 import functools
-import math
 import multiprocessing
 import os
 import warnings
@@ -31,8 +32,13 @@ import numpy as np
 
 from birdsim.physics.aero import RoboflyPolar, SeedPolar
 from birdsim.physics.bird import Bird
-from birdsim.physics.jit import jit as _jit
 from birdsim.physics.jit import numba
+from birdsim.physics.kernel_means import (  # _polar_force, _rot: re-exported
+    _means_kernel,
+    _means_rate_kernel,
+    _polar_force,  # noqa: F401
+    _rot,  # noqa: F401
+)
 from birdsim.physics.kinematics import Joint, KinematicModel, Offset, strip_positions
 
 _STATE = {"ok": numba is not None, "warned": False}
@@ -87,7 +93,7 @@ def _run(kernel, B: int, args: tuple) -> bool:
 
 
 # chain element codes
-_OFFSET, _HINGE, _SLIDE = 0, 1, 2
+_OFFSET, _HINGE, _SLIDE, _FOLD = 0, 1, 2, 3  # _FOLD: after a chain's last element
 _AXES = {"x": 0, "y": 1, "z": 2}
 _GROUPS = ("shoulder", "wrist")
 # polar codes
@@ -147,6 +153,10 @@ def setup(m: KinematicModel, bird: Bird) -> Setup:
         strips[k] = len(r)
         radius[k, : len(r)] = r
         area[k, : len(r)] = w * chord
+    if any(name is not None for name in m.area_folds):  # one more column: the area fold
+        kind, joint, axis, group, span = _fold_columns(
+            m, bird, names, length, kind, joint, axis, group, span
+        )
     if isinstance(bird.polar, SeedPolar):
         polar, coeffs = _SEED, np.array([bird.polar.cl_max, bird.polar.cd0, bird.polar.cd_max])
     else:
@@ -155,6 +165,20 @@ def setup(m: KinematicModel, bird: Bird) -> Setup:
     return Setup(
         kind, joint, axis, group, span, length, radius, area, strips, polar, coeffs, groups, names
     )
+
+
+def _fold_columns(m, bird, names, length, kind, joint, axis, group, span) -> tuple:
+    """The chain arrays with one more column, where a panel whose area follows a joint
+    (``m.area_folds``) has code :data:`_FOLD` at index ``length[k]``: the joint in
+    ``joint``, the hand's area loss ``lambda`` in ``span``.  Models without a fold keep
+    their arrays as they are (and so their numbers, bit for bit)."""
+    wide = [np.pad(a, ((0, 0), (0, 1))) for a in (kind, joint, axis, group, span)]
+    for k, name in enumerate(m.area_folds):
+        if name is not None:
+            n = length[k]
+            wide[0][k, n], wide[1][k, n] = _FOLD, names.index(name)
+            wide[4][k, n] = bird.hand_fold_area_loss
+    return tuple(wide)
 
 
 def joint_coefficients(
@@ -330,256 +354,3 @@ def means_and_gradients(
     if not _run(_grad_kernel, B, args):
         return None
     return out[:, :, 0], out[:, :, 1:]
-
-
-# ---- compiled code --------------------------------------------------------------------
-# Conventions as in frames.rotate: the passive Table 2 rotation about `axis` with (c, s);
-# the way back passes -s.  Values only here; the dual-number version follows.
-
-
-@_jit
-def _polar_force(polar, coeffs, vx, vz, area, rho):
-    """Panel-axes (fx, fz) of an element: the seed polar's algebraic form, or robofly."""
-    if polar == 0:
-        vx2, vz2 = vx * vx, vz * vz
-        u2 = vx2 + vz2
-        u = math.sqrt(u2)
-        inv_u = 0.5 * rho * area / u if u > 0.0 else 0.0
-        drag_u2 = coeffs[1] * u2 + coeffs[2] * vz2
-        lift2 = 2.0 * coeffs[0]
-        return inv_u * vx * (lift2 * vz2 - drag_u2), -inv_u * vz * (lift2 * vx2 + drag_u2)
-    alpha = math.atan2(vz, vx)
-    x = alpha + 0.5 * math.pi
-    a = x % math.pi - 0.5 * math.pi  # Python's float mod is numpy's: the sign of pi
-    deg = abs(a) * (180.0 / math.pi)
-    cl = 0.225 + 1.58 * math.sin((2.13 * deg - 7.20) * (math.pi / 180.0))
-    cd = 1.92 - 1.55 * math.cos((2.04 * deg - 9.82) * (math.pi / 180.0))
-    sg = 1.0 if a > 0.0 else (-1.0 if a < 0.0 else (0.0 if a == 0.0 else a))
-    cl = sg * cl
-    q_area = 0.5 * rho * (vx * vx + vz * vz) * area
-    ca, sa = math.cos(alpha), math.sin(alpha)
-    return q_area * (-cd * ca + cl * sa), q_area * (-cd * sa - cl * ca)
-
-
-@_jit
-def _rot(axis, c, s, x, y, z):
-    if axis == 1:
-        return c * x - s * z, y, s * x + c * z
-    if axis == 0:
-        return x, c * y + s * z, -s * y + c * z
-    return c * x + s * y, -s * x + c * y, z
-
-
-@_jit
-def _means_rate_kernel(
-    lo,
-    hi,
-    pitch,
-    speed,
-    climb,
-    air_earth,
-    amp,
-    phase,
-    bias,
-    const,
-    phases,
-    half,
-    omega,
-    rho,
-    kind,
-    joint,
-    axis,
-    group,
-    span,
-    length,
-    radius,
-    area,
-    strips,
-    polar,
-    coeffs,
-    F,
-    P,
-    JP,
-    rate,
-    rotating,
-):
-    """The means of :func:`_means_kernel` with a body rate (B x 3) when ``rotating``."""
-    J, N, K = amp.shape[1], phases.shape[0], kind.shape[0]
-    ct, stt = np.cos(phases), np.sin(phases)
-    for b in range(lo, hi):
-        cph = np.cos(phase[b])
-        sph = np.sin(phase[b])
-        cq = np.empty(J)
-        sq = np.empty(J)
-        qv = np.empty(J)
-        qd = np.empty(J)
-        cp, sp = math.cos(pitch[b]), math.sin(pitch[b])
-        # the body relative to the air, body axes: ((V, 0, -climb) - w_air) by the pitch
-        rx, ry, rz = speed[b] - air_earth[b, 0], -air_earth[b, 1], -climb[b] - air_earth[b, 2]
-        ax, ay, az = cp * rx - sp * rz, ry, sp * rx + cp * rz
-        for j in range(J):
-            if const[j]:
-                qv[j], qd[j] = bias[b, j], 0.0
-                cq[j], sq[j] = math.cos(bias[b, j]), math.sin(bias[b, j])
-        fxs, fys, fzs = np.zeros(K), np.zeros(K), np.zeros(K)
-        ps = np.zeros(K)
-        j0, j1 = 0.0, 0.0
-        # joint states at every sample; a joint without bias is odd over half a period
-        # (q(t + pi) = -q(t)), so on an even periodic grid its second half is free
-        TQ, TD, TC, TS = np.empty((N, J)), np.empty((N, J)), np.empty((N, J)), np.empty((N, J))
-        for j in range(J):
-            if const[j]:
-                continue
-            odd = half > 0 and bias[b, j] == 0.0
-            for t in range(half if odd else N):
-                # sin and cos of (omega t + phase) by the addition theorem
-                sarg = stt[t] * cph[j] + ct[t] * sph[j]
-                carg = ct[t] * cph[j] - stt[t] * sph[j]
-                q = amp[b, j] * sarg + bias[b, j]
-                TQ[t, j], TD[t, j] = q, (amp[b, j] * omega) * carg
-                TC[t, j], TS[t, j] = math.cos(q), math.sin(q)
-            if odd:
-                for t in range(half):
-                    TQ[t + half, j], TD[t + half, j] = -TQ[t, j], -TD[t, j]
-                    TC[t + half, j], TS[t + half, j] = TC[t, j], -TS[t, j]
-        for t in range(N):
-            for j in range(J):
-                if not const[j]:
-                    qv[j], qd[j], cq[j], sq[j] = TQ[t, j], TD[t, j], TC[t, j], TS[t, j]
-            for k in range(K):
-                L = length[k]
-                for e in range(strips[k]):
-                    # position and flapping velocity (per group) in body axes: inward pass
-                    px, py, pz = 0.0, radius[k, e], 0.0
-                    sx, sy, sz = 0.0, 0.0, 0.0  # shoulder group
-                    wx, wy, wz = 0.0, 0.0, 0.0  # wrist group
-                    for i in range(L - 1, -1, -1):
-                        kd = kind[k, i]
-                        if kd == 0:
-                            py += span[k, i]
-                            continue
-                        j = joint[k, i]
-                        a = axis[k, i]
-                        dx, dy, dz = 0.0, 0.0, 0.0
-                        if kd == 2:
-                            if a == 0:
-                                px += qv[j]
-                                dx = qd[j]
-                            elif a == 1:
-                                py += qv[j]
-                                dy = qd[j]
-                            else:
-                                pz += qv[j]
-                                dz = qd[j]
-                        else:
-                            c, s = cq[j], -sq[j]
-                            px, py, pz = _rot(a, c, s, px, py, pz)
-                            sx, sy, sz = _rot(a, c, s, sx, sy, sz)
-                            wx, wy, wz = _rot(a, c, s, wx, wy, wz)
-                            w = qd[j]
-                            if a == 0:
-                                dx, dy, dz = 0.0, -w * pz, w * py
-                            elif a == 1:
-                                dx, dy, dz = w * pz, 0.0, -w * px
-                            else:
-                                dx, dy, dz = -w * py, w * px, 0.0
-                        if group[k, i] == 0:
-                            sx, sy, sz = sx + dx, sy + dy, sz + dz
-                        else:
-                            wx, wy, wz = wx + dx, wy + dy, wz + dz
-                    fx_, fy_, fz_ = sx + wx, sy + wy, sz + wz  # flapping velocity
-                    vx, vy, vz = ax + fx_, ay + fy_, az + fz_
-                    if rotating:  # omega x r, r from the torso origin
-                        vx += rate[b, 1] * pz - rate[b, 2] * py
-                        vy += rate[b, 2] * px - rate[b, 0] * pz
-                        vz += rate[b, 0] * py - rate[b, 1] * px
-                    for i in range(L):
-                        if kind[k, i] == 1:
-                            j = joint[k, i]
-                            vx, vy, vz = _rot(axis[k, i], cq[j], sq[j], vx, vy, vz)
-                    gx, gz = _polar_force(polar, coeffs, vx, vz, area[k, e], rho)
-                    gy = 0.0
-                    for i in range(L - 1, -1, -1):
-                        if kind[k, i] == 1:
-                            j = joint[k, i]
-                            gx, gy, gz = _rot(axis[k, i], cq[j], -sq[j], gx, gy, gz)
-                    # earth axes (body -> earth: the pitch rotation transposed)
-                    fxs[k] += cp * gx + sp * gz
-                    fys[k] += gy
-                    fzs[k] += -sp * gx + cp * gz
-                    ps[k] -= gx * fx_ + gy * fy_ + gz * fz_
-                    j0 -= gx * sx + gy * sy + gz * sz
-                    j1 -= gx * wx + gy * wy + gz * wz
-        for k in range(K):
-            F[b, k, 0] = fxs[k] / N
-            F[b, k, 1] = fys[k] / N
-            F[b, k, 2] = fzs[k] / N
-            P[b, k] = ps[k] / N
-        JP[b, 0] = j0 / N
-        JP[b, 1] = j1 / N
-
-
-@_jit
-def _means_kernel(
-    lo,
-    hi,
-    pitch,
-    speed,
-    climb,
-    air_earth,
-    amp,
-    phase,
-    bias,
-    const,
-    phases,
-    half,
-    omega,
-    rho,
-    kind,
-    joint,
-    axis,
-    group,
-    span,
-    length,
-    radius,
-    area,
-    strips,
-    polar,
-    coeffs,
-    F,
-    P,
-    JP,
-):
-    """Cycle means of rows [lo, hi) into F, P, JP (a body that does not rotate)."""
-    _means_rate_kernel(
-        lo,
-        hi,
-        pitch,
-        speed,
-        climb,
-        air_earth,
-        amp,
-        phase,
-        bias,
-        const,
-        phases,
-        half,
-        omega,
-        rho,
-        kind,
-        joint,
-        axis,
-        group,
-        span,
-        length,
-        radius,
-        area,
-        strips,
-        polar,
-        coeffs,
-        F,
-        P,
-        JP,
-        np.zeros((1, 3)),
-        False,
-    )

@@ -94,6 +94,19 @@ def _dpolar(polar, coeffs, vx, vz, area, rho, gx, gz):
 
 
 @_jit
+def _scale_by_area(gx, gz, cq, half_loss):
+    """Multiply the dual force (gx, gz) by the dual area factor ``1 - h (1 - cos q)``
+    (``cq`` the dual cos q, ``h`` = lambda / 2; m5's folding hand): product rule."""
+    f0 = 1.0 - half_loss * (1.0 - cq[0])
+    for i in range(1, gx.shape[0]):
+        fi = half_loss * cq[i]
+        gx[i] = f0 * gx[i] + fi * gx[0]
+        gz[i] = f0 * gz[i] + fi * gz[0]
+    gx[0] *= f0
+    gz[0] *= f0
+
+
+@_jit
 def _grad_kernel(
     lo,
     hi,
@@ -226,6 +239,8 @@ def _grad_kernel(
                             j = joint[k, il]
                             _drot(v, axis[k, il], cq[j], sq[j], 1.0)
                     _dpolar(polar, coeffs, v[0], v[2], area[k, e], rho, gx, gz)
+                    if L < kind.shape[1] and kind[k, L] == 3:  # the area follows a joint
+                        _scale_by_area(gx, gz, cq[joint[k, L]], 0.5 * span[k, L])
                     for i in range(D):
                         g[0, i], g[1, i], g[2, i] = gx[i], 0.0, gz[i]
                     for il in range(L - 1, -1, -1):

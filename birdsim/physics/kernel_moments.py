@@ -19,7 +19,7 @@ import numpy as np
 
 from birdsim.physics import kernel
 from birdsim.physics.jit import jit as _jit
-from birdsim.physics.kernel_dual import _dpolar, _drot
+from birdsim.physics.kernel_dual import _dpolar, _drot, _scale_by_area
 from birdsim.physics.wing_sides import MIRROR_F, MIRROR_M, drag_body, sides
 
 
@@ -246,6 +246,8 @@ def _moments_kernel(
                             j = joint[k, il]
                             _drot(v, axis[k, il], cq[j], sq[j], 1.0)
                     _dpolar(polar, coeffs, v[0], v[2], area[k, e], rho, gx, gz)
+                    if L < kind.shape[1] and kind[k, L] == 3:  # the area follows a joint
+                        _scale_by_area(gx, gz, cq[joint[k, L]], 0.5 * span[k, L])
                     for i in range(D):
                         g[0, i], g[1, i], g[2, i] = gx[i], 0.0, gz[i]
                     for il in range(L - 1, -1, -1):

@@ -44,9 +44,10 @@ def right_wing_numpy(
     w = tuple(col(rate[:, i]) for i in range(3))
     B = len(speed)
     force, moment = np.zeros((B, 3)), np.zeros((B, 3))
-    for chain, span, chord in mx.chain_with_geometry(bird):
+    for k, (chain, span, chord) in enumerate(mx.chain_with_geometry(bird)):
         r, width = strip_positions(span, bird.cp_span_fraction, bird.strips)
-        el = element_forces(chain, states, r, width, chord, air, bird, w)
+        area = chord * mx.area_scale(k, states, bird)  # 1.0 but for m5's folding hand
+        el = element_forces(chain, states, r, width, area, air, bird, w)
         shape = (B, len(phases), len(r))
         mom = cross(el.position_body, el.force_body)
         for i in range(3):

@@ -188,6 +188,12 @@ class BuildConfig:
     weights: CostWeights = field(default_factory=CostWeights)
     settings: BuildSettings = field(default_factory=BuildSettings)
 
+    def __post_init__(self) -> None:
+        from birdsim.physics.m5 import fold_bird_error
+
+        if self.model == "m5" and (why := fold_bird_error(self.bird)) is not None:
+            raise BirdsimError(f"bird: {why}")  # m5 needs an arm and a hand
+
     def to_dict(self) -> dict[str, Any]:
         return {
             "model": self.model,

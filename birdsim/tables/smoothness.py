@@ -29,7 +29,7 @@ IDLE_WRIST_RAD = 1e-3
 
 def effect_mask(param_names: tuple[str, ...], params: np.ndarray) -> np.ndarray:
     """True where a parameter has an effect in a cell (same shape as ``params``):
-    everything except the wrist lag of an idle wrist.
+    everything except the wrist lag of an idle wrist and the phase of an idle fold (m5).
 
     Args:
         param_names: the model's parameter names (last axis of ``params``).
@@ -41,6 +41,11 @@ def effect_mask(param_names: tuple[str, ...], params: np.ndarray) -> np.ndarray:
     if "wrist_amp" in param_names and "wrist_lag" in param_names:
         idle = params[..., param_names.index("wrist_amp")] < IDLE_WRIST_RAD
         mask[..., param_names.index("wrist_lag")] = ~idle
+    if "fold_phase" in param_names:  # m5: the phase of an idle fold has no effect
+        idle = (params[..., param_names.index("fold_amp")] < IDLE_WRIST_RAD) & (
+            params[..., param_names.index("supination_amp")] < IDLE_WRIST_RAD
+        )
+        mask[..., param_names.index("fold_phase")] = ~idle
     return mask
 
 

@@ -158,6 +158,12 @@ def canonical_params(model: KinematicModel, X: np.ndarray) -> np.ndarray:
     idle = X[..., amp] < IDLE_WRIST
     X[..., amp] = np.where(idle, 0.0, X[..., amp])
     X[..., lag] = np.where(idle, model.spec("wrist_lag").lower, X[..., lag])
+    if "fold_phase" in names:  # m5: an idle fold (no fold, no supination) has no phase
+        f, s, ph = (names.index(n) for n in ("fold_amp", "supination_amp", "fold_phase"))
+        idle = (X[..., f] < IDLE_WRIST) & (X[..., s] < IDLE_WRIST)
+        X[..., f] = np.where(idle, 0.0, X[..., f])
+        X[..., s] = np.where(idle, 0.0, X[..., s])
+        X[..., ph] = np.where(idle, 0.0, X[..., ph])
     return X
 
 

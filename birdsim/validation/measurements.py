@@ -68,6 +68,9 @@ COMPARE_KEYS: dict[str, str] = {
     "body_angle_slope": "sign",
     "stroke_plane_slope": "sign",
     "hover_feasible": "yes=1",
+    "span_ratio_slope": "sign",
+    "folds_in_cruise": "yes=1",
+    "folds_in_hover": "yes=1",
     "roll_damping": "non-dimensional",
     "fct_frequency_scaling": "yes=1",
 }
@@ -81,6 +84,7 @@ NEEDS_SPEED = {
     "amplitude",
     "body_angle",
     "wing_weight_support",
+    "folds_in_cruise",
 }
 
 

@@ -40,7 +40,11 @@ CURVE_KEYS = {
     "amplitude_slope",
     "body_angle_slope",
     "stroke_plane_slope",
+    "span_ratio_slope",
 }
+#: A wingbeat "folds" when its span ratio (mid-upstroke / mid-downstroke) is below this
+#: (issue 24's threshold for the optimiser folding in pigeon cruise).
+FOLDED_SPAN_RATIO = 0.95
 
 
 @dataclass(frozen=True)
@@ -142,17 +146,20 @@ def model_value(m: Measurement, sweep: TrimSweep, bird: Bird) -> float | None:
         pts = [p for p in sweep.points if p.trimmed and lo - 1e-9 <= p.speed <= hi + 1e-9]
         if len(pts) < 2:
             return None
+        x = np.array([p.speed for p in pts])
+        if key == "span_ratio_slope":
+            y = np.array([_span_ratio(sweep, p, bird) for p in pts])
+            return float(np.polyfit(x, y, 1)[0])
         attr = {
             "amplitude_slope": "amplitude_deg",
             "body_angle_slope": "body_angle_deg",
             "stroke_plane_slope": "stroke_plane_deg",
         }[key]
-        x = np.array([p.speed for p in pts])
         y = np.array([getattr(p, attr) for p in pts])
         return float(np.polyfit(x, y, 1)[0])
     speed = (
         0.0
-        if key in ("hover_power", "hover_feasible", "fct_frequency_scaling")
+        if key in ("hover_power", "hover_feasible", "folds_in_hover", "fct_frequency_scaling")
         else (m.speed_m_s or 0.0)
     )
     p = sweep.at(speed)
@@ -160,6 +167,8 @@ def model_value(m: Measurement, sweep: TrimSweep, bird: Bird) -> float | None:
         return 1.0 if p.trimmed else 0.0
     if not p.trimmed:
         return None
+    if key in ("folds_in_cruise", "folds_in_hover"):
+        return 1.0 if _span_ratio(sweep, p, bird) < FOLDED_SPAN_RATIO else 0.0
     if key in ("power", "hover_power"):
         return p.power
     if key == "wing_weight_support":
@@ -181,6 +190,13 @@ def model_value(m: Measurement, sweep: TrimSweep, bird: Bird) -> float | None:
             return damping_coefficients(sweep.model, bird, p.params, speed)[0]
         return 1.0 if abs(frequency_scaling(sweep.model, bird, p.params) - 2.0) < 0.02 else 0.0
     raise BirdsimError(f"compare={key!r} has no birdsim value; allowed: a key of COMPARE_KEYS")
+
+
+def _span_ratio(sweep: TrimSweep, point, bird: Bird) -> float:
+    """The trimmed wingbeat's span ratio (:func:`birdsim.physics.span.span_ratio`)."""
+    from birdsim.physics.span import span_ratio
+
+    return float(span_ratio(sweep.model, point.params, bird=bird, check_bounds=False))
 
 
 def sweep_speeds(

@@ -1,0 +1,57 @@
+"""The span ratio of a wingbeat: the wing's span at mid-upstroke over its span at
+mid-downstroke (Tobalske & Dial 1996 J Exp Biol 199:263 measure it from the wingtips).
+
+The span is the tip-to-tip distance seen from above, twice the right wingtip's body-axes
+y (the wings are mirror images).  Mid-downstroke is phase 0 (the flap angle passes 0
+going down, docs/conventions.md), mid-upstroke phase pi.  Every model has it; it differs
+from 1 for m4 (the wrist flap) and above all for m5 (the fold).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import numpy as np
+
+from birdsim.physics.bird import Bird
+from birdsim.physics.kinematics import (
+    KinematicModel,
+    get_model,
+    joint_states,
+    points_in_body,
+    validate_params,
+)
+
+
+def tip_span(
+    model: str | KinematicModel,
+    params: Mapping[str, object],
+    phases: np.ndarray,
+    *,
+    bird: Bird | None = None,
+    check_bounds: bool = True,
+) -> np.ndarray:
+    """Tip-to-tip span [bird length units] at ``phases`` (omega t, shape N), with the
+    parameters' batch shape B in front: shape (*B, N)."""
+    m = model if isinstance(model, KinematicModel) else get_model(model)
+    bird = Bird() if bird is None else bird
+    p = validate_params(m, params, check_bounds=check_bounds)
+    batch = np.broadcast_shapes(*(a.shape for a in p.values()))
+    flat = {k: np.broadcast_to(a, batch).reshape(-1) for k, a in p.items()}
+    states = joint_states(m, flat, bird, np.asarray(phases, dtype=float), trailing=1)
+    chain, span, _ = m.chain_with_geometry(bird)[-1]  # the outermost panel carries the tip
+    pos, _ = points_in_body(chain, states, np.array([span]))
+    y = np.broadcast_to(pos[1], (len(flat["pitch"]), len(phases), 1))[..., 0]
+    return 2.0 * y.reshape(batch + (len(phases),))
+
+
+def span_ratio(
+    model: str | KinematicModel,
+    params: Mapping[str, object],
+    *,
+    bird: Bird | None = None,
+    check_bounds: bool = True,
+) -> np.ndarray:
+    """Span at mid-upstroke over span at mid-downstroke (shape: the parameters' batch)."""
+    s = tip_span(model, params, np.array([0.0, np.pi]), bird=bird, check_bounds=check_bounds)
+    return s[..., 1] / s[..., 0]
