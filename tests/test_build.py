@@ -187,10 +187,10 @@ def test_a_failed_final_write_keeps_the_checkpoints_and_resumes_to_the_same_tabl
             raise KeyboardInterrupt
         return real_write(path, data)
 
-    import birdsim.tables.lookup as lookup_module
+    import birdsim.tables.table_files as table_files_module
 
     real_write = birdsim.io.write_atomic
-    monkeypatch.setattr(lookup_module, "write_atomic", second_write_fails)
+    monkeypatch.setattr(table_files_module, "write_atomic", second_write_fails)
     with pytest.raises(KeyboardInterrupt):
         build_table(cfg, jobs=1, checkpoint_dir=ckpt, out=out, force=True)
     assert len(list(ckpt.glob("*.npz"))) == len(SMALL.V) + len(SMALL.Fx)

@@ -25,9 +25,7 @@ MAX_LINES = 400
 
 #: Modules over 400 lines that other engineers are changing on their branches right now
 #: (they keep them under 400 there); the lead removes these exemptions after merging.
-OVER_LIMIT_ELSEWHERE = {
-    "tables/lookup.py",
-}
+OVER_LIMIT_ELSEWHERE: set[str] = set()
 
 
 def module_name(path: Path) -> str:

@@ -13,7 +13,7 @@ multilinearly like the wingbeat.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import Any, Protocol
 
 import numpy as np
 from scipy.interpolate import RegularGridInterpolator
@@ -22,14 +22,39 @@ from birdsim.physics.bird import Bird
 from birdsim.physics.cycle import DEFAULT_SAMPLES, sample_phases
 from birdsim.physics.moments import CONTROL_INPUTS, input_model
 from birdsim.physics.units import reduced_bird, same_reduced_bird
-
-if TYPE_CHECKING:
-    from birdsim.tables.lookup import LookupTable
+from birdsim.tables.table_error import TableError
 
 #: The arrays, each over the grid: grid + (3,) or grid + (3, k) or grid + (3, 3).
 FIELDS = ("force_body", "moment_body", "force_du", "moment_du", "force_drate", "moment_drate")
 #: The npz key of each field.
 NPZ_PREFIX = "jac_"
+
+
+class GridTable(Protocol):
+    """What this module reads of a :class:`birdsim.tables.lookup.LookupTable` (a
+    protocol, so that the table, which calls this module, is not imported here)."""
+
+    @property
+    def model(self) -> str: ...
+    @property
+    def bird(self) -> Bird: ...
+    @property
+    def param_names(self) -> tuple[str, ...]: ...
+    @property
+    def axes(self) -> dict[str, np.ndarray]: ...
+    @property
+    def params(self) -> np.ndarray: ...
+    @property
+    def jacobians(self) -> Any: ...
+    @property
+    def axis_names(self) -> tuple[str, ...]: ...
+    @property
+    def has_climb(self) -> bool: ...
+    @property
+    def shape(self) -> tuple[int, ...]: ...
+    @property
+    def demands(self) -> np.ndarray: ...
+    def require_bird(self, bird: Bird) -> None: ...
 
 
 @dataclass(frozen=True, eq=False)
@@ -63,7 +88,7 @@ class TableJacobians:
 
 
 def table_jacobians(
-    table: LookupTable,
+    table: GridTable,
     bird: Bird | None = None,
     *,
     n: int = DEFAULT_SAMPLES,
@@ -119,7 +144,7 @@ def table_jacobians(
     return TableJacobians(CONTROL_INPUTS[mx.name], rb, int(n), **arrays)
 
 
-def cached_jacobians(table: LookupTable) -> TableJacobians:
+def cached_jacobians(table: GridTable) -> TableJacobians:
     """The table's stored Jacobians, else computed now and cached on the table."""
     if table.jacobians is None:
         object.__setattr__(table, "jacobians", table_jacobians(table))
@@ -127,7 +152,7 @@ def cached_jacobians(table: LookupTable) -> TableJacobians:
     return table.jacobians
 
 
-def interpolate_jacobians(table: LookupTable, points: np.ndarray) -> dict[str, np.ndarray]:
+def interpolate_jacobians(table: GridTable, points: np.ndarray) -> dict[str, np.ndarray]:
     """Every field at one grid point (1 x axes, from ``LookupTable._points``), multilinear
     between the cells: ``force_body``, ``moment_body`` (3,), ``force_du``, ``moment_du``
     (3, k), ``force_drate``, ``moment_drate`` (3, 3)."""
@@ -149,11 +174,9 @@ def interpolate_jacobians(table: LookupTable, points: np.ndarray) -> dict[str, n
     return out
 
 
-def check_jacobians(table: LookupTable, jac: TableJacobians) -> None:
+def check_jacobians(table: GridTable, jac: TableJacobians) -> None:
     """Refuse (one line) Jacobians that belong to another reduced bird, other inputs or
     another grid than ``table``'s."""
-    from birdsim.tables.lookup import TableError
-
     if not same_reduced_bird(jac.bird, table.bird):
         raise TableError(
             f"table for model {table.model} carries Jacobians computed for bird {jac.bird.name!r}, whose "

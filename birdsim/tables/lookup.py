@@ -12,14 +12,18 @@ Interpolation is multilinear over (Fx, Fz, V[, climb]) (scipy's RegularGridInter
 it reproduces the grid values exactly at the nodes, is monotone between them and
 never overshoots the parameter bounds.  A table without a climb axis is for level
 flight: it answers climb = 0 only.
+
+Where things are: the table (its arrays, views, lookups) and ``load_table`` here; the
+two-file container (paths, version, checksum) in :mod:`birdsim.tables.table_files`;
+checking demands against the grid in :mod:`birdsim.tables.demand_points`;
+:class:`TableError` in :mod:`birdsim.tables.table_error`; the per-cell moments and
+Jacobians in :mod:`birdsim.tables.jacobians`.  This module re-exports ``TableError``,
+``TABLE_FORMAT_VERSION`` and ``table_paths``, so ``from birdsim.tables.lookup import
+TableError, table_paths`` keeps working.
 """
 
 from __future__ import annotations
 
-import hashlib
-import io
-import json
-import zipfile
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -27,23 +31,38 @@ from typing import Any
 import numpy as np
 from scipy.interpolate import RegularGridInterpolator
 
-from birdsim.errors import BirdsimError
-from birdsim.io import check_output, write_atomic
 from birdsim.physics.bird import Bird
 from birdsim.physics.kinematics import MODELS
 from birdsim.tables.cost import FRACTION_NAMES
+from birdsim.tables.demand_points import cells_around, check_level_climb, demand_points
+from birdsim.tables.table_error import TableError
+from birdsim.tables.table_files import (
+    TABLE_FORMAT_VERSION,
+    UNREADABLE,
+    check_npz_version,
+    read_table_files,
+    table_paths,
+    unreadable,
+    write_table_files,
+)
 
-#: Bump when the file layout changes; tables of another version are refused on load.
-TABLE_FORMAT_VERSION = 1
+__all__ = [
+    "ACHIEVED_NAMES",
+    "AXES",
+    "CLIMB",
+    "STATUS_NAMES",
+    "TABLE_FORMAT_VERSION",
+    "LookupTable",
+    "TableError",
+    "load_table",
+    "table_paths",
+]
+
 AXES = ("Fx", "Fz", "V")
 #: The optional fourth axis (after V): vertical speed relative to the air, positive up.
 CLIMB = "climb"
 STATUS_NAMES = ("ok", "unreachable", "failed")
 ACHIEVED_NAMES = ("Fx", "Fz", "P")
-
-
-class TableError(BirdsimError):
-    """A table file that cannot be read, or a lookup it cannot answer."""
 
 
 @dataclass(frozen=True, eq=False)
@@ -192,52 +211,10 @@ class LookupTable:
     def _points(
         self, Fx: Any, Fz: Any, V: Any, clip: bool, climb: Any = 0.0
     ) -> tuple[np.ndarray, tuple[int, ...]]:
-        values = {"Fx": Fx, "Fz": Fz, "V": V, CLIMB: climb}
-        arrays = {}
         if not self.has_climb:
-            self._level_only(climb, clip)
-        for a in self.axis_names:
-            try:
-                arr = np.asarray(values[a], dtype=float)
-            except (TypeError, ValueError):
-                raise TableError(f"{a}={values[a]!r} is not a number") from None
-            if not np.all(np.isfinite(arr)):
-                bad = arr[~np.isfinite(arr)].flat[0] if arr.ndim else float(arr)
-                raise TableError(
-                    f"{a}={bad} is not finite; allowed: a number in [{self.axes[a][0]:g}, {self.axes[a][-1]:g}]"
-                )
-            lo, hi = float(self.axes[a][0]), float(self.axes[a][-1])
-            if clip:
-                arr = np.clip(arr, lo, hi)
-            else:
-                # 1e-12: a demand printed from the axis itself must count as inside
-                out = (arr < lo - 1e-12) | (arr > hi + 1e-12)
-                if np.any(out):
-                    bad = float(arr[out].flat[0]) if arr.ndim else float(arr)
-                    raise TableError(
-                        f"{a}={bad:g} is outside the table grid; allowed: [{lo:g}, {hi:g}] (or clip=True)"
-                    )
-                arr = np.clip(arr, lo, hi)
-            arrays[a] = arr
-        b = np.broadcast_arrays(*(arrays[a] for a in self.axis_names))
-        return np.stack([x.ravel() for x in b], axis=-1), b[0].shape
-
-    def _level_only(self, climb: Any, clip: bool) -> None:
-        """A table without a climb axis answers climb = 0 (or anything, clipped to 0)."""
-        try:
-            arr = np.asarray(climb, dtype=float)
-        except (TypeError, ValueError):
-            raise TableError(f"climb={climb!r} is not a number") from None
-        if not np.all(np.isfinite(arr)):
-            raise TableError(
-                f"climb={arr[~np.isfinite(arr)].flat[0] if arr.ndim else float(arr)} is not finite; allowed: 0 (this table has no climb axis)"
-            )
-        if not clip and np.any(np.abs(arr) > 1e-12):
-            bad = float(arr[np.abs(arr) > 1e-12].flat[0]) if arr.ndim else float(arr)
-            raise TableError(
-                f"climb={bad:g} is outside the table grid; allowed: 0 (a table without a climb axis is for level flight; "
-                "build one with `birdsim tables build --climb`, or clip=True / --clip)"
-            )
+            check_level_climb(climb, clip)
+        values = {"Fx": Fx, "Fz": Fz, "V": V, CLIMB: climb}
+        return demand_points(self.axes, self.axis_names, values, clip)
 
     def _interpolator(self) -> RegularGridInterpolator:
         cached = self.__dict__.get("_rgi")
@@ -289,16 +266,7 @@ class LookupTable:
     ) -> str:
         """The worst status of the grid cells around a demand (ok < unreachable < failed)."""
         pts, _ = self._points(Fx, Fz, V, clip, climb)
-        idx = []
-        for k, a in enumerate(self.axis_names):
-            ax = self.axes[a]
-            i = int(np.clip(np.searchsorted(ax, pts[0, k]) - 1, 0, len(ax) - 2))
-            near = [i, i + 1]
-            for j in (i, i + 1):  # on a node: that node only
-                if abs(ax[j] - pts[0, k]) < 1e-12:
-                    near = [j]
-            idx.append(near)
-        codes = self.status_code[np.ix_(*idx)]
+        codes = self.status_code[np.ix_(*cells_around(self.axes, self.axis_names, pts[0]))]
         return STATUS_NAMES[int(codes.max())]
 
     # ---- moments and Jacobians (issue 22) ----------------------------------------------
@@ -325,27 +293,18 @@ class LookupTable:
         """Write ``<stem>.npz`` and ``<stem>.json`` atomically; refuse to overwrite without ``force``."""
         from birdsim.tables.jacobians import to_arrays
 
-        npz_path, json_path = table_paths(path)
-        check_output(npz_path, force)
-        check_output(json_path, force, arg="path (json)")
-        buf = io.BytesIO()
-        np.savez_compressed(
-            buf,
-            format_version=np.array(TABLE_FORMAT_VERSION),
+        arrays = {
             **{f"axis_{a}": np.asarray(self.axes[a], dtype=float) for a in self.axis_names},
-            params=self.params,
-            cost=self.cost,
-            cost_fractions=self.cost_fractions,
-            achieved=self.achieved,
-            status_code=self.status_code.astype(np.uint8),
-            evaluations=self.evaluations.astype(np.int64),
-            converged=np.asarray(self.converged, dtype=bool),
+            "params": self.params,
+            "cost": self.cost,
+            "cost_fractions": self.cost_fractions,
+            "achieved": self.achieved,
+            "status_code": self.status_code.astype(np.uint8),
+            "evaluations": self.evaluations.astype(np.int64),
+            "converged": np.asarray(self.converged, dtype=bool),
             **({} if self.jacobians is None else to_arrays(self.jacobians)),
-        )
-        data = buf.getvalue()
-        meta = dict(self.meta)
-        meta.update(
-            format_version=TABLE_FORMAT_VERSION,
+        }
+        meta = dict(
             model=self.model,
             param_names=list(self.param_names),
             axes={a: [float(x) for x in self.axes[a]] for a in self.axis_names},
@@ -353,22 +312,11 @@ class LookupTable:
             fraction_names=list(FRACTION_NAMES),
             achieved_names=list(ACHIEVED_NAMES),
             bird=self.bird.to_dict(),
-            npz_sha256=hashlib.sha256(data).hexdigest(),
-            npz_file=npz_path.name,
         )
-        if self.jacobians is not None:
-            meta["jacobians"] = self.jacobians.meta()
-        write_atomic(npz_path, data)
-        write_atomic(json_path, (json.dumps(meta, indent=2, sort_keys=False) + "\n").encode())
-        return npz_path, json_path
-
-
-def table_paths(path: str | Path) -> tuple[Path, Path]:
-    """(``<stem>.npz``, ``<stem>.json``) for a path given with either suffix or none."""
-    p = Path(path)
-    if p.suffix in (".npz", ".json"):
-        p = p.with_suffix("")
-    return p.with_name(p.name + ".npz"), p.with_name(p.name + ".json")
+        after = {} if self.jacobians is None else {"jacobians": self.jacobians.meta()}
+        return write_table_files(
+            path, arrays, meta_kept=self.meta, meta=meta, meta_after=after, force=force
+        )
 
 
 def load_table(path: str | Path) -> LookupTable:
@@ -387,36 +335,8 @@ def load_table(path: str | Path) -> LookupTable:
     """
     from birdsim.tables.jacobians import from_arrays
 
-    npz_path, json_path = table_paths(path)
-    for p in (npz_path, json_path):
-        if not p.is_file():
-            raise TableError(
-                f"table file {str(p)!r} does not exist; allowed: a table written by `birdsim tables build`"
-            )
+    arrays, meta, npz_path = read_table_files(path)
     try:
-        meta = json.loads(json_path.read_text())
-        if not isinstance(meta, dict):
-            raise ValueError("not a JSON object")
-    except (OSError, ValueError) as exc:
-        raise TableError(f"table file {str(json_path)!r} is unreadable: {exc}") from None
-    version = meta.get("format_version")
-    if version != TABLE_FORMAT_VERSION:
-        raise TableError(
-            f"table file {str(json_path)!r} has format version {version!r}; this birdsim reads version "
-            f"{TABLE_FORMAT_VERSION}: rebuild it with `birdsim tables build`"
-        )
-    try:
-        data = npz_path.read_bytes()
-    except OSError as exc:
-        raise TableError(f"table file {str(npz_path)!r} is unreadable: {exc.strerror}") from None
-    if hashlib.sha256(data).hexdigest() != meta.get("npz_sha256"):
-        raise TableError(
-            f"table files {str(npz_path)!r} and {str(json_path)!r} do not belong together (checksum mismatch); "
-            "allowed: the pair written by one `birdsim tables build`"
-        )
-    try:
-        with np.load(io.BytesIO(data), allow_pickle=False) as z:
-            arrays = {k: z[k] for k in z.files}
         table = LookupTable(
             model=str(meta["model"]),
             bird=Bird.from_dict(meta["bird"]),
@@ -436,16 +356,9 @@ def load_table(path: str | Path) -> LookupTable:
             converged=arrays.get("converged"),
             jacobians=from_arrays(arrays, meta),
         )
-        npz_version = int(arrays["format_version"])
     except TableError:
         raise
-    except (KeyError, ValueError, TypeError, OSError, EOFError, zipfile.BadZipFile) as exc:
-        why = f"missing {exc}" if isinstance(exc, KeyError) else str(exc)
-        raise TableError(
-            f"table file {str(npz_path)!r} is unreadable or incomplete: {why}"
-        ) from None
-    if npz_version != TABLE_FORMAT_VERSION:
-        raise TableError(
-            f"table file {str(npz_path)!r} has format version {npz_version}; allowed: {TABLE_FORMAT_VERSION}"
-        )
+    except UNREADABLE as exc:
+        raise unreadable(npz_path, exc) from None
+    check_npz_version(arrays, npz_path)
     return table
