@@ -247,3 +247,18 @@ def test_summary_counts_saturated_wingbeats():
     assert info["wingbeats_saturated"] == 1 and info["saturated_samples"] == 1
     assert math.isclose(info["rms_error"], 0.1) and info["pitch_moment_peak"] == 2.0
     assert info["pitch_moment_per_wingbeat"]["peak"] == [2.0, 0.0]
+
+
+def test_json_is_strict_when_a_figure_does_not_exist(capsys):
+    """A flight shorter than its start (12 time units < 2 wingbeats) has no error after
+    the start: the JSON says null, not NaN (which strict JSON parsers refuse)."""
+    code = main(["fly", "hover", "--seconds", "12", "--json"])
+    out = capsys.readouterr().out
+    assert code == 0
+
+    def refuse(constant: str) -> None:
+        raise ValueError(f"non-standard JSON constant {constant}")
+
+    info = json.loads(out, parse_constant=refuse)
+    assert info["rms_error_after_start"] is None
+    assert math.isfinite(info["rms_error"])

@@ -169,8 +169,10 @@ def run(args: argparse.Namespace) -> int:
     if out is not None:
         save_log(arrays, out, args.force)
         info["log"] = str(out)
-    if args.json:
-        print(json.dumps(info, indent=2))
+    if args.json:  # strict JSON: a figure that does not exist (NaN) is null
+        from birdsim.json_values import finite_or_none
+
+        print(json.dumps(finite_or_none(info), indent=2, allow_nan=False))
     else:
         m = short_length(units_of(bird))
         sat = (

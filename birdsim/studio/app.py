@@ -12,6 +12,7 @@ from typing import Any
 from flask import Flask, Response, jsonify, request
 
 from birdsim.errors import BirdsimError
+from birdsim.json_values import finite_or_none
 from birdsim.studio.flights import FlightRequest, path_dict
 from birdsim.studio.jobs import Store
 from birdsim.studio.page import scene_json, static_text, view_html
@@ -33,17 +34,6 @@ _PAGE = """<!DOCTYPE html>
 
 def _error(message: str, status: int = 400) -> tuple[Response, int]:
     return jsonify(error=message), status
-
-
-def finite_or_none(value: Any) -> Any:
-    """``value`` with every NaN or infinity replaced by None (JSON has neither)."""
-    if isinstance(value, float):
-        return value if math.isfinite(value) else None
-    if isinstance(value, dict):
-        return {k: finite_or_none(v) for k, v in value.items()}
-    if isinstance(value, (list, tuple)):
-        return [finite_or_none(v) for v in value]
-    return value
 
 
 def _shipped_birds() -> dict[str, Path]:
