@@ -82,8 +82,8 @@ def _spacing(values: list[float]) -> float:
 def covers_presets(grid: dict, bird: Bird) -> bool:
     """Whether a table grid (``{"Fx": [...], "Fz": [...], "V": [...]}``, the ``.json``'s)
     spans the grid of ``bird``'s preset demands with node spacings no coarser."""
-    from birdsim.tables.grid import Grid
     from birdsim.flight.preset_grid import preset_grid
+    from birdsim.tables.grid import Grid
 
     need = Grid.parse(preset_grid(bird))
     tol = 1e-9
