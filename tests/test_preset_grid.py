@@ -8,6 +8,7 @@ on the quiet 2-core machine).
 
 from __future__ import annotations
 
+import json
 import math
 from pathlib import Path
 
@@ -125,10 +126,9 @@ def test_the_suggested_command_builds_a_table_the_finch_flies(tmp_path, capsys):
     out = tmp_path / "zebra-finch-m3.npz"
     argv = ["tables", "build", "--model", "m3", "--bird", finch, "--out", str(out), "--quiet"]
     assert main(argv) == 0
+    assert "wrote" in capsys.readouterr().out
     table = load_table(out)
     assert table.meta["grid"] == Grid.parse(preset_grid(FINCH)).to_dict()
-    import json
-
     for name in ("hover", "cruise", "take-off"):
         assert main(["fly", name, "--bird", finch, "--table", str(out), "--json"]) == 0
         summary = json.loads(capsys.readouterr().out)
