@@ -135,6 +135,12 @@ def test_tables_build_for_a_bird_builds_its_presets_grid(monkeypatch, tmp_path) 
             np.testing.assert_array_equal(a, b)
     finch = _grid_built(monkeypatch, tmp_path, "--bird", str(ROOT / "examples/zebra-finch.toml"))
     assert max(finch.Fz) > max(Grid.parse(tables_command.FLIGHT_GRID).Fz) == 0.0
+    # a bird without weight (gravity 0) asks nothing of its wings: the flight grid
+    bare = tmp_path / "bare.toml"
+    bare.write_text('name = "bare"\n')
+    flight = Grid.parse(tables_command.FLIGHT_GRID)
+    for a, b in zip(_axes(_grid_built(monkeypatch, tmp_path, "--bird", str(bare))), _axes(flight)):
+        np.testing.assert_array_equal(a, b)
     # without --bird, or with --size, the general grid as before
     assert [len(a) for a in _axes(_grid_built(monkeypatch, tmp_path))] == [11, 11, 11]
     sized = _grid_built(monkeypatch, tmp_path, "--bird", bird, "--size", "5")

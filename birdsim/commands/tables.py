@@ -183,8 +183,11 @@ def _check_build_options(args: argparse.Namespace) -> None:
 
 def _grid_spec(args: argparse.Namespace, bird) -> str:  # type: ignore[no-untyped-def]
     """``--grid``; with ``--bird`` and neither ``--grid`` nor ``--size``, the grid of the
-    bird's preset demands (:func:`birdsim.flight.preset_grid.preset_grid`)."""
+    bird's preset demands (:func:`birdsim.flight.preset_grid.preset_grid`), or the flight
+    grid for a bird that does not fly (no weight: its presets ask nothing of the wings)."""
     if not args.grid and args.bird is not None and args.size is None:
+        if not (bird.mass > 0 and bird.gravity > 0):
+            return FLIGHT_GRID
         from birdsim.flight.preset_grid import preset_grid
 
         return preset_grid(bird)
@@ -213,7 +216,8 @@ def run_build(args: argparse.Namespace) -> int:
     spec = _grid_spec(args, bird)
     grid = Grid.parse(spec, _size(args), climb=args.climb)
     if spec and not args.grid and not args.quiet:
-        print(f"birdsim tables: grid {spec} (the presets' demands for this bird)", file=sys.stderr)
+        why = "the flight grid" if spec == FLIGHT_GRID else "the presets' demands for this bird"
+        print(f"birdsim tables: grid {spec} ({why})", file=sys.stderr)
     if model.name == "m5":
         from birdsim.physics.m5 import fold_bird_error
 
