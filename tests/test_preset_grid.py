@@ -98,8 +98,9 @@ def test_the_pitch_ends_bound_the_demands_the_table_pitch_gives(name):
 
 def test_the_finder_gives_a_bird_the_table_that_covers_its_presets():
     # the finch's reduced bird is the seed's: the general 11^3 m3.npz (Fx nodes 0.1
-    # apart) came first before; now the finer flight-grid seed-m3.npz (0.025), which
-    # flies its take-off with 1 saturated wingbeat where m3.npz's hover had no room
+    # apart) came first before; now the finer flight-grid seed-m3.npz (0.025). Neither
+    # covers the finch's presets (measured, saturated wingbeats hover/cruise/take-off/
+    # landing: m3.npz 0/0/1/32, seed-m3.npz 0/0/1/30; its own grid 0/0/0/32)
     assert shipped_table(FINCH, "m3", PACKAGE_TABLES).name == "seed-m3.npz"
     other = Bird.from_dict({**SEED.to_dict(), "name": "my-bird"})
     assert shipped_table(other, "m3", PACKAGE_TABLES).name == "seed-m3.npz"
