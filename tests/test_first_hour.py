@@ -99,7 +99,7 @@ def test_the_readme_check_catches_a_missing_preset_or_flag() -> None:
     _check_command("birdsim tables build --bird")
 
 
-# ---- item 2: the table a new bird's error suggests is the flight grid -------------------
+# ---- item 2: the table a new bird's error suggests is the grid of its presets -------------------
 
 
 def _grid_built(monkeypatch: pytest.MonkeyPatch, tmp_path: Path, *extra: str) -> Grid:
@@ -120,12 +120,26 @@ def _axes(grid: Grid) -> list[np.ndarray]:
     return [np.asarray(getattr(grid, a)) for a in grid.axis_names]
 
 
-def test_tables_build_for_a_bird_builds_the_flight_grid(monkeypatch, tmp_path) -> None:
-    bird = str(ROOT / "models" / "pigeon.toml")
+def test_tables_build_for_a_bird_builds_its_presets_grid(monkeypatch, tmp_path) -> None:
+    # the grid of the bird's own preset demands (birdsim.flight.preset_grid), not the fixed
+    # flight grid: for the zebra finch that grid reaches Fz > 0 (its landing pushes down),
+    # where the flight grid stops at 0 (tests/test_preset_grid.py has the numbers)
+    from birdsim.flight.preset_grid import preset_grid
+    from birdsim.physics.bird import Bird
+
+    for name in ("models/pigeon.toml", "examples/zebra-finch.toml"):
+        bird = str(ROOT / name)
+        want = Grid.parse(preset_grid(Bird.from_toml(bird)))
+        got = _grid_built(monkeypatch, tmp_path, "--bird", bird)
+        for a, b in zip(_axes(got), _axes(want)):
+            np.testing.assert_array_equal(a, b)
+    finch = _grid_built(monkeypatch, tmp_path, "--bird", str(ROOT / "examples/zebra-finch.toml"))
+    assert max(finch.Fz) > max(Grid.parse(tables_command.FLIGHT_GRID).Fz) == 0.0
+    # a bird without weight (gravity 0) asks nothing of its wings: the flight grid
+    bare = tmp_path / "bare.toml"
+    bare.write_text('name = "bare"\n')
     flight = Grid.parse(tables_command.FLIGHT_GRID)
-    got = _grid_built(monkeypatch, tmp_path, "--bird", bird)
-    assert [len(a) for a in _axes(got)] == [21, 17, 17]
-    for a, b in zip(_axes(got), _axes(flight)):
+    for a, b in zip(_axes(_grid_built(monkeypatch, tmp_path, "--bird", str(bare))), _axes(flight)):
         np.testing.assert_array_equal(a, b)
     # without --bird, or with --size, the general grid as before
     assert [len(a) for a in _axes(_grid_built(monkeypatch, tmp_path))] == [11, 11, 11]

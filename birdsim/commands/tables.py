@@ -22,9 +22,11 @@ from birdsim.tables.cost import CostWeights
 from birdsim.tables.lookup import table_paths
 
 #: The flight grid (``make flight-tables``, docs/flight.md): Fx, Fz in table force units,
-#: V in omega s; 21 x 17 x 17 cells over what the presets ask.  ``tables build --bird``
-#: builds it unless ``--grid`` or ``--size`` says otherwise, so that the command the
-#: table finder suggests for a new bird builds a table that flies the presets.
+#: V in omega s; 21 x 17 x 17 cells over what the presets ask of the seed bird and the
+#: pigeon.  ``tables build --bird`` builds instead the grid of that bird's own preset
+#: demands (:func:`birdsim.flight.preset_grid.preset_grid`) unless ``--grid`` or
+#: ``--size`` says otherwise, so that the command the table finder suggests for a new
+#: bird builds a table that flies the presets (issue 28, item 2).
 FLIGHT_GRID = "Fx=-0.2:0.3:21,Fz=-0.4:0:17,V=0:0.8:17"
 #: Nodes per axis of the general grid (Fx=-0.5:0.5, Fz=-0.5:0, V=0:1), as ``make tables``.
 DEFAULT_SIZE = 11
@@ -50,14 +52,15 @@ def register(sub: argparse._SubParsersAction) -> None:
         default="",
         help='e.g. "Fx=-0.5:0.5:11,Fz=-0.5:0:11,V=0:1:11" or "V=0|0.5|1"; '
         "axes left out take the default range (Fx=-0.5:0.5, Fz=-0.5:0, V=0:1); "
-        f'default with --bird: the flight grid "{FLIGHT_GRID}" (flies the presets)',
+        "default with --bird: the grid of the four presets' demands for that bird, "
+        "with room for the feedback (docs/your-bird.md)",
     )
     b.add_argument(
         "--size",
         type=int,
         default=None,
         help=f"nodes per axis for axes not given in --grid (default {DEFAULT_SIZE}; "
-        "given with --bird: the general grid instead of the flight grid)",
+        "given with --bird: the general grid instead of the presets' grid)",
     )
     b.add_argument(
         "--climb",
@@ -178,10 +181,16 @@ def _check_build_options(args: argparse.Namespace) -> None:
         raise BirdsimError(f"--starts {args.starts} is invalid; allowed: an integer >= 0")
 
 
-def _grid_spec(args: argparse.Namespace) -> str:
-    """``--grid``; with ``--bird`` and neither ``--grid`` nor ``--size``, the flight grid."""
+def _grid_spec(args: argparse.Namespace, bird) -> str:  # type: ignore[no-untyped-def]
+    """``--grid``; with ``--bird`` and neither ``--grid`` nor ``--size``, the grid of the
+    bird's preset demands (:func:`birdsim.flight.preset_grid.preset_grid`), or the flight
+    grid for a bird that does not fly (no weight: its presets ask nothing of the wings)."""
     if not args.grid and args.bird is not None and args.size is None:
-        return FLIGHT_GRID
+        if not (bird.mass > 0 and bird.gravity > 0):
+            return FLIGHT_GRID
+        from birdsim.flight.preset_grid import preset_grid
+
+        return preset_grid(bird)
     return args.grid
 
 
@@ -202,9 +211,13 @@ def run_build(args: argparse.Namespace) -> int:
             raise BirdsimError(
                 f"--jobs {args.jobs} with --dask {args.dask!r}; allowed: one of them (the cluster has its own workers)"
             )
-    grid = Grid.parse(_grid_spec(args), _size(args), climb=args.climb)
     # an SI bird gets a table in table units: the table records the reduced bird
     bird = reduced_bird(bird_from_args(args))
+    spec = _grid_spec(args, bird)
+    grid = Grid.parse(spec, _size(args), climb=args.climb)
+    if spec and not args.grid and not args.quiet:
+        why = "the flight grid" if spec == FLIGHT_GRID else "the presets' demands for this bird"
+        print(f"birdsim tables: grid {spec} ({why})", file=sys.stderr)
     if model.name == "m5":
         from birdsim.physics.m5 import fold_bird_error
 
