@@ -33,12 +33,25 @@ TWO_PI = 2.0 * math.pi
 INTEGRAL_LIMIT = 0.1
 #: Time constant (wingbeats) of the body's pitch command (attitude free, with a
 #: stroke plane): the table's pitch smoothed; the stroke plane turns by the difference.
-PITCH_COMMAND_BEATS = 2.0
+PITCH_COMMAND_BEATS = 3.0
 #: How far (rad) the compensated stroke plane may leave the table's bounds (those bound
 #: the optimiser's search, not the shoulder).
 SP_MARGIN = 0.8
 #: The integral only runs while the estimated position error is below this (semispans).
 INTEGRAL_BAND = 0.1
+
+
+def command_filter(
+    value: float, rate: float, target: float, tau: float, dt: float, substeps: int = 8
+) -> tuple[float, float, float]:
+    """One step ``dt`` of the critically damped second-order filter ``a = (target -
+    value) / tau^2 - 2 rate / tau`` (semi-implicit Euler substeps): (value, rate,
+    acceleration at the end of the step)."""
+    h = dt / substeps
+    for _ in range(substeps):
+        rate += h * ((target - value) / tau**2 - 2.0 * rate / tau)
+        value += h * rate
+    return value, rate, (target - value) / tau**2 - 2.0 * rate / tau
 
 
 @dataclass(frozen=True)
@@ -188,6 +201,8 @@ def fly(
                 # the wingbeat's real mean force differs a little from the table's (the body
                 # bobs, the wings weigh): start the integral where it cancels that difference
                 *_, bias = trim_start(fb, reference, cmd.params, pos0, vel0, config, every)
+                if free:  # again, from the rotation the first probe measured
+                    *_, bias = trim_start(fb, reference, cmd.params, pos0, vel0, config, every)
                 limit = INTEGRAL_LIMIT * red.gravity / gains.ki if red.gravity > 0 else np.inf
                 integral = np.clip(bias / gains.ki, -limit, limit)
                 cmd = command(
@@ -210,6 +225,8 @@ def fly(
         omega0, d_pitch0 = getattr(fb, "start_rotation", (None, 0.0))
         fb.start(pos0, vel0, pres, pitch=float(pres.pitch[0]) - d_pitch0, omega_body=omega0)
         att = AttitudeLoop(fb, enabled=free and attitude_loop)
+        if free and trim and hasattr(fb, "start_moment"):
+            att.preset_integral(fb.start_moment, cmd.params, float(pres.pitch[0]), float(ref0.vx))
         compensate = free and stroke_compensation and "stroke_plane" in names
         pitch_ref: float | None = None
         tau_ref = PITCH_COMMAND_BEATS * TWO_PI if compensate else 1e-9
@@ -243,10 +260,13 @@ def fly(
             if free:
                 v_est = float(est[2]) if est is not None else float(ref0.vx)
                 if pitch_ref is None:
-                    pitch_ref = pitch
-                # the body's pitch command: the table's pitch, smoothed over
-                # PITCH_COMMAND_BEATS (the stroke plane takes the difference)
-                pitch_ref += (pitch - pitch_ref) * (1.0 - math.exp(-dt_ctl / tau_ref))
+                    pitch_ref, pitch_rate_ref = pitch, 0.0
+                # the body's pitch command: the table's pitch through a critically damped
+                # second-order filter of time constant PITCH_COMMAND_BEATS (the stroke
+                # plane takes the difference); its rate and acceleration feed forward
+                pitch_ref, pitch_rate_ref, pitch_acc_ref = command_filter(
+                    pitch_ref, pitch_rate_ref, pitch, tau_ref, dt_ctl
+                )
                 err, rates = attitude_estimate(
                     att_window, fb.d, config.log_per_beat, TWO_PI, pitch_ref
                 )
@@ -259,17 +279,19 @@ def fly(
                     offset = np.zeros(len(names))
                     sp = cmd.params[sp_index] + pitch - body_pitch
                     offset[sp_index] = float(np.clip(sp, *sp_bounds)) - cmd.params[sp_index]
-                right, left, sweep, tail = att.update(
+                right, left, shoulder, tail = att.update(
                     cmd.params,
                     pitch_ref,
                     v_est - float(wind[0]),
                     err,
                     rates,
                     dt_ctl,
+                    rate_cmd=np.array([0.0, pitch_rate_ref, 0.0]),
+                    acc_cmd=np.array([0.0, pitch_acc_ref, 0.0]),
                     jac_params=None if offset is None else cmd.params + offset,
                     jac_pitch=body_pitch,
                 )
-                fb.schedule.sweep_target = sweep
+                fb.schedule.shoulder_target = shoulder
                 fb.cb.tail_controls = tail
             else:
                 right = cmd.params
