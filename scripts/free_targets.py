@@ -24,7 +24,9 @@ from birdsim.physics.bird import Bird
 
 def figures(preset: str, bird, model: str, attitude: str, gusts=()) -> dict[str, float]:
     table = load_table_for(bird, model, None)
-    r = fly(PATH_PRESETS[preset], table, bird, model, config=SimConfig(attitude=attitude), gusts=gusts)
+    r = fly(
+        PATH_PRESETS[preset], table, bird, model, config=SimConfig(attitude=attitude), gusts=gusts
+    )
     a = r.arrays
     s = summary(log_arrays(r, preset))
     n = int(round(len(a["t"]) / (a["t"][-1] / (2 * math.pi)))) if len(a["t"]) else 64
@@ -39,7 +41,9 @@ def figures(preset: str, bird, model: str, attitude: str, gusts=()) -> dict[str,
         "yaw_deg": math.degrees(float(np.abs(mean("yaw")).max())),
         "att_sat": int(np.sum(a["attitude_saturated"])),
         "table_sat_beats": s["wingbeats_saturated"],
-        "rocking_deg": math.degrees(float(np.median([np.ptp(a["pitch"][b * n : (b + 1) * n]) for b in range(2, beats)]))),
+        "rocking_deg": math.degrees(
+            float(np.median([np.ptp(a["pitch"][b * n : (b + 1) * n]) for b in range(2, beats)]))
+        ),
     }
 
 
@@ -49,13 +53,67 @@ def main() -> None:
     ap.add_argument("--model", default=DEMO_MODEL)
     ap.add_argument("--presets", default="cruise,hover,take-off,landing")
     ap.add_argument("--posed", action="store_true")
+    ap.add_argument("--gusts", action="store_true", help="cruise with 30 %% and 100 %% gusts")
     args = ap.parse_args()
     bird = Bird.from_toml(args.bird) if args.bird else demo_bird()
+    if args.gusts:
+        v = 0.5  # the seed bird's cruise speed (reduced units)
+        for frac in (0.3, 1.0):
+            for wind in ((0, v, 0), (0, 0, v), (v, 0, 0), (-v, 0, 0), (0, -v, 0), (0, 0, -v)):
+                w = tuple(frac * c for c in wind)
+                f = gust_figures(bird, args.model, w)
+                print(f"gust {w}", "  ".join(f"{k} {x:.4g}" for k, x in f.items()), flush=True)
+            if frac == 0.3:
+                print("(100 % gusts: finite and no crash is the target)")
+        return
     for p in args.presets.split(","):
         t0 = time.process_time()
         f = figures(p, bird, args.model, "posed" if args.posed else "free")
         f["cpu_s"] = time.process_time() - t0
         print(p.ljust(9), "  ".join(f"{k} {v:.4g}" for k, v in f.items()), flush=True)
+
+
+def gust_figures(
+    bird, model: str, wind: tuple[float, float, float], beats: float = 16.0
+) -> dict[str, float]:
+    """Cruise with a one-wingbeat gust ``wind`` (x fwd, y left, z up; bird velocity units)
+    from wingbeat 3: the largest path error, wingbeat-mean roll and yaw, and the
+    wingbeat after the gust's end by which the path is within 0.05 semispan and roll and
+    yaw within 2 degrees for good (nan: never)."""
+    from birdsim.flight.gust import parse_gust
+
+    table = load_table_for(bird, model, None)
+    g = parse_gust("3:1:" + ":".join(f"{w:g}" for w in wind))
+    r = fly(
+        PATH_PRESETS["cruise"],
+        table,
+        bird,
+        model,
+        beats=beats,
+        gusts=[g],
+        config=SimConfig(attitude="free"),
+    )
+    a = r.arrays
+    n = int(round(len(a["t"]) / (a["t"][-1] / (2 * math.pi))))
+    nb = len(a["t"]) // n
+    mean = lambda v: np.array([v[b * n : (b + 1) * n].mean() for b in range(nb)])  # noqa: E731
+    err = np.sqrt((a["x_ref"] - a["x"]) ** 2 + a["y"] ** 2 + (a["z_ref"] - a["z"]) ** 2)
+    e_beat = np.array([err[b * n : (b + 1) * n].max() for b in range(nb)])
+    roll, yaw = np.degrees(mean(a["roll"])), np.degrees(mean(a["yaw"]))
+    ok = (e_beat <= 0.05) & (np.abs(roll) <= 2) & (np.abs(yaw) <= 2)
+    back = float("nan")
+    for b in range(4, nb):
+        if ok[b:].all():
+            back = b - 4
+            break
+    return {
+        "max_err": float(err.max()),
+        "roll_max_deg": float(np.abs(roll).max()),
+        "yaw_max_deg": float(np.abs(yaw).max()),
+        "err_end": float(e_beat[-1]),
+        "beats_back": back,
+        "finite": bool(np.all(np.isfinite(a["qpos"]))),
+    }
 
 
 if __name__ == "__main__":

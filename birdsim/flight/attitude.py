@@ -242,7 +242,9 @@ class AttitudeLoop:
         self._jac: tuple[float, np.ndarray, np.ndarray, float] | None = None
         self.kinds = INPUTS
 
-    def preset_integral(self, moment: np.ndarray, params: np.ndarray, pitch: float, speed: float) -> None:
+    def preset_integral(
+        self, moment: np.ndarray, params: np.ndarray, pitch: float, speed: float
+    ) -> None:
         """Start the integral where it cancels the difference between ``moment`` (the
         wingbeat-mean moment the trim's probe wingbeat measured in flight, every input at
         zero, seed body axes) and the Jacobian measurement's ``M_0`` at the start (the

@@ -18,6 +18,7 @@ import numpy as np
 
 from birdsim.errors import BirdsimError, limits_text, magnitude_ok
 from birdsim.flight.attitude import FIT_BEATS, AttitudeLoop
+from birdsim.flight.attitude_commands import bank_command, command_filter
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.flight_arrays import attitude_estimate, flight_arrays
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
@@ -39,19 +40,6 @@ PITCH_COMMAND_BEATS = 3.0
 SP_MARGIN = 0.8
 #: The integral only runs while the estimated position error is below this (semispans).
 INTEGRAL_BAND = 0.1
-
-
-def command_filter(
-    value: float, rate: float, target: float, tau: float, dt: float, substeps: int = 8
-) -> tuple[float, float, float]:
-    """One step ``dt`` of the critically damped second-order filter ``a = (target -
-    value) / tau^2 - 2 rate / tau`` (semi-implicit Euler substeps): (value, rate,
-    acceleration at the end of the step)."""
-    h = dt / substeps
-    for _ in range(substeps):
-        rate += h * ((target - value) / tau**2 - 2.0 * rate / tau)
-        value += h * rate
-    return value, rate, (target - value) / tau**2 - 2.0 * rate / tau
 
 
 @dataclass(frozen=True)
@@ -229,7 +217,7 @@ def fly(
             att.preset_integral(fb.start_moment, cmd.params, float(pres.pitch[0]), float(ref0.vx))
         compensate = free and stroke_compensation and "stroke_plane" in names
         pitch_ref: float | None = None
-        tau_ref = PITCH_COMMAND_BEATS * TWO_PI if compensate else 1e-9
+        tau_ref = PITCH_COMMAND_BEATS * TWO_PI if compensate else 0.0
         sp_index = names.index("stroke_plane") if compensate else -1
         sp_bounds = (
             (fb.kin.params[sp_index].lower - SP_MARGIN, fb.kin.params[sp_index].upper + SP_MARGIN)
@@ -237,6 +225,7 @@ def fly(
             else None
         )
         att_window: list[tuple[np.ndarray, np.ndarray]] = []
+        lat_window: list[tuple[float, float]] = []
         dt_ctl = steps_ctl * h
         for k in range(n_ctl):
             t = fb.time
@@ -267,8 +256,9 @@ def fly(
                 pitch_ref, pitch_rate_ref, pitch_acc_ref = command_filter(
                     pitch_ref, pitch_rate_ref, pitch, tau_ref, dt_ctl
                 )
+                roll_cmd = bank_command(lat_window, config.log_per_beat, red.gravity)
                 err, rates = attitude_estimate(
-                    att_window, fb.d, config.log_per_beat, TWO_PI, pitch_ref
+                    att_window, fb.d, config.log_per_beat, TWO_PI, pitch_ref, roll_cmd
                 )
                 body_pitch = pitch_ref - float(err[1])  # the wingbeat-mean pitch
                 if compensate:
@@ -309,12 +299,14 @@ def fly(
                     float(qvel[0]),
                 )
                 att_window.append((qpos[3:7], C_SEED * qvel[3:6]))
+                lat_window.append((qpos[1], qvel[1]))
                 rows["V_air"].append(float(np.linalg.norm(qvel[:3] - wind)))
                 rows["params"].append(pres.params[j * every])
                 rows["pitch_command"].append(
                     pres.pitch[j * every] if pitch_ref is None else pitch_ref
                 )
             del att_window[: max(0, len(att_window) - FIT_BEATS * config.log_per_beat)]
+            del lat_window[: max(0, len(lat_window) - FIT_BEATS * config.log_per_beat)]
             n_new = len(new)
             rows["x_ref"].extend(refs["x"].tolist())
             rows["z_ref"].extend(refs["z"].tolist())
