@@ -60,14 +60,15 @@ AXIS_BEATS = (2.0, ATTITUDE_BEATS, 2.0)
 #: bird most strongly, the differential flap and twist yaw it, the symmetric sweep
 #: pitches it), plus the tail's.  kind: "diff" (right +u/2, left -u/2 on the
 #: wing parameter), "sweep" (symmetric sweep offset of both shoulders), "tail".
+SHOULDER_BOUND = 0.3
 INPUTS = (
     ("flap_amp", "diff", 0.15),
     ("twist_amp", "diff", 0.15),
-    ("sweep", "shoulder", 0.15),
+    ("sweep", "shoulder", SHOULDER_BOUND),
     ("tail_elevation", "tail", ELEVATION_MAX),
     ("tail_roll", "tail", ROLL_MAX),
     ("stroke_plane", "diff", 0.15),
-    ("dihedral", "shoulder", 0.15),
+    ("dihedral", "shoulder", SHOULDER_BOUND),
 )
 #: The moment rows and the inputs of the two allocations: pitch by the symmetric inputs
 #: (sweep, tail elevation), roll and yaw by the differential ones.
