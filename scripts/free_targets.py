@@ -74,7 +74,7 @@ def main() -> None:
 
 
 def gust_figures(
-    bird, model: str, wind: tuple[float, float, float], beats: float = 16.0
+    bird, model: str, wind: tuple[float, float, float], beats: float = 16.0, attitude: str = "free"
 ) -> dict[str, float]:
     """Cruise with a one-wingbeat gust ``wind`` (x fwd, y left, z up; bird velocity units)
     from wingbeat 3: the largest path error, wingbeat-mean roll and yaw, and the
@@ -91,7 +91,7 @@ def gust_figures(
         model,
         beats=beats,
         gusts=[g],
-        config=SimConfig(attitude="free"),
+        config=SimConfig(attitude=attitude),
     )
     a = r.arrays
     n = int(round(len(a["t"]) / (a["t"][-1] / (2 * math.pi))))
