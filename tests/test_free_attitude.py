@@ -156,7 +156,7 @@ def test_measured_jacobians_agree_with_the_analytic_core():
     with fb:
         m0, jac = measured_jacobian(fb, p, 0.12, 0.5)
     core = wingbeat_moments("m3", dict(zip(names, p)), 0.5, fb.red, jacobians=True)
-    ours = {(n, k if k != "sweep" else "sym"): jac[:, i] for i, (n, k, _) in enumerate(INPUTS)}
+    ours = {(n, k if k != "shoulder" else "sym"): jac[:, i] for i, (n, k, _) in enumerate(INPUTS)}
     scale = np.abs(core.moment_du).max()
     for j, key in enumerate(core.inputs):
         np.testing.assert_allclose(ours[key], core.moment_du[:, j], atol=0.02 * scale)

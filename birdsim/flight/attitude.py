@@ -50,7 +50,7 @@ from birdsim.mujoco.tail import ELEVATION_MAX, ROLL_MAX, TailControls
 #: a wingbeat); with it, over the four presets, 1 and 1.5 are worse than 2, and 3 is the
 #: best (cruise, hover within 3 degrees of pitch; take-off and landing the least
 #: saturated); 4 loses cruise's pitch again (docs/flight.md).
-ATTITUDE_BEATS = 3.0
+ATTITUDE_BEATS = 2.0
 #: ... per axis (roll, pitch, yaw): the lateral axes keep 2 wingbeats, with which a side
 #: gust's roll and yaw are back within 2 degrees in 4 wingbeats (3: 5 and 3 degrees
 #: still after 8).
@@ -60,17 +60,19 @@ AXIS_BEATS = (2.0, ATTITUDE_BEATS, 2.0)
 #: bird most strongly, the differential flap and twist yaw it, the symmetric sweep
 #: pitches it), plus the tail's.  kind: "diff" (right +u/2, left -u/2 on the
 #: wing parameter), "sweep" (symmetric sweep offset of both shoulders), "tail".
+SHOULDER_BOUND = 0.3
 INPUTS = (
     ("flap_amp", "diff", 0.15),
     ("twist_amp", "diff", 0.15),
-    ("sweep", "sweep", 0.15),
+    ("sweep", "shoulder", SHOULDER_BOUND),
     ("tail_elevation", "tail", ELEVATION_MAX),
     ("tail_roll", "tail", ROLL_MAX),
     ("stroke_plane", "diff", 0.15),
+    ("dihedral", "shoulder", SHOULDER_BOUND),
 )
 #: The moment rows and the inputs of the two allocations: pitch by the symmetric inputs
 #: (sweep, tail elevation), roll and yaw by the differential ones.
-SYM_ROWS, SYM_INPUTS = [1], [2, 3]
+SYM_ROWS, SYM_INPUTS = [1], [2, 3, 6]
 LAT_ROWS, LAT_INPUTS = [0, 2], [0, 1, 4, 5]
 #: Phases per wingbeat of a Jacobian measurement and the input step (rad).
 JAC_SAMPLES = 16
@@ -169,16 +171,16 @@ def measured_jacobian(
             u = np.zeros(len(INPUTS))
             if i:
                 u[i - 1] = JAC_STEP
-            right, left, sweep, tail = split_inputs(names, params, u)
+            right, left, shoulder, tail = split_inputs(names, params, u)
             z = np.zeros((n, len(names)))
-            sw = np.tile([sweep, sweep], (n, 1))
+            sw = np.tile(np.concatenate([shoulder, shoulder]), (n, 1))
             pres = sched.prescribe(
                 times,
                 np.tile(right, (n, 1)),
                 z,
                 z,
                 left=(np.tile(left, (n, 1)), z, z),
-                sweep=(sw, np.zeros_like(sw), np.zeros_like(sw)),
+                shoulder=(sw, np.zeros_like(sw), np.zeros_like(sw)),
             )
             cb.tail_controls = tail
             acc = np.zeros(3)
@@ -203,23 +205,24 @@ def measured_jacobian(
 def split_inputs(
     names: tuple[str, ...], params: np.ndarray, u: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray, float, TailControls]:
-    """(right params, left params, sweep offset, tail controls) for inputs ``u``."""
+    """(right params, left params, shoulder offsets (sweep, dihedral), tail controls) for
+    inputs ``u``."""
     right = np.array(params, dtype=float)
     left = right.copy()
-    sweep = 0.0
+    shoulder = np.zeros(2)
     elevation = roll = 0.0
     for (name, kind, _), ui in zip(INPUTS, u):
         if kind == "diff" and name in names:
             j = names.index(name)
             right[j] += 0.5 * ui
             left[j] -= 0.5 * ui
-        elif kind == "sweep":
-            sweep = float(ui)
+        elif kind == "shoulder":
+            shoulder[0 if name == "sweep" else 1] = float(ui)
         elif name == "tail_elevation":
             elevation = float(ui)
         elif name == "tail_roll":
             roll = float(ui)
-    return right, left, sweep, TailControls(elevation, 1.0, roll)
+    return right, left, shoulder, TailControls(elevation, 1.0, roll)
 
 
 class AttitudeLoop:
@@ -239,6 +242,21 @@ class AttitudeLoop:
         self.saturated = False
         self._jac: tuple[float, np.ndarray, np.ndarray, float] | None = None
         self.kinds = INPUTS
+
+    def preset_integral(
+        self, moment: np.ndarray, params: np.ndarray, pitch: float, speed: float
+    ) -> None:
+        """Start the integral where it cancels the difference between ``moment`` (the
+        wingbeat-mean moment the trim's probe wingbeat measured in flight, every input at
+        zero, seed body axes) and the Jacobian measurement's ``M_0`` at the start (the
+        path loop's integral starts the same way)."""
+        if not self.enabled:
+            return
+        m0, jac = measured_jacobian(self.fb, params, pitch, max(speed, 0.0))
+        self._jac = (speed, m0, jac, pitch)
+        g = self.gains
+        lim = INTEGRAL_LIMIT_RAD * g.omega_a**2 / g.ki
+        self.integral = np.clip((m0 - np.asarray(moment)) / (self.inertia * g.ki), -lim, lim)
 
     def bounds(self, params: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         kin = self.fb.kin
@@ -271,6 +289,8 @@ class AttitudeLoop:
         *,
         jac_params: np.ndarray | None = None,
         jac_pitch: float | None = None,
+        rate_cmd: np.ndarray | None = None,
+        acc_cmd: np.ndarray | None = None,
     ) -> tuple[np.ndarray, np.ndarray, float, TailControls]:
         """The wings' and tail's commands for this control step.  ``err`` / ``rates``:
         the wingbeat-mean attitude error (rotation vector onto the command) and body
@@ -295,7 +315,9 @@ class AttitudeLoop:
         lim = INTEGRAL_LIMIT_RAD * g.omega_a**2 / g.ki
         if not self.saturated:  # anti-windup: frozen while the inputs are at their bounds
             self.integral = np.clip(self.integral + dt * err, -lim, lim)
-        demand = self.inertia * (g.kp * err - g.kd * rates + g.ki * self.integral) - m0
+        rate_err = (0.0 if rate_cmd is None else rate_cmd) - rates
+        acc = 0.0 if acc_cmd is None else acc_cmd
+        demand = self.inertia * (acc + g.kp * err + g.kd * rate_err + g.ki * self.integral) - m0
         lo, hi = self.bounds(params)
         u = np.zeros(len(INPUTS))
         miss = 0.0

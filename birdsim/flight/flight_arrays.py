@@ -14,11 +14,11 @@ from birdsim.flight.simulate import C_SEED
 
 
 def attitude_estimate(
-    window: list, d: Any, per_beat: int, period: float, pitch_cmd: float
+    window: list, d: Any, per_beat: int, period: float, pitch_cmd: float, roll_cmd: float = 0.0
 ) -> tuple[np.ndarray, np.ndarray]:
     """Wingbeat-mean attitude error and body rates (seed body axes) over the last
     wingbeat of samples ``(quat, omega_body)``: the error is the rotation vector that
-    turns the body onto the command (roll 0, ``pitch_cmd``, yaw 0), ``log(S^T S_cmd)``
+    turns the body onto the command (``roll_cmd``, ``pitch_cmd``, yaw 0), ``log(S^T S_cmd)``
     -- no Euler angles, so no gimbal lock at a steep body; before a whole wingbeat the
     missing samples are the start's."""
     if not window:
@@ -28,7 +28,8 @@ def attitude_estimate(
     r_mj = Rotation.from_quat(quat[:, [1, 2, 3, 0]]).as_matrix()
     c = np.diag(C_SEED)
     s_body = c @ r_mj @ c
-    s_cmd = Rotation.from_euler("y", pitch_cmd).as_matrix()
+    # seed axes, Z-Y-X: yaw 0, then pitch about y, then roll about x
+    s_cmd = Rotation.from_euler("ZYX", [0.0, pitch_cmd, roll_cmd]).as_matrix()
     err = Rotation.from_matrix(np.swapaxes(s_body, 1, 2) @ s_cmd).as_rotvec()
     n = FIT_BEATS * per_beat
     if len(window) < n:

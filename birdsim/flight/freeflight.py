@@ -18,6 +18,7 @@ import numpy as np
 
 from birdsim.errors import BirdsimError, limits_text, magnitude_ok
 from birdsim.flight.attitude import FIT_BEATS, AttitudeLoop
+from birdsim.flight.attitude_commands import bank_command, command_filter
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.flight_arrays import attitude_estimate, flight_arrays
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
@@ -33,10 +34,15 @@ TWO_PI = 2.0 * math.pi
 INTEGRAL_LIMIT = 0.1
 #: Time constant (wingbeats) of the body's pitch command (attitude free, with a
 #: stroke plane): the table's pitch smoothed; the stroke plane turns by the difference.
-PITCH_COMMAND_BEATS = 2.0
+PITCH_COMMAND_BEATS = 3.0
 #: How far (rad) the compensated stroke plane may leave the table's bounds (those bound
 #: the optimiser's search, not the shoulder).
 SP_MARGIN = 0.8
+#: Wingbeats ahead the stroke plane's compensation predicts the body's pitch (the
+#: estimated pitch rate times this), against the lag of the estimate and the inputs'
+#: smoothing: measured over 0, 3/16, 3/8 and 0.6, 3/8 flew take-off best (path RMS
+#: 0.0804, 0.0739, 0.0726, 0.0751) with cruise unchanged (docs/flight.md).
+SP_LEAD = 0.375
 #: The integral only runs while the estimated position error is below this (semispans).
 INTEGRAL_BAND = 0.1
 
@@ -188,6 +194,8 @@ def fly(
                 # the wingbeat's real mean force differs a little from the table's (the body
                 # bobs, the wings weigh): start the integral where it cancels that difference
                 *_, bias = trim_start(fb, reference, cmd.params, pos0, vel0, config, every)
+                if free:  # again, from the rotation the first probe measured
+                    *_, bias = trim_start(fb, reference, cmd.params, pos0, vel0, config, every)
                 limit = INTEGRAL_LIMIT * red.gravity / gains.ki if red.gravity > 0 else np.inf
                 integral = np.clip(bias / gains.ki, -limit, limit)
                 cmd = command(
@@ -210,9 +218,11 @@ def fly(
         omega0, d_pitch0 = getattr(fb, "start_rotation", (None, 0.0))
         fb.start(pos0, vel0, pres, pitch=float(pres.pitch[0]) - d_pitch0, omega_body=omega0)
         att = AttitudeLoop(fb, enabled=free and attitude_loop)
+        if free and trim and hasattr(fb, "start_moment"):
+            att.preset_integral(fb.start_moment, cmd.params, float(pres.pitch[0]), float(ref0.vx))
         compensate = free and stroke_compensation and "stroke_plane" in names
         pitch_ref: float | None = None
-        tau_ref = PITCH_COMMAND_BEATS * TWO_PI if compensate else 1e-9
+        tau_ref = PITCH_COMMAND_BEATS * TWO_PI if compensate else 0.0
         sp_index = names.index("stroke_plane") if compensate else -1
         sp_bounds = (
             (fb.kin.params[sp_index].lower - SP_MARGIN, fb.kin.params[sp_index].upper + SP_MARGIN)
@@ -220,6 +230,7 @@ def fly(
             else None
         )
         att_window: list[tuple[np.ndarray, np.ndarray]] = []
+        lat_window: list[tuple[float, float]] = []
         dt_ctl = steps_ctl * h
         for k in range(n_ctl):
             t = fb.time
@@ -243,12 +254,16 @@ def fly(
             if free:
                 v_est = float(est[2]) if est is not None else float(ref0.vx)
                 if pitch_ref is None:
-                    pitch_ref = pitch
-                # the body's pitch command: the table's pitch, smoothed over
-                # PITCH_COMMAND_BEATS (the stroke plane takes the difference)
-                pitch_ref += (pitch - pitch_ref) * (1.0 - math.exp(-dt_ctl / tau_ref))
+                    pitch_ref, pitch_rate_ref = pitch, 0.0
+                # the body's pitch command: the table's pitch through a critically damped
+                # second-order filter of time constant PITCH_COMMAND_BEATS (the stroke
+                # plane takes the difference); its rate and acceleration feed forward
+                pitch_ref, pitch_rate_ref, pitch_acc_ref = command_filter(
+                    pitch_ref, pitch_rate_ref, pitch, tau_ref, dt_ctl
+                )
+                roll_cmd = bank_command(lat_window, config.log_per_beat, red.gravity)
                 err, rates = attitude_estimate(
-                    att_window, fb.d, config.log_per_beat, TWO_PI, pitch_ref
+                    att_window, fb.d, config.log_per_beat, TWO_PI, pitch_ref, roll_cmd
                 )
                 body_pitch = pitch_ref - float(err[1])  # the wingbeat-mean pitch
                 if compensate:
@@ -257,19 +272,23 @@ def fly(
                     # wingbeat at the table's pitch (m3/m4: stroke plane and body pitch
                     # compose about one axis), within the stroke plane's bounds
                     offset = np.zeros(len(names))
-                    sp = cmd.params[sp_index] + pitch - body_pitch
+                    # the body's pitch predicted SP_LEAD ahead (the estimate lags)
+                    lead = float(rates[1]) * SP_LEAD * TWO_PI
+                    sp = cmd.params[sp_index] + pitch - (body_pitch + lead)
                     offset[sp_index] = float(np.clip(sp, *sp_bounds)) - cmd.params[sp_index]
-                right, left, sweep, tail = att.update(
+                right, left, shoulder, tail = att.update(
                     cmd.params,
                     pitch_ref,
                     v_est - float(wind[0]),
                     err,
                     rates,
                     dt_ctl,
+                    rate_cmd=np.array([0.0, pitch_rate_ref, 0.0]),
+                    acc_cmd=np.array([0.0, pitch_acc_ref, 0.0]),
                     jac_params=None if offset is None else cmd.params + offset,
                     jac_pitch=body_pitch,
                 )
-                fb.schedule.sweep_target = sweep
+                fb.schedule.shoulder_target = shoulder
                 fb.cb.tail_controls = tail
             else:
                 right = cmd.params
@@ -287,12 +306,14 @@ def fly(
                     float(qvel[0]),
                 )
                 att_window.append((qpos[3:7], C_SEED * qvel[3:6]))
+                lat_window.append((qpos[1], qvel[1]))
                 rows["V_air"].append(float(np.linalg.norm(qvel[:3] - wind)))
                 rows["params"].append(pres.params[j * every])
                 rows["pitch_command"].append(
                     pres.pitch[j * every] if pitch_ref is None else pitch_ref
                 )
             del att_window[: max(0, len(att_window) - FIT_BEATS * config.log_per_beat)]
+            del lat_window[: max(0, len(lat_window) - FIT_BEATS * config.log_per_beat)]
             n_new = len(new)
             rows["x_ref"].extend(refs["x"].tolist())
             rows["z_ref"].extend(refs["z"].tolist())

@@ -37,6 +37,10 @@ from birdsim.physics.kinematics import KinematicModel
 #: Time constant (wingbeats) of the attitude inputs' smoothing: fast enough for the
 #: attitude loop, slow enough that the wings' accelerations stay of the wingbeat's order.
 INPUT_SMOOTHING_BEATS = 0.125
+#: The symmetric shoulder offsets of the attitude loop: (joint, sign) of the sweep
+#: (positive: tips back) and the dihedral (positive: tips up; a positive flap angle puts
+#: the tip down, docs/conventions.md).
+SHOULDER_OFFSETS = (("sweep", 1.0), ("flap", -1.0))
 
 
 class CascadeFilter:
@@ -129,17 +133,18 @@ class WingbeatSchedule:
         #: the table's wingbeat (the mean of both wings), smoothed like playback's
         self.filter = CascadeFilter(smoothing, 0.5 * (right + left))
         #: the attitude inputs: half the right-left difference of every parameter and
-        #: the sweep offsets (right, left), smoothed faster (INPUT_SMOOTHING_BEATS)
+        #: the shoulder offsets (right sweep, dihedral, left sweep, dihedral), smoothed
+        #: faster (INPUT_SMOOTHING_BEATS)
         tau_in = INPUT_SMOOTHING_BEATS * bird.period if input_smoothing is None else input_smoothing
         n = len(self.names)
         self.input_filter = CascadeFilter(
             min(tau_in, smoothing),
-            np.concatenate([0.5 * (right - left), np.zeros(n), [0.0, 0.0]]),
+            np.concatenate([0.5 * (right - left), np.zeros(n), np.zeros(4)]),
         )
         self.pitch_index = self.names.index("pitch")
-        #: symmetric sweep offset (rad) of both wings' target: an attitude input that
-        #: moves the force line fore and aft (the shoulder's sweep joint, any model)
-        self.sweep_target = 0.0
+        #: symmetric shoulder offsets (rad) of both wings' targets, attitude inputs that
+        #: move the force line (any model): (sweep, dihedral), :data:`SHOULDER_OFFSETS`
+        self.shoulder_target = np.zeros(2)
 
     def advance(
         self,
@@ -158,17 +163,17 @@ class WingbeatSchedule:
         times = np.asarray(times, dtype=float)
         right = np.asarray(target, dtype=float)
         left = right if target_left is None else np.asarray(target_left, dtype=float)
-        sw = self.sweep_target
+        sh = np.asarray(self.shoulder_target, dtype=float)
         rel = times - t_now
         mean = self.filter.advance(0.5 * (right + left), rel, dt)
         n = len(self.names)
         off = np.zeros(n) if offset is None else np.asarray(offset, dtype=float)
         inputs = self.input_filter.advance(
-            np.concatenate([0.5 * (right - left), off, [sw, sw]]), rel, dt
+            np.concatenate([0.5 * (right - left), off, sh, sh]), rel, dt
         )
         r = tuple(a + b[:, :n] + b[:, n : 2 * n] for a, b in zip(mean, inputs))
         lft = tuple(a - b[:, :n] + b[:, n : 2 * n] for a, b in zip(mean, inputs))
-        return self.prescribe(times, *r, left=lft, sweep=tuple(b[:, 2 * n :] for b in inputs))
+        return self.prescribe(times, *r, left=lft, shoulder=tuple(b[:, 2 * n :] for b in inputs))
 
     @property
     def output(self) -> np.ndarray:
@@ -176,19 +181,20 @@ class WingbeatSchedule:
         return self.filter.output
 
     @property
-    def sweep_now(self) -> float:
-        """The smoothed symmetric sweep offset now (rad)."""
-        return float(self.input_filter.output[-2])
+    def shoulder_now(self) -> np.ndarray:
+        """The smoothed symmetric shoulder offsets (sweep, dihedral) now (rad)."""
+        return self.input_filter.output[-4:-2].copy()
 
-    def _joints(self, times, p, dp, ddp, sweep=None):
+    def _joints(self, times, p, dp, ddp, shoulder=None):
         omega = self.bird.omega
         cols = {n: p[:, i] for i, n in enumerate(self.names)}
         rates = {n: dp[:, i] for i, n in enumerate(self.names)}
         accs = {n: ddp[:, i] for i, n in enumerate(self.names)}
         out = joint_derivatives(self.kin, self.bird, cols, rates, accs, omega * times, omega)
-        if sweep is not None:
-            for d, v in zip(out, sweep):
-                d["sweep"] = np.asarray(d.get("sweep", 0.0)) + v
+        if shoulder is not None:
+            for d, v in zip(out, shoulder):
+                for j, (joint, sign) in enumerate(SHOULDER_OFFSETS):
+                    d[joint] = np.asarray(d.get(joint, 0.0)) + sign * v[:, j]
         return out
 
     def prescribe(
@@ -199,16 +205,16 @@ class WingbeatSchedule:
         ddp: np.ndarray,
         *,
         left: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None,
-        sweep: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None,
+        shoulder: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None,
     ) -> Prescription:
         """qpos/qvel/qacc of the wings (and, for the posed mode, the torso orientation at
         the table's pitch) for parameters p(t) (T, nP); ``left`` the left wing's p, p',
         p'' when they differ."""
         t = len(times)
         sw_r = sw_l = None
-        if sweep is not None and (np.any(sweep[0]) or np.any(sweep[1]) or np.any(sweep[2])):
-            sw_r = tuple(a[:, 0] for a in sweep)
-            sw_l = tuple(a[:, 1] for a in sweep)
+        if shoulder is not None and any(np.any(a) for a in shoulder):
+            sw_r = tuple(a[:, :2] for a in shoulder)
+            sw_l = tuple(a[:, 2:] for a in shoulder)
         if left is not None and sw_r is None:
             if all(np.array_equal(x, y) for x, y in zip(left, (p, dp, ddp))):
                 left = None
@@ -227,4 +233,4 @@ class WingbeatSchedule:
         )
 
 
-__all__ = ["CascadeFilter", "Prescription", "WingbeatSchedule"]
+__all__ = ["SHOULDER_OFFSETS", "CascadeFilter", "Prescription", "WingbeatSchedule"]

@@ -1,0 +1,58 @@
+"""The attitude loop's commands with the attitude free (reduced units, seed body axes):
+the body's pitch command filtered from the table's pitch, with its rate and
+acceleration to feed forward, and the lateral path loop's bank (roll) command."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from birdsim.flight.attitude import FIT_BEATS, wingbeat_fit_matrix
+
+TWO_PI = 2.0 * math.pi
+#: The lateral path loop (attitude free): a side error and velocity ask for a sideways
+#: acceleration ``omega_l^2 e_y + 2 omega_l e_vy`` (critically damped, ``omega_l = omega /
+#: (2 pi LATERAL_BEATS)``: three times the path loop's time constant, so that the roll loop
+#: inside it, 2 wingbeats, is the faster), delivered by banking: roll = atan(a_y / g),
+#: at most LATERAL_ROLL_MAX (rad).
+LATERAL_BEATS = 6.0
+LATERAL_ROLL_MAX = math.radians(30.0)
+
+
+def command_filter(
+    value: float, rate: float, target: float, tau: float, dt: float, substeps: int = 8
+) -> tuple[float, float, float]:
+    """One step ``dt`` of the critically damped second-order filter ``a = (target -
+    value) / tau^2 - 2 rate / tau`` (semi-implicit Euler substeps): (value, rate,
+    acceleration at the end of the step)."""
+    if tau <= 0.0:  # no filter: the target, held
+        return target, 0.0, 0.0
+    h = dt / substeps
+    for _ in range(substeps):
+        rate += h * ((target - value) / tau**2 - 2.0 * rate / tau)
+        value += h * rate
+    return value, rate, (target - value) / tau**2 - 2.0 * rate / tau
+
+
+def bank_command(window: list, per_beat: int, gravity: float) -> float:
+    """The lateral path loop's roll command (rad, seed axes: right wing down > 0) from the
+    last wingbeat's samples ``(y, vy)`` (MuJoCo y, to the left; the reference has y = 0):
+    the wingbeat-mean side error and velocity (the trend's value now), the sideways
+    acceleration they ask for (:data:`LATERAL_BEATS`) and the bank that tilts the weight's
+    support by it."""
+    if not window or gravity <= 0.0:
+        return 0.0
+    n = FIT_BEATS * per_beat
+    yv = np.array(window, dtype=float)
+    if len(yv) < n:
+        yv = np.vstack([np.repeat(yv[:1], n - len(yv), axis=0), yv])
+    y, vy = wingbeat_fit_matrix(n, TWO_PI, beats=FIT_BEATS)[0] @ yv
+    w = 1.0 / LATERAL_BEATS  # omega / (2 pi N), reduced units (omega = 1 per 2 pi)
+    w = w / TWO_PI
+    a_left = -(w * w * y + 2.0 * w * vy)
+    # banking right (roll > 0) leans the support to the right, -y
+    return float(np.clip(math.atan2(-a_left, gravity), -LATERAL_ROLL_MAX, LATERAL_ROLL_MAX))
+
+
+__all__ = ["LATERAL_BEATS", "LATERAL_ROLL_MAX", "bank_command", "command_filter"]
