@@ -44,6 +44,7 @@ import mujoco
 import numpy as np
 
 from birdsim.errors import BirdsimError
+from birdsim.flight import step_kernel
 from birdsim.flight.wingbeat import Prescription, WingbeatSchedule
 from birdsim.mujoco.callback import AeroCallback
 from birdsim.mujoco.model import build_model, pitch_quat
@@ -313,6 +314,13 @@ class FreeBird:
         xmat, xpos, xfrc = d.xmat, d.xpos, d.xfrc_applied
         n = pres.qpos.shape[0]
         nf = len(part.free_dofs)
+        if free_rot and step_kernel.AVAILABLE and F == slice(0, 6) and P == slice(6, m.nv):
+            # the same arithmetic compiled (birdsim.flight.step_kernel)
+            dmax, vmax = step_kernel.free_loop(self, pres, Pq, P, W, record, every, weight)
+            if project and n:
+                self.projection_max = max(self.projection_max, dmax, vmax * h)
+            self._check_finite()
+            return
         # the rows of the prescription (views for slices) and the blocks of M (views)
         pres_q, pres_v, pres_a = pres.qpos[:, Pq], pres.qvel[:, P], pres.qacc[:, P]
         m_ff, m_fp, m_pf, m_pp = M[FF], M[FP], M[PF], M[PP]
@@ -381,7 +389,10 @@ class FreeBird:
                 float(np.max(np.abs(dxs))),
                 float(np.max(np.abs(dvs))) * h,
             )
-        if not (np.all(np.isfinite(qpos)) and np.all(np.isfinite(qvel))):
+        self._check_finite()
+
+    def _check_finite(self) -> None:
+        if not (np.all(np.isfinite(self.d.qpos)) and np.all(np.isfinite(self.d.qvel))):
             raise FlightError(
                 f"the simulation diverged at t={self.time:.3f} (reduced time): non-finite state"
             )

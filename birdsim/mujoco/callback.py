@@ -83,6 +83,12 @@ class AeroCallback:
         # m5: the hand's area follows the wrist flexion (physics.m5.area_factor)
         self.fold_qpos = fold_area_joints(m, model_name, sites)
         self._vel = np.zeros((len(sites), 6))
+        # per-site arguments of the MuJoCo calls, made once (the callback runs every step)
+        self._site_list = [int(i) for i in self.site_ids]
+        self._body_list = [int(i) for i in self.body_ids]
+        self._vel_rows = [self._vel[k] for k in range(len(sites))]
+        self._wind = m.opt.wind  # a view of the model's wind (written in place by its users)
+        self._zero3 = np.zeros(3)
         self._tvel = np.zeros(6)
         self.single = bool(np.all(self.offsets == 0.0))
         self._zero_torque = np.zeros((len(sites), 3))
@@ -110,14 +116,15 @@ class AeroCallback:
             return
         self.calls += 1
         polar, rho = self.bird.polar, self.bird.rho
-        wind = m.opt.wind
-        for k, sid in enumerate(self.site_ids):
-            mujoco.mj_objectVelocity(m, d, _SITE, int(sid), self._vel[k], 0)
+        wind = self._wind
+        object_velocity = mujoco.mj_objectVelocity
+        for sid, row in zip(self._site_list, self._vel_rows):
+            object_velocity(m, d, _SITE, sid, row, 0)
         xmat = d.site_xmat[self.site_ids].reshape(-1, 3, 3)  # columns: site axes in world
         areas = self.areas
         if self.fold_qpos is not None:
             areas = self.areas * fold_area_scale(d.qpos, self.fold_qpos, self.bird)[:, None]
-        ang, lin = self._vel[:, :3], self._vel[:, 3:] - wind
+        lin = self._vel[:, 3:] - wind
         if self.single:  # one element per panel, at the site
             local = (lin[:, None, :] @ xmat)[:, 0, :]  # (K, 3) = xmat^T v
             # seed panel axes = C (site axes): vx = local x, vz = -local z
@@ -125,6 +132,7 @@ class AeroCallback:
             force = fx[:, None] * xmat[:, :, 0] - fz[:, None] * xmat[:, :, 2]
             torque = self._zero_torque
         else:
+            ang = self._vel[:, :3]
             r = xmat[:, None, :, 1] * self.offsets[:, :, None]  # (K, S, 3) site -> element
             v = lin[:, None, :] + _cross(ang[:, None, :], r)  # element velocity rel. to air
             local = np.einsum("kji,ksj->ksi", xmat, v)
@@ -133,10 +141,9 @@ class AeroCallback:
             force = f.sum(axis=1)
             torque = _cross(r, f).sum(axis=1)
         pos = d.site_xpos[self.site_ids]
-        for k in range(len(self.site_ids)):
-            mujoco.mj_applyFT(
-                m, d, force[k], torque[k], pos[k], int(self.body_ids[k]), d.qfrc_passive
-            )
+        apply_ft, passive = mujoco.mj_applyFT, d.qfrc_passive
+        for k, body in enumerate(self._body_list):
+            apply_ft(m, d, force[k], torque[k], pos[k], body, passive)
         if self.body_drag:
             self._apply_body_drag(m, d)
         if self.tail:
@@ -145,7 +152,7 @@ class AeroCallback:
     def _apply_tail(self, m: mujoco.MjModel, d: mujoco.MjData) -> None:
         mujoco.mj_objectVelocity(m, d, _SITE, self.tail_site, self._tailvel, 1)
         xmat = d.site_xmat[self.tail_site].reshape(3, 3)  # the torso's axes
-        vel_body = self._tailvel[3:] - xmat.T @ m.opt.wind  # local frame (flg_local=1)
+        vel_body = self._tailvel[3:] - xmat.T @ self._wind  # local frame (flg_local=1)
         b = self.bird
         ctl = self.tail_controls
         if self._tail_frame_for is not ctl:  # the frame changes only with the controls
@@ -164,7 +171,7 @@ class AeroCallback:
             m,
             d,
             xmat @ f_body,
-            np.zeros(3),
+            self._zero3,
             d.site_xpos[self.tail_site],
             self.torso_body,
             d.qfrc_passive,
@@ -172,8 +179,8 @@ class AeroCallback:
 
     def _apply_body_drag(self, m: mujoco.MjModel, d: mujoco.MjData) -> None:
         mujoco.mj_objectVelocity(m, d, _SITE, self.torso_site, self._tvel, 0)
-        u = self._tvel[3:] - m.opt.wind
-        speed = float(np.linalg.norm(u))
+        u = self._tvel[3:] - self._wind
+        speed = float(np.sqrt(u.dot(u)))  # np.linalg.norm's own arithmetic, without its overhead
         if speed == 0.0:
             return
         xmat = d.site_xmat[self.torso_site].reshape(3, 3)
@@ -185,7 +192,7 @@ class AeroCallback:
             m,
             d,
             -drag * u / speed,
-            np.zeros(3),
+            self._zero3,
             d.site_xpos[self.torso_site],
             self.torso_body,
             d.qfrc_passive,
