@@ -331,7 +331,7 @@ def joint_derivatives(
         minus = kin.joint_motion({k: params[k] - h * direction[k] for k in params}, bird)
         return {
             name: tuple(
-                np.broadcast_to(
+                _shaped(
                     (
                         np.asarray(getattr(plus[name], f), dtype=float)
                         - np.asarray(getattr(minus[name], f), dtype=float)
@@ -349,9 +349,7 @@ def joint_derivatives(
     second = along(param_accels) if param_accels is not None else None
     angles, rates, accels = {}, {}, {}
     for name, s in motion.items():
-        a, c, b = (
-            np.broadcast_to(np.asarray(v, dtype=float), shape) for v in (s.amp, s.phase, s.bias)
-        )
+        a, c, b = (_shaped(np.asarray(v, dtype=float), shape) for v in (s.amp, s.phase, s.bias))
         da, dc, db = first[name]
         arg = phase + c
         sn, cs = np.sin(arg), np.cos(arg)
@@ -362,6 +360,11 @@ def joint_derivatives(
             w = omega + dc
             accels[name] = dda * sn + 2.0 * da * w * cs + a * ddc * cs - a * w * w * sn + ddb
     return angles, rates, accels
+
+
+def _shaped(x: np.ndarray, shape: tuple[int, ...]) -> np.ndarray:
+    """``np.broadcast_to(x, shape)``, skipped when ``x`` has that shape already."""
+    return x if x.shape == shape else np.broadcast_to(x, shape)
 
 
 def frame_times(seconds: float, fps: int, beats_per_second: float) -> np.ndarray:
