@@ -363,8 +363,9 @@ def joint_derivatives(
 
 
 def _shaped(x: np.ndarray, shape: tuple[int, ...]) -> np.ndarray:
-    """``np.broadcast_to(x, shape)``, skipped when ``x`` has that shape already."""
-    return x if x.shape == shape else np.broadcast_to(x, shape)
+    """``np.broadcast_to(x, shape)``, skipped when ``x`` has that shape already or is a
+    number (every use is elementwise against the phase: the same numbers)."""
+    return x if x.shape == shape or x.ndim == 0 else np.broadcast_to(x, shape)
 
 
 def frame_times(seconds: float, fps: int, beats_per_second: float) -> np.ndarray:

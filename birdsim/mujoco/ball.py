@@ -57,16 +57,20 @@ def ball_state(
     """Quaternion (T, 4), child-frame angular velocity and acceleration (T, 3) of the
     intrinsic composition of rotations by ``q[k]`` about ``axes[k]`` (outermost first).
 
-    (The products of :func:`_quat_mul` written out on columns, the quaternion starting
-    at the identity: the same arithmetic, without the per-call array shuffling.)"""
+    (The products of :func:`_quat_mul` written out on columns, the first factor taken
+    as it is instead of multiplied by the identity: the same numbers up to the sign of
+    a zero, without the per-call array shuffling.)"""
     n = len(axes)
     t = np.shape(q[0])[0]
-    w, x, y, z = 1.0, 0.0, 0.0, 0.0  # the identity, as _quat_mul's first factor
+    w = x = y = z = None  # the identity: its product with the first factor is that factor
     for a, ang in zip(axes, q):
         half = 0.5 * np.asarray(ang)
         w2 = np.cos(half)
         sn = np.sin(half)
         x2, y2, z2 = sn * a[0], sn * a[1], sn * a[2]
+        if w is None:
+            w, x, y, z = w2, x2, y2, z2
+            continue
         w, x, y, z = (
             w * w2 - x * x2 - y * y2 - z * z2,
             w * x2 + x * w2 + y * z2 - z * y2,
