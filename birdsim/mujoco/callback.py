@@ -181,11 +181,14 @@ class AeroCallback:
     def _apply_tail(self, m: mujoco.MjModel, d: mujoco.MjData) -> None:
         mujoco.mj_objectVelocity(m, d, _SITE, self.tail_site, self._tailvel, 1)
         xmat = d.site_xmat[self.tail_site].reshape(3, 3)  # the torso's axes
-        vel_body = self._tailvel[3:] - xmat.T @ self._wind  # local frame (flg_local=1)
+        # the velocity in the local frame (flg_local=1): v - xmat^T wind, summed as
+        # numpy's matmul of a transposed matrix sums it
+        x, (w0, w1, w2), v = xmat.tolist(), self._wind.tolist(), self._tailvel.tolist()
+        vel_body = [v[3 + i] - (x[0][i] * w0 + x[1][i] * w1 + x[2][i] * w2) for i in range(3)]
         b = self.bird
         ctl = self.tail_controls
         if self._tail_frame_for is not ctl:  # the frame changes only with the controls
-            self._tail_frame = tail_frame(ctl.clipped())
+            self._tail_frame = tail_frame(ctl.clipped()).tolist()
             self._tail_frame_for = ctl
         f_body, self.tail_alpha = tail_force(
             vel_body,
