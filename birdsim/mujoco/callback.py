@@ -91,8 +91,12 @@ class AeroCallback:
         self._wind = m.opt.wind  # a view of the model's wind (written in place by its users)
         self._zero3 = np.zeros(3)
         self._force = np.zeros(3)
-        #: the per-element arithmetic on Python floats (a polar that has it)
-        self._scalar = hasattr(self.bird.polar, "force_scalar")
+        #: the per-element arithmetic on Python floats: a polar whose force_scalar is
+        #: defined with the force_panel it uses (a subclass that overrides force_panel
+        #: only gets the array path)
+        cls = type(self.bird.polar)
+        owner = next((c for c in cls.__mro__ if "force_scalar" in c.__dict__), None)
+        self._scalar = owner is not None and cls.force_panel is owner.__dict__.get("force_panel")
         self._tvel = np.zeros(6)
         self.single = bool(np.all(self.offsets == 0.0))
         self._zero_torque = np.zeros((len(sites), 3))
