@@ -331,14 +331,7 @@ def joint_derivatives(
         minus = kin.joint_motion({k: params[k] - h * direction[k] for k in params}, bird)
         return {
             name: tuple(
-                _shaped(
-                    (
-                        np.asarray(getattr(plus[name], f), dtype=float)
-                        - np.asarray(getattr(minus[name], f), dtype=float)
-                    )
-                    / (2 * h),
-                    shape,
-                )
+                _difference(getattr(plus[name], f), getattr(minus[name], f), 2 * h, shape)
                 for f in ("amp", "phase", "bias")
             )
             for name in motion
@@ -360,6 +353,14 @@ def joint_derivatives(
             w = omega + dc
             accels[name] = dda * sn + 2.0 * da * w * cs + a * ddc * cs - a * w * w * sn + ddb
     return angles, rates, accels
+
+
+def _difference(a: object, b: object, step: float, shape: tuple[int, ...]) -> Any:
+    """``(a - b) / step``: on Python floats when both are (a coefficient that does not
+    depend on the parameters; the same IEEE arithmetic as numpy's), else on arrays."""
+    if type(a) is float and type(b) is float:
+        return (a - b) / step
+    return _shaped((np.asarray(a, dtype=float) - np.asarray(b, dtype=float)) / step, shape)
 
 
 def _shaped(x: np.ndarray, shape: tuple[int, ...]) -> np.ndarray:

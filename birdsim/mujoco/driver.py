@@ -55,9 +55,11 @@ class Trajectory:
     qacc: np.ndarray
 
 
-def _as_series(value: object, t: int, name: str) -> np.ndarray:
+def _as_series(value: object, t: int, name: str, check: bool = True) -> np.ndarray:
+    """``value`` as ``t`` samples; ``check=False`` leaves the finiteness of a float array
+    of that shape to the caller (wing_arrays checks its outputs once)."""
     if type(value) is np.ndarray and value.dtype == np.float64 and value.shape == (t,):
-        if not np.isfinite(value).all():
+        if check and not np.isfinite(value).all():
             raise BirdsimError(
                 f"joint {name} is not finite; allowed: finite angles (rad) or heave (length)"
             )
@@ -143,12 +145,12 @@ def wing_arrays(
     plan = _plan(m)
     zeros = np.zeros(t)
 
-    def get(d: Mapping[str, object] | None, k: str) -> np.ndarray:
+    def get(d: Mapping[str, object] | None, k: str, check: bool = False) -> np.ndarray:
         d = d or {}
-        out = _as_series(d[k], t, k) if k in d else zeros
+        out = _as_series(d[k], t, k, check) if k in d else zeros
         for extra, into in SAME_AXIS.items():
             if into == k and extra in d:
-                out = out + _as_series(d[extra], t, extra)  # type: ignore[index]
+                out = out + _as_series(d[extra], t, extra, check)  # type: ignore[index]
         return out
 
     qpos = np.tile(m.qpos0, (t, 1))
@@ -160,19 +162,20 @@ def wing_arrays(
         qpos[:, hq] = get(angles, "heave")
         qvel[:, hd] = get(rates, "heave")
         qacc[:, hd] = get(accelerations, "heave")
-        quat, omega, alpha = ball_state(
-            axes,
-            [get(angles, j) for j in SHOULDER],
-            [get(rates, j) for j in SHOULDER],
-            [get(accelerations, j) for j in SHOULDER],
-        )
+        with np.errstate(invalid="ignore"):  # a non-finite input is named below
+            quat, omega, alpha = ball_state(
+                axes,
+                [get(angles, j) for j in SHOULDER],
+                [get(rates, j) for j in SHOULDER],
+                [get(accelerations, j) for j in SHOULDER],
+            )
         qpos[:, sq : sq + 4] = quat
         qvel[:, sd : sd + 3] = omega
         qacc[:, sd : sd + 3] = alpha
         for j, adr in hinges:
             if adr is None:  # a model without m5's joints
-                if (j in (angles or {}) and np.any(get(angles, j))) or (
-                    j in (rates or {}) and np.any(get(rates, j))
+                if (j in (angles or {}) and np.any(get(angles, j, True))) or (
+                    j in (rates or {}) and np.any(get(rates, j, True))
                 ):
                     raise BirdsimError(
                         f"joint {j} is not in this model; allowed: m5's MJCF (build_model('m5'))"
@@ -181,6 +184,11 @@ def wing_arrays(
             qpos[:, adr[0]] = get(angles, j)
             qvel[:, adr[1]] = get(rates, j)
             qacc[:, adr[1]] = get(accelerations, j)
+    if not (np.isfinite(qpos).all() and np.isfinite(qvel).all() and np.isfinite(qacc).all()):
+        for values in sides.values():  # name the joint whose series is not finite
+            for d in values:
+                for k, v in (d or {}).items():
+                    _as_series(v, t, k)
     return qpos, qvel, qacc
 
 
