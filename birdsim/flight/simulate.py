@@ -288,17 +288,19 @@ class FreeBird:
                 qvel[P] = pres_v[k]
                 step1(m, d)
                 full_m(m, d, M)
-                arm = com_t - xpos_t
+                arm = com_t - xpos_t if free_rot else None
                 m_inv = inv(m_ff)  # one factorisation for the projection and a_F
                 if project:
                     dx = X_ - com_t
                     qpos[:3] += dx
-                    dp = np.empty(nf)
                     p_lin = m_lin @ qvel
-                    dp[:3] = P_ - p_lin
                     if free_rot:
+                        dp = np.empty(nf)
+                        dp[:3] = P_ - p_lin
                         l_now = r_t @ (m_rot @ qvel) - _cross(arm, p_lin)
                         dp[3:] = r_t.T @ (L_ - l_now + _cross(arm, dp[:3]))
+                    else:
+                        dp = P_ - p_lin
                     dv = m_inv @ dp
                     qvel[F] += dv
                     dxs[k] = dx
