@@ -216,9 +216,13 @@ def test_one_prescription_for_every_jacobian_input_is_one_per_input():
             z = np.zeros((n, len(sched.names)))
             sw = np.tile([sweep, sweep], (n, 1))
             pres = sched.prescribe(
-                times, np.tile(right, (n, 1)), z, z, left=(np.tile(left, (n, 1)), z, z),
+                times,
+                np.tile(right, (n, 1)),
+                z,
+                z,
+                left=(np.tile(left, (n, 1)), z, z),
                 sweep=(sw, 0 * sw, 0 * sw),
-            )  # fmt: skip
+            )
             cb.tail_controls = tail
             acc = np.zeros(3)
             for k in range(n):

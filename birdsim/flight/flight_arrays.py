@@ -57,7 +57,8 @@ def error_rotvec(quat: np.ndarray, pitch_cmd: float) -> np.ndarray:
     small = angle <= 1e-3
     a2 = angle * angle
     with np.errstate(divide="ignore", invalid="ignore"):
-        scale = np.where(small, 2.0 + a2 / 12.0 + 7.0 * a2 * a2 / 2880.0, angle / np.sin(0.5 * angle))
+        taylor = 2.0 + a2 / 12.0 + 7.0 * a2 * a2 / 2880.0
+        scale = np.where(small, taylor, angle / np.sin(0.5 * angle))
     return scale[:, None] * v
 
 

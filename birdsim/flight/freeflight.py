@@ -290,7 +290,9 @@ def fly(
             rows["V_air"].extend(math.sqrt(u.dot(u)) for u in v_new[:, :3] - wind)
             rows["params"].extend(pres.params[: len(new) * every : every])
             rows["pitch_command"].extend(
-                pres.pitch[: len(new) * every : every] if pitch_ref is None else [pitch_ref] * len(new)
+                pres.pitch[: len(new) * every : every]
+                if pitch_ref is None
+                else [pitch_ref] * len(new)
             )
             del att_window[: max(0, len(att_window) - FIT_BEATS * config.log_per_beat)]
             n_new = len(new)

@@ -202,9 +202,23 @@ def free_loop(fb, pres, Pq, P, W, record: list | None, every: int, weight: np.nd
             step1(m, d)
             full_m(m, d, M)
             free_step(
-                M, qpos, qvel, passive, bias, applied, com_t, xpos_t, xmat_t, pres_a[k],
-                state, weight, h, mass, project, out,
-            )  # fmt: skip
+                M,
+                qpos,
+                qvel,
+                passive,
+                bias,
+                applied,
+                com_t,
+                xpos_t,
+                xmat_t,
+                pres_a[k],
+                state,
+                weight,
+                h,
+                mass,
+                project,
+                out,
+            )
             if out[6] > dmax:
                 dmax = float(out[6])
             if out[7] > vmax:

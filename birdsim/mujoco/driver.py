@@ -27,7 +27,7 @@ import mujoco
 import numpy as np
 
 from birdsim.errors import BirdsimError
-from birdsim.mujoco.ball import _quat_mul, _rotation_matrices, ball_state
+from birdsim.mujoco.ball import ball_state
 from birdsim.mujoco.model import SIDES, hinge_axis
 from birdsim.physics.bird import Bird
 from birdsim.physics.kinematics import JOINTS, get_model, validate_params
