@@ -157,7 +157,9 @@ def measured_jacobian(
     at zero and its one-sided derivatives, measured in MuJoCo (see the module)."""
 
     m, cb, sched = fb.m, fb.cb, fb.schedule
-    d = mujoco.MjData(m)
+    d = getattr(fb, "_jac_data", None)
+    if d is None:  # a second MjData, kept for the next measurement
+        d = fb._jac_data = mujoco.MjData(m)
     n = JAC_SAMPLES
     times = np.arange(n) * (fb.red.period / n)
     names = sched.names
@@ -165,33 +167,36 @@ def measured_jacobian(
     saved = cb.tail_controls
     m.opt.wind[:] = 0.0
     quat = pitch_quat(pitch)
+    k_in = len(INPUTS) + 1
+    # every input's wingbeat in one prescription (per sample: the same numbers as one
+    # prescription per input)
+    split = [split_inputs(names, params, _unit(i)) for i in range(k_in)]
+    z = np.zeros((n * k_in, len(names)))
+    sw = np.repeat([np.concatenate([sp[2], sp[2]]) for sp in split], n, axis=0)
+    pres = sched.prescribe(
+        np.tile(times, k_in),
+        np.repeat([sp[0] for sp in split], n, axis=0),
+        z,
+        z,
+        left=(np.repeat([sp[1] for sp in split], n, axis=0), z, z),
+        shoulder=(sw, np.zeros_like(sw), np.zeros_like(sw)),
+    )
     out = []
+    fwd_pos, fwd_vel = mujoco.mj_fwdPosition, mujoco.mj_fwdVelocity
     try:
-        for i in range(len(INPUTS) + 1):
-            u = np.zeros(len(INPUTS))
-            if i:
-                u[i - 1] = JAC_STEP
-            right, left, shoulder, tail = split_inputs(names, params, u)
-            z = np.zeros((n, len(names)))
-            sw = np.tile(np.concatenate([shoulder, shoulder]), (n, 1))
-            pres = sched.prescribe(
-                times,
-                np.tile(right, (n, 1)),
-                z,
-                z,
-                left=(np.tile(left, (n, 1)), z, z),
-                shoulder=(sw, np.zeros_like(sw), np.zeros_like(sw)),
-            )
-            cb.tail_controls = tail
+        for i in range(k_in):
+            cb.tail_controls = split[i][3]
             acc = np.zeros(3)
-            for k in range(n):
+            for k in range(i * n, (i + 1) * n):
                 d.qpos[:] = pres.qpos[k]
                 d.qvel[:] = pres.qvel[k]
                 d.qpos[:3] = (0.0, 0.0, 6.0)
                 d.qpos[3:7] = quat
                 d.qvel[:3] = (speed, 0.0, 0.0)
                 d.qvel[3:6] = 0.0
-                mujoco.mj_forward(m, d)
+                # the passive forces (the callback) need only positions and velocities
+                fwd_pos(m, d)
+                fwd_vel(m, d)
                 acc += d.qfrc_passive[3:6]
             out.append(acc / n * np.array([1.0, -1.0, -1.0]))
     finally:
@@ -200,6 +205,14 @@ def measured_jacobian(
     m0 = out[0]
     jac = np.stack([(o - m0) / JAC_STEP for o in out[1:]], axis=1)
     return m0, jac
+
+
+def _unit(i: int) -> np.ndarray:
+    """The inputs with input ``i - 1`` at :data:`JAC_STEP` (``i = 0``: all zero)."""
+    u = np.zeros(len(INPUTS))
+    if i:
+        u[i - 1] = JAC_STEP
+    return u
 
 
 def split_inputs(

@@ -7,7 +7,6 @@ import functools
 from typing import Any
 
 import numpy as np
-from scipy.spatial.transform import Rotation
 
 from birdsim.flight.attitude import FIT_BEATS, INPUTS, euler_zyx, wingbeat_fit_matrix
 from birdsim.flight.simulate import C_SEED
@@ -25,12 +24,7 @@ def attitude_estimate(
         window = [(np.array(d.qpos[3:7]), C_SEED * np.array(d.qvel[3:6]))]
     quat = np.array([w[0] for w in window])
     rate = np.array([w[1] for w in window])
-    r_mj = Rotation.from_quat(quat[:, [1, 2, 3, 0]]).as_matrix()
-    c = np.diag(C_SEED)
-    s_body = c @ r_mj @ c
-    # seed axes, Z-Y-X: yaw 0, then pitch about y, then roll about x
-    s_cmd = Rotation.from_euler("ZYX", [0.0, pitch_cmd, roll_cmd]).as_matrix()
-    err = Rotation.from_matrix(np.swapaxes(s_body, 1, 2) @ s_cmd).as_rotvec()
+    err = error_rotvec(quat, pitch_cmd, roll_cmd)
     n = FIT_BEATS * per_beat
     if len(window) < n:
         pad = n - len(window)
@@ -38,6 +32,45 @@ def attitude_estimate(
         rate = np.vstack([np.zeros((pad, 3)), rate])
     fit = _fit_matrix(n, period)
     return fit[0] @ err, fit[0] @ rate
+
+
+def error_rotvec(quat: np.ndarray, pitch_cmd: float, roll_cmd: float = 0.0) -> np.ndarray:
+    """The rotation vectors (n, 3) of ``S^T S_cmd`` for MuJoCo quaternions ``quat`` (n, 4)
+    (w, x, y, z): S the body's orientation in seed axes (``C R C``, C = diag(1, -1, -1),
+    whose quaternion is (w, x, -y, -z)), S_cmd the pitch ``pitch_cmd`` about seed y then
+    the roll ``roll_cmd`` about x (Z-Y-X with yaw 0).
+    Quaternion algebra, the numbers of scipy's ``Rotation`` (matrix product, then
+    ``as_rotvec``) to round-off (``tests/test_step_kernel.py``), in a few numpy calls."""
+    q = quat / np.sqrt(np.einsum("ij,ij->i", quat, quat))[:, None]
+    w, x, y, z = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
+    c, s = np.cos(0.5 * pitch_cmd), np.sin(0.5 * pitch_cmd)
+    v = np.empty((len(q), 3))
+    if roll_cmd == 0.0:
+        # conj(q_S) * q_cmd, q_cmd = (c, 0, s, 0)
+        rw = w * c - y * s
+        v[:, 0] = -x * c - z * s
+        v[:, 1] = w * s + y * c
+        v[:, 2] = z * c - x * s
+    else:
+        # q_cmd = (c, 0, s, 0) * (cr, sr, 0, 0) = (c cr, c sr, s cr, -s sr)
+        cr, sr = np.cos(0.5 * roll_cmd), np.sin(0.5 * roll_cmd)
+        a2, b2, c2, d2 = c * cr, c * sr, s * cr, -s * sr
+        a1, b1, c1, d1 = w, -x, y, z  # conj(q_S)
+        rw = a1 * a2 - b1 * b2 - c1 * c2 - d1 * d2
+        v[:, 0] = a1 * b2 + b1 * a2 + c1 * d2 - d1 * c2
+        v[:, 1] = a1 * c2 - b1 * d2 + c1 * a2 + d1 * b2
+        v[:, 2] = a1 * d2 + b1 * c2 - c1 * b2 + d1 * a2
+    flip = rw < 0.0  # the rotation of angle in [0, pi]
+    rw = np.where(flip, -rw, rw)
+    v[flip] *= -1.0
+    nv = np.sqrt(np.einsum("ij,ij->i", v, v))
+    angle = 2.0 * np.arctan2(nv, rw)
+    small = angle <= 1e-3
+    a2 = angle * angle
+    with np.errstate(divide="ignore", invalid="ignore"):
+        taylor = 2.0 + a2 / 12.0 + 7.0 * a2 * a2 / 2880.0
+        scale = np.where(small, taylor, angle / np.sin(0.5 * angle))
+    return scale[:, None] * v
 
 
 @functools.lru_cache(maxsize=4)
@@ -92,4 +125,4 @@ def flight_arrays(record: list, rows: dict, names: tuple[str, ...]) -> dict[str,
     return arrays
 
 
-__all__ = ["attitude_estimate", "flight_arrays"]
+__all__ = ["attitude_estimate", "error_rotvec", "flight_arrays"]

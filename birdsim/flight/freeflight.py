@@ -297,21 +297,23 @@ def fly(
             start = len(record)
             fb.step_many(pres, wind, record, every)
             new = record[start:]
+            q_new = np.array([r[1] for r in new])
+            v_new = np.array([r[2] for r in new])
             refs = sample_reference(reference, np.array([r[0] for r in new]))
-            for j, rec in enumerate(new):
-                qpos, qvel = rec[1], rec[2]
-                window.add(
-                    np.array([refs["x"][j] - qpos[0], refs["z"][j] - qpos[2]]),
-                    np.array([refs["vx"][j] - qvel[0], refs["vz"][j] - qvel[2]]),
-                    float(qvel[0]),
-                )
-                att_window.append((qpos[3:7], C_SEED * qvel[3:6]))
-                lat_window.append((qpos[1], qvel[1]))
-                rows["V_air"].append(float(np.linalg.norm(qvel[:3] - wind)))
-                rows["params"].append(pres.params[j * every])
-                rows["pitch_command"].append(
-                    pres.pitch[j * every] if pitch_ref is None else pitch_ref
-                )
+            e_pos = np.stack([refs["x"] - q_new[:, 0], refs["z"] - q_new[:, 2]], axis=1)
+            e_vel = np.stack([refs["vx"] - v_new[:, 0], refs["vz"] - v_new[:, 2]], axis=1)
+            for j in range(len(new)):
+                window.add(e_pos[j], e_vel[j], float(v_new[j, 0]))
+            att_window.extend(zip(q_new[:, 3:7], C_SEED * v_new[:, 3:6]))
+            lat_window.extend(zip(q_new[:, 1], v_new[:, 1]))
+            # |v - wind| as np.linalg.norm computes it (sqrt of the dot product)
+            rows["V_air"].extend(math.sqrt(u.dot(u)) for u in v_new[:, :3] - wind)
+            rows["params"].extend(pres.params[: len(new) * every : every])
+            rows["pitch_command"].extend(
+                pres.pitch[: len(new) * every : every]
+                if pitch_ref is None
+                else [pitch_ref] * len(new)
+            )
             del att_window[: max(0, len(att_window) - FIT_BEATS * config.log_per_beat)]
             del lat_window[: max(0, len(lat_window) - FIT_BEATS * config.log_per_beat)]
             n_new = len(new)

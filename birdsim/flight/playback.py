@@ -331,14 +331,7 @@ def joint_derivatives(
         minus = kin.joint_motion({k: params[k] - h * direction[k] for k in params}, bird)
         return {
             name: tuple(
-                np.broadcast_to(
-                    (
-                        np.asarray(getattr(plus[name], f), dtype=float)
-                        - np.asarray(getattr(minus[name], f), dtype=float)
-                    )
-                    / (2 * h),
-                    shape,
-                )
+                _difference(getattr(plus[name], f), getattr(minus[name], f), 2 * h, shape)
                 for f in ("amp", "phase", "bias")
             )
             for name in motion
@@ -349,9 +342,7 @@ def joint_derivatives(
     second = along(param_accels) if param_accels is not None else None
     angles, rates, accels = {}, {}, {}
     for name, s in motion.items():
-        a, c, b = (
-            np.broadcast_to(np.asarray(v, dtype=float), shape) for v in (s.amp, s.phase, s.bias)
-        )
+        a, c, b = (_shaped(np.asarray(v, dtype=float), shape) for v in (s.amp, s.phase, s.bias))
         da, dc, db = first[name]
         arg = phase + c
         sn, cs = np.sin(arg), np.cos(arg)
@@ -362,6 +353,20 @@ def joint_derivatives(
             w = omega + dc
             accels[name] = dda * sn + 2.0 * da * w * cs + a * ddc * cs - a * w * w * sn + ddb
     return angles, rates, accels
+
+
+def _difference(a: object, b: object, step: float, shape: tuple[int, ...]) -> Any:
+    """``(a - b) / step``: on Python floats when both are (a coefficient that does not
+    depend on the parameters; the same IEEE arithmetic as numpy's), else on arrays."""
+    if type(a) is float and type(b) is float:
+        return (a - b) / step
+    return _shaped((np.asarray(a, dtype=float) - np.asarray(b, dtype=float)) / step, shape)
+
+
+def _shaped(x: np.ndarray, shape: tuple[int, ...]) -> np.ndarray:
+    """``np.broadcast_to(x, shape)``, skipped when ``x`` has that shape already or is a
+    number (every use is elementwise against the phase: the same numbers)."""
+    return x if x.shape == shape or x.ndim == 0 else np.broadcast_to(x, shape)
 
 
 def frame_times(seconds: float, fps: int, beats_per_second: float) -> np.ndarray:

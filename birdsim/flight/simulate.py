@@ -44,6 +44,8 @@ import mujoco
 import numpy as np
 
 from birdsim.errors import BirdsimError
+from birdsim.flight import step_kernel
+from birdsim.flight.partition import Partition, _as_slice, partition
 from birdsim.flight.wingbeat import Prescription, WingbeatSchedule
 from birdsim.mujoco.callback import AeroCallback
 from birdsim.mujoco.model import build_model, pitch_quat
@@ -89,55 +91,6 @@ class SimConfig:
             raise BirdsimError(
                 f"log_per_beat={self.log_per_beat}; allowed: at least 32 samples per wingbeat"
             )
-
-
-@dataclass(frozen=True)
-class Partition:
-    """Free and prescribed DOF of the bird, found by joint names.
-
-    ``free_dofs``: the root's DOF the physics integrates (6 free, 3 posed);
-    ``pres_dofs`` / ``pres_qpos``: the prescribed DOF and their qpos addresses;
-    ``wing_dofs``: the wings' joints (their power is the wings' mechanical power)."""
-
-    free_dofs: np.ndarray
-    pres_dofs: np.ndarray
-    pres_qpos: np.ndarray
-    wing_dofs: np.ndarray
-    free_rotation: bool
-
-
-def partition(m: mujoco.MjModel, attitude: str) -> Partition:
-    """The partition of ``m``'s DOF for ``attitude`` ("free" or "posed")."""
-    root = m.joint("root")
-    if int(root.type[0]) != int(mujoco.mjtJoint.mjJNT_FREE):
-        raise BirdsimError(
-            "joint 'root' is not free; allowed: a model built by birdsim.mujoco.model"
-        )
-    r_dof, r_q = int(m.jnt_dofadr[root.id]), int(m.jnt_qposadr[root.id])
-    wing_dofs, wing_q = [], []
-    for j in range(m.njnt):
-        if j == root.id:
-            continue
-        name = m.joint(j).name
-        if not name.startswith(("r_", "l_")):
-            raise BirdsimError(f"joint {name!r} is neither the root nor a wing joint")
-        nv = {0: 6, 1: 3, 2: 1, 3: 1}[int(m.jnt_type[j])]
-        nq = {0: 7, 1: 4, 2: 1, 3: 1}[int(m.jnt_type[j])]
-        wing_dofs += range(int(m.jnt_dofadr[j]), int(m.jnt_dofadr[j]) + nv)
-        wing_q += range(int(m.jnt_qposadr[j]), int(m.jnt_qposadr[j]) + nq)
-    free = attitude == "free"
-    n_free = 6 if free else 3
-    free_dofs = np.arange(r_dof, r_dof + n_free)
-    pres_dofs = list(range(r_dof + n_free, r_dof + 6)) + wing_dofs
-    pres_q = ([] if free else list(range(r_q + 3, r_q + 7))) + wing_q
-    return Partition(free_dofs, np.array(pres_dofs), np.array(pres_q), np.array(wing_dofs), free)
-
-
-def _as_slice(idx: np.ndarray) -> slice | np.ndarray:
-    """A contiguous index array as a slice (numpy views instead of copies)."""
-    if len(idx) and np.array_equal(idx, np.arange(idx[0], idx[0] + len(idx))):
-        return slice(int(idx[0]), int(idx[0]) + len(idx))
-    return idx
 
 
 def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -288,7 +241,7 @@ class FreeBird:
         m.opt.wind[:] = wind
         M = self._M
         mass = self.total_mass
-        grav = np.array(m.opt.gravity)
+        weight = mass * np.array(m.opt.gravity)
         qpos, qvel, qfrc_applied, qfrc_passive, qfrc_bias, com = (
             d.qpos,
             d.qvel,
@@ -309,61 +262,91 @@ class FreeBird:
         torso = self.torso
         step1, step2, full_m = mujoco.mj_step1, mujoco.mj_step2, mujoco.mj_fullM
         inv = np.linalg.inv
-        proj = self.projection_max
-        applied_max = self.root_applied_max
         project = self.config.momentum_projection
-        xmat, xpos = d.xmat, d.xpos
-        for k in range(pres.qpos.shape[0]):
-            qpos[Pq] = pres.qpos[k, Pq]
-            qvel[P] = pres.qvel[k, P]
-            step1(m, d)
-            full_m(m, d, M)
-            R = xmat[torso].reshape(3, 3)
-            arm = com[torso] - xpos[torso]
-            m_inv = inv(M[FF])  # one factorisation for the projection and a_F
-            if project:
-                dx = self.X - com[torso]
-                qpos[:3] += dx
-                dp = np.zeros(len(part.free_dofs))
-                dp[:3] = self.P - M[:3] @ qvel
+        xmat, xpos, xfrc = d.xmat, d.xpos, d.xfrc_applied
+        n = pres.qpos.shape[0]
+        nf = len(part.free_dofs)
+        if free_rot and step_kernel.AVAILABLE and F == slice(0, 6) and P == slice(6, m.nv):
+            # the same arithmetic compiled (birdsim.flight.step_kernel)
+            dmax, vmax = step_kernel.free_loop(self, pres, Pq, P, W, record, every, weight)
+            if project and n:
+                self.projection_max = max(self.projection_max, dmax, vmax * h)
+            self._check_finite()
+            return
+        # the rows of the prescription (views for slices) and the blocks of M (views)
+        pres_q, pres_v, pres_a = pres.qpos[:, Pq], pres.qvel[:, P], pres.qacc[:, P]
+        m_ff, m_fp, m_pf, m_pp = M[FF], M[FP], M[PF], M[PP]
+        m_lin, m_rot = M[:3], M[3:6]
+        com_t, xpos_t, r_t = com[torso], xpos[torso], xmat[torso].reshape(3, 3)
+        # |dx| and |dv| of every step, reduced at the end (max is exact in any order)
+        dxs, dvs = np.zeros((n, 3)), np.zeros((n, nf))
+        cb = self.cb
+        P_, X_, L_, time = self.P, self.X, self.L, self.time
+        try:
+            for k in range(n):
+                qpos[Pq] = pres_q[k]
+                qvel[P] = pres_v[k]
+                step1(m, d)
+                full_m(m, d, M)
+                arm = com_t - xpos_t if free_rot else None
+                m_inv = inv(m_ff)  # one factorisation for the projection and a_F
+                if project:
+                    dx = X_ - com_t
+                    qpos[:3] += dx
+                    p_lin = m_lin @ qvel
+                    if free_rot:
+                        dp = np.empty(nf)
+                        dp[:3] = P_ - p_lin
+                        l_now = r_t @ (m_rot @ qvel) - _cross(arm, p_lin)
+                        dp[3:] = r_t.T @ (L_ - l_now + _cross(arm, dp[:3]))
+                    else:
+                        dp = P_ - p_lin
+                    dv = m_inv @ dp
+                    qvel[F] += dv
+                    dxs[k] = dx
+                    dvs[k] = dv
+                f = qfrc_passive - qfrc_bias
+                a_p = pres_a[k]
+                a_f = m_inv @ (f[F] - m_fp @ a_p)
+                tau_p = m_pf @ a_f + m_pp @ a_p - f[P]
+                qfrc_applied[F] = 0.0
+                qfrc_applied[P] = tau_p
+                f_ext = qfrc_passive[:3] + weight
                 if free_rot:
-                    l_now = R @ (M[3:6] @ qvel) - _cross(arm, M[:3] @ qvel)
-                    dp[3:] = R.T @ (self.L - l_now + _cross(arm, dp[:3]))
-                dv = m_inv @ dp
-                qvel[F] += dv
-                proj = max(proj, float(np.max(np.abs(dx))), float(np.max(np.abs(dv))) * h)
-            f = qfrc_passive - qfrc_bias
-            a_p = pres.qacc[k, P]
-            a_f = m_inv @ (f[F] - M[FP] @ a_p)
-            tau_p = M[PF] @ a_f + M[PP] @ a_p - f[P]
-            qfrc_applied[:] = 0.0
-            qfrc_applied[P] = tau_p
-            f_ext = qfrc_passive[:3] + mass * grav
-            # the aero moment about the whole bird's centre of mass (world)
-            m_ext = R @ qfrc_passive[3:6] - _cross(arm, qfrc_passive[:3])
-            if free_rot:
-                applied_max = max(
-                    applied_max,
-                    float(np.max(np.abs(qfrc_applied[F]))),
-                    float(np.max(np.abs(d.xfrc_applied))),
-                )
-            if record is not None and k % every == 0:
-                power = float(qfrc_applied[W] @ qvel[W])  # both wings' joints
+                    # the aero moment about the whole bird's centre of mass (world)
+                    m_ext = r_t @ qfrc_passive[3:6] - _cross(arm, qfrc_passive[:3])
+                    if qfrc_applied[F].any() or xfrc.any():
+                        self.root_applied_max = max(
+                            self.root_applied_max,
+                            float(np.max(np.abs(qfrc_applied[F]))),
+                            float(np.max(np.abs(xfrc))),
+                        )
+                if record is not None and k % every == 0:
+                    power = float(qfrc_applied[W] @ qvel[W])  # both wings' joints
+                    if free_rot:
+                        moment = C_SEED * (r_t.T @ m_ext)
+                    else:  # the hidden torque that holds the posed orientation
+                        moment = C_SEED * qfrc_applied[3:6]
+                    tail = C_SEED * cb.tail_force_body
+                    record.append((time, qpos.copy(), qvel.copy(), moment, f_ext, power, tail))
+                step2(m, d)
+                P_ = P_ + h * f_ext
+                X_ = X_ + h * P_ / mass
                 if free_rot:
-                    moment = C_SEED * (R.T @ m_ext)
-                else:  # the hidden torque that holds the posed orientation
-                    moment = C_SEED * qfrc_applied[3:6]
-                tail = C_SEED * self.cb.tail_force_body
-                record.append((self.time, qpos.copy(), qvel.copy(), moment, f_ext, power, tail))
-            step2(m, d)
-            self.P = self.P + h * f_ext
-            self.X = self.X + h * self.P / mass
-            if free_rot:
-                self.L = self.L + h * m_ext
-            self.time += h
-        self.projection_max = proj
-        self.root_applied_max = applied_max
-        if not (np.all(np.isfinite(qpos)) and np.all(np.isfinite(qvel))):
+                    L_ = L_ + h * m_ext
+                time += h
+        finally:
+            self.P, self.X, self.L, self.time = P_, X_, L_, time
+        if project and n:
+            self.projection_max = max(
+                self.projection_max,
+                float(np.max(np.abs(dxs))),
+                float(np.max(np.abs(dvs))) * h,
+            )
+        self._check_finite()
+
+    def _check_finite(self) -> None:
+        if not (np.all(np.isfinite(self.d.qpos)) and np.all(np.isfinite(self.d.qvel))):
             raise FlightError(
                 f"the simulation diverged at t={self.time:.3f} (reduced time): non-finite state"
             )

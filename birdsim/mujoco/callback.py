@@ -24,6 +24,7 @@ runs four times per step.  Do not disable both spring and damper
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
 from contextlib import contextmanager
 
@@ -83,6 +84,19 @@ class AeroCallback:
         # m5: the hand's area follows the wrist flexion (physics.m5.area_factor)
         self.fold_qpos = fold_area_joints(m, model_name, sites)
         self._vel = np.zeros((len(sites), 6))
+        # per-site arguments of the MuJoCo calls, made once (the callback runs every step)
+        self._site_list = [int(i) for i in self.site_ids]
+        self._body_list = [int(i) for i in self.body_ids]
+        self._vel_rows = [self._vel[k] for k in range(len(sites))]
+        self._wind = m.opt.wind  # a view of the model's wind (written in place by its users)
+        self._zero3 = np.zeros(3)
+        self._force = np.zeros(3)
+        #: the per-element arithmetic on Python floats: a polar whose force_scalar is
+        #: defined with the force_panel it uses (a subclass that overrides force_panel
+        #: only gets the array path)
+        cls = type(self.bird.polar)
+        owner = next((c for c in cls.__mro__ if "force_scalar" in c.__dict__), None)
+        self._scalar = owner is not None and cls.force_panel is owner.__dict__.get("force_panel")
         self._tvel = np.zeros(6)
         self.single = bool(np.all(self.offsets == 0.0))
         self._zero_torque = np.zeros((len(sites), 3))
@@ -109,15 +123,45 @@ class AeroCallback:
         if not self.enabled or m._address != self.model._address:
             return
         self.calls += 1
-        polar, rho = self.bird.polar, self.bird.rho
-        wind = m.opt.wind
-        for k, sid in enumerate(self.site_ids):
-            mujoco.mj_objectVelocity(m, d, _SITE, int(sid), self._vel[k], 0)
-        xmat = d.site_xmat[self.site_ids].reshape(-1, 3, 3)  # columns: site axes in world
+        object_velocity = mujoco.mj_objectVelocity
+        for sid, row in zip(self._site_list, self._vel_rows):
+            object_velocity(m, d, _SITE, sid, row, 0)
         areas = self.areas
         if self.fold_qpos is not None:
             areas = self.areas * fold_area_scale(d.qpos, self.fold_qpos, self.bird)[:, None]
-        ang, lin = self._vel[:, :3], self._vel[:, 3:] - wind
+        if self.single and self._scalar:
+            self._wings_scalar(m, d, areas)
+        else:
+            self._wings(m, d, areas)
+        if self.body_drag:
+            self._apply_body_drag(m, d)
+        if self.tail:
+            self._apply_tail(m, d)
+
+    def _wings_scalar(self, m: mujoco.MjModel, d: mujoco.MjData, areas: np.ndarray) -> None:
+        """The one-element-per-panel wings on Python floats: the numpy path's operations
+        in its order (``xmat^T v`` summed as numpy's small stacked matmul sums it), so
+        the same forces (``tests/test_step_kernel.py``), at a third of the cost."""
+        force_scalar, rho = self.bird.polar.force_scalar, self.bird.rho
+        w0, w1, w2 = self._wind.tolist()
+        xl = d.site_xmat[self.site_ids].tolist()
+        pos = d.site_xpos[self.site_ids]
+        apply_ft, passive, buf, zero = mujoco.mj_applyFT, d.qfrc_passive, self._force, self._zero3
+        for k, (v, x, area) in enumerate(zip(self._vel.tolist(), xl, areas[:, 0].tolist())):
+            l0, l1, l2 = v[3] - w0, v[4] - w1, v[5] - w2
+            # seed panel axes = C (site axes): vx = local x, vz = -local z
+            vx = l0 * x[0] + l1 * x[3] + l2 * x[6]
+            vz = -(l0 * x[2] + l1 * x[5] + l2 * x[8])
+            fx, fz = force_scalar(vx, vz, area, rho)
+            buf[0] = fx * x[0] - fz * x[2]
+            buf[1] = fx * x[3] - fz * x[5]
+            buf[2] = fx * x[6] - fz * x[8]
+            apply_ft(m, d, buf, zero, pos[k], self._body_list[k], passive)
+
+    def _wings(self, m: mujoco.MjModel, d: mujoco.MjData, areas: np.ndarray) -> None:
+        polar, rho = self.bird.polar, self.bird.rho
+        xmat = d.site_xmat[self.site_ids].reshape(-1, 3, 3)  # columns: site axes in world
+        lin = self._vel[:, 3:] - self._wind
         if self.single:  # one element per panel, at the site
             local = (lin[:, None, :] @ xmat)[:, 0, :]  # (K, 3) = xmat^T v
             # seed panel axes = C (site axes): vx = local x, vz = -local z
@@ -125,6 +169,7 @@ class AeroCallback:
             force = fx[:, None] * xmat[:, :, 0] - fz[:, None] * xmat[:, :, 2]
             torque = self._zero_torque
         else:
+            ang = self._vel[:, :3]
             r = xmat[:, None, :, 1] * self.offsets[:, :, None]  # (K, S, 3) site -> element
             v = lin[:, None, :] + _cross(ang[:, None, :], r)  # element velocity rel. to air
             local = np.einsum("kji,ksj->ksi", xmat, v)
@@ -133,23 +178,21 @@ class AeroCallback:
             force = f.sum(axis=1)
             torque = _cross(r, f).sum(axis=1)
         pos = d.site_xpos[self.site_ids]
-        for k in range(len(self.site_ids)):
-            mujoco.mj_applyFT(
-                m, d, force[k], torque[k], pos[k], int(self.body_ids[k]), d.qfrc_passive
-            )
-        if self.body_drag:
-            self._apply_body_drag(m, d)
-        if self.tail:
-            self._apply_tail(m, d)
+        apply_ft, passive = mujoco.mj_applyFT, d.qfrc_passive
+        for k, body in enumerate(self._body_list):
+            apply_ft(m, d, force[k], torque[k], pos[k], body, passive)
 
     def _apply_tail(self, m: mujoco.MjModel, d: mujoco.MjData) -> None:
         mujoco.mj_objectVelocity(m, d, _SITE, self.tail_site, self._tailvel, 1)
         xmat = d.site_xmat[self.tail_site].reshape(3, 3)  # the torso's axes
-        vel_body = self._tailvel[3:] - xmat.T @ m.opt.wind  # local frame (flg_local=1)
+        # the velocity in the local frame (flg_local=1): v - xmat^T wind, summed as
+        # numpy's matmul of a transposed matrix sums it
+        x, (w0, w1, w2), v = xmat.tolist(), self._wind.tolist(), self._tailvel.tolist()
+        vel_body = [v[3 + i] - (x[0][i] * w0 + x[1][i] * w1 + x[2][i] * w2) for i in range(3)]
         b = self.bird
         ctl = self.tail_controls
         if self._tail_frame_for is not ctl:  # the frame changes only with the controls
-            self._tail_frame = tail_frame(ctl.clipped())
+            self._tail_frame = tail_frame(ctl.clipped()).tolist()
             self._tail_frame_for = ctl
         f_body, self.tail_alpha = tail_force(
             vel_body,
@@ -164,7 +207,7 @@ class AeroCallback:
             m,
             d,
             xmat @ f_body,
-            np.zeros(3),
+            self._zero3,
             d.site_xpos[self.tail_site],
             self.torso_body,
             d.qfrc_passive,
@@ -172,20 +215,24 @@ class AeroCallback:
 
     def _apply_body_drag(self, m: mujoco.MjModel, d: mujoco.MjData) -> None:
         mujoco.mj_objectVelocity(m, d, _SITE, self.torso_site, self._tvel, 0)
-        u = self._tvel[3:] - m.opt.wind
-        speed = float(np.linalg.norm(u))
+        w0, w1, w2 = self._wind.tolist()
+        v = self._tvel.tolist()
+        u0, u1, u2 = v[3] - w0, v[4] - w1, v[5] - w2
+        # |u| and xmat^T u summed as np.linalg.norm and numpy's matmul sum them
+        speed = math.sqrt(u0 * u0 + u1 * u1 + u2 * u2)
         if speed == 0.0:
             return
-        xmat = d.site_xmat[self.torso_site].reshape(3, 3)
-        loc = xmat.T @ u
-        attack = np.arctan2(-loc[2], loc[0])  # theta - gamma (seed body axes: z down)
+        x = d.site_xmat[self.torso_site].tolist()
+        loc0 = x[0] * u0 + x[3] * u1 + x[6] * u2
+        loc2 = x[2] * u0 + x[5] * u1 + x[8] * u2
+        attack = np.arctan2(-loc2, loc0)  # theta - gamma (seed body axes: z down)
         # |sin| keeps it a drag (never a thrust) when the body meets the air nose-down or backwards
         drag = body_drag_magnitude(speed, attack, self.bird.rho, self.bird.body_drag_area)
         mujoco.mj_applyFT(
             m,
             d,
-            -drag * u / speed,
-            np.zeros(3),
+            np.array([-drag * u0 / speed, -drag * u1 / speed, -drag * u2 / speed]),
+            self._zero3,
             d.site_xpos[self.torso_site],
             self.torso_body,
             d.qfrc_passive,

@@ -27,6 +27,7 @@ import mujoco
 import numpy as np
 
 from birdsim.errors import BirdsimError
+from birdsim.mujoco.ball import ball_state
 from birdsim.mujoco.model import SIDES, hinge_axis
 from birdsim.physics.bird import Bird
 from birdsim.physics.kinematics import JOINTS, get_model, validate_params
@@ -54,60 +55,15 @@ class Trajectory:
     qacc: np.ndarray
 
 
-def _rotation_matrices(axis: np.ndarray, angle: np.ndarray) -> np.ndarray:
-    """Active rotations by ``angle`` (T,) about unit ``axis`` (3,): (T, 3, 3) (Rodrigues)."""
-    k = np.array([[0.0, -axis[2], axis[1]], [axis[2], 0.0, -axis[0]], [-axis[1], axis[0], 0.0]])
-    s, c = np.sin(angle)[:, None, None], np.cos(angle)[:, None, None]
-    return np.eye(3) + s * k + (1.0 - c) * (k @ k)
-
-
-def _quat_mul(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    w1, x1, y1, z1 = np.moveaxis(a, -1, 0)
-    w2, x2, y2, z2 = np.moveaxis(b, -1, 0)
-    return np.stack(
-        [
-            w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2,
-            w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
-            w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2,
-            w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2,
-        ],
-        axis=-1,
-    )
-
-
-def ball_state(
-    axes: Sequence[np.ndarray],
-    q: Sequence[np.ndarray],
-    qd: Sequence[np.ndarray],
-    qdd: Sequence[np.ndarray],
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Quaternion (T, 4), child-frame angular velocity and acceleration (T, 3) of the
-    intrinsic composition of rotations by ``q[k]`` about ``axes[k]`` (outermost first)."""
-    n = len(axes)
-    t = np.shape(q[0])[0]
-    quat = np.tile([1.0, 0.0, 0.0, 0.0], (t, 1))
-    for a, ang in zip(axes, q):
-        half = 0.5 * np.asarray(ang)
-        quat = _quat_mul(
-            quat, np.concatenate([np.cos(half)[:, None], np.sin(half)[:, None] * a], axis=-1)
-        )
-    rots = [_rotation_matrices(a, np.asarray(ang)) for a, ang in zip(axes, q)]
-    v = [None] * n
-    b = np.tile(np.eye(3), (t, 1, 1))  # A_{k+1} .. A_n, built from the inside out
-    for k in range(n - 1, -1, -1):
-        v[k] = np.einsum("tji,j->ti", b, axes[k])  # B^T a_k
-        b = rots[k] @ b
-    alpha = np.zeros((t, 3))
-    outer = np.zeros((t, 3))  # W_k = sum_{j>k} v_j qd_j
-    for k in range(n - 1, -1, -1):
-        rate = np.asarray(qd[k])[:, None]
-        alpha += v[k] * np.asarray(qdd[k])[:, None] - rate * np.cross(outer, v[k])
-        outer = outer + v[k] * rate
-    omega = outer
-    return quat, omega, alpha
-
-
-def _as_series(value: object, t: int, name: str) -> np.ndarray:
+def _as_series(value: object, t: int, name: str, check: bool = True) -> np.ndarray:
+    """``value`` as ``t`` samples; ``check=False`` leaves the finiteness of a float array
+    of that shape to the caller (wing_arrays checks its outputs once)."""
+    if type(value) is np.ndarray and value.dtype == np.float64 and value.shape == (t,):
+        if check and not np.isfinite(value).all():
+            raise BirdsimError(
+                f"joint {name} is not finite; allowed: finite angles (rad) or heave (length)"
+            )
+        return value  # read only by the callers (they copy into qpos/qvel/qacc)
     try:
         a = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
@@ -125,6 +81,40 @@ def _check_names(joint_values: Mapping[str, object], arg: str) -> None:
     for k in joint_values:
         if k not in CORE_JOINTS:
             raise BirdsimError(f"{arg} names joint {k!r}; allowed: {', '.join(CORE_JOINTS)}")
+
+
+_PLANS: dict[int, tuple[mujoco.MjModel, dict]] = {}
+
+
+def _plan(m: mujoco.MjModel) -> dict:
+    """Per side: the heave's qpos/dof address, the shoulder's axes and addresses, and
+    every hinge's (None where the model lacks it), looked up once per model."""
+    hit = _PLANS.get(id(m))
+    if hit is not None and hit[0] is m:
+        return hit[1]
+    plan = {}
+    for side in SIDES:
+        heave = m.joint(f"{side}_heave").id
+        sh = m.joint(f"{side}_shoulder").id
+        hinges = []
+        for j in HINGES + FOLD_HINGES:
+            jid = mujoco.mj_name2id(m, _JOINT, f"{side}_{j}")
+            if j in FOLD_HINGES and jid < 0:
+                hinges.append((j, None))
+            else:
+                jid = m.joint(f"{side}_{j}").id
+                hinges.append((j, (int(m.jnt_qposadr[jid]), int(m.jnt_dofadr[jid]))))
+        plan[side] = (
+            int(m.jnt_qposadr[heave]),
+            int(m.jnt_dofadr[heave]),
+            [hinge_axis(side, JOINTS[j].axis) for j in SHOULDER],
+            (int(m.jnt_qposadr[sh]), int(m.jnt_dofadr[sh])),
+            hinges,
+        )
+    if len(_PLANS) > 64:
+        _PLANS.clear()
+    _PLANS[id(m)] = (m, plan)
+    return plan
 
 
 def wing_arrays(
@@ -152,12 +142,15 @@ def wing_arrays(
         ):
             _check_names(vals, arg)
     t = samples
+    plan = _plan(m)
+    zeros = np.zeros(t)
 
-    def get(d: Mapping[str, object] | None, k: str) -> np.ndarray:
-        out = _as_series((d or {}).get(k, 0.0), t, k)
+    def get(d: Mapping[str, object] | None, k: str, check: bool = False) -> np.ndarray:
+        d = d or {}
+        out = _as_series(d[k], t, k, check) if k in d else zeros
         for extra, into in SAME_AXIS.items():
-            if into == k and extra in (d or {}):
-                out = out + _as_series(d[extra], t, extra)  # type: ignore[index]
+            if into == k and extra in d:
+                out = out + _as_series(d[extra], t, extra, check)  # type: ignore[index]
         return out
 
     qpos = np.tile(m.qpos0, (t, 1))
@@ -165,33 +158,37 @@ def wing_arrays(
     qacc = np.zeros((t, m.nv))
     for side in SIDES:
         angles, rates, accelerations = sides[side]
-        jid = m.joint(f"{side}_heave").id
-        qpos[:, m.jnt_qposadr[jid]] = get(angles, "heave")
-        qvel[:, m.jnt_dofadr[jid]] = get(rates, "heave")
-        qacc[:, m.jnt_dofadr[jid]] = get(accelerations, "heave")
-        axes = [hinge_axis(side, JOINTS[j].axis) for j in SHOULDER]
-        quat, omega, alpha = ball_state(
-            axes,
-            [get(angles, j) for j in SHOULDER],
-            [get(rates, j) for j in SHOULDER],
-            [get(accelerations, j) for j in SHOULDER],
-        )
-        jid = m.joint(f"{side}_shoulder").id
-        qa, da = m.jnt_qposadr[jid], m.jnt_dofadr[jid]
-        qpos[:, qa : qa + 4] = quat
-        qvel[:, da : da + 3] = omega
-        qacc[:, da : da + 3] = alpha
-        for j in HINGES + FOLD_HINGES:
-            if j in FOLD_HINGES and mujoco.mj_name2id(m, _JOINT, f"{side}_{j}") < 0:
-                if np.any(get(angles, j)) or np.any(get(rates, j)):
+        hq, hd, axes, (sq, sd), hinges = plan[side]
+        qpos[:, hq] = get(angles, "heave")
+        qvel[:, hd] = get(rates, "heave")
+        qacc[:, hd] = get(accelerations, "heave")
+        with np.errstate(invalid="ignore"):  # a non-finite input is named below
+            quat, omega, alpha = ball_state(
+                axes,
+                [get(angles, j) for j in SHOULDER],
+                [get(rates, j) for j in SHOULDER],
+                [get(accelerations, j) for j in SHOULDER],
+            )
+        qpos[:, sq : sq + 4] = quat
+        qvel[:, sd : sd + 3] = omega
+        qacc[:, sd : sd + 3] = alpha
+        for j, adr in hinges:
+            if adr is None:  # a model without m5's joints
+                if (j in (angles or {}) and np.any(get(angles, j, True))) or (
+                    j in (rates or {}) and np.any(get(rates, j, True))
+                ):
                     raise BirdsimError(
                         f"joint {j} is not in this model; allowed: m5's MJCF (build_model('m5'))"
                     )
-                continue  # a model without m5's joints
-            jid = m.joint(f"{side}_{j}").id
-            qpos[:, m.jnt_qposadr[jid]] = get(angles, j)
-            qvel[:, m.jnt_dofadr[jid]] = get(rates, j)
-            qacc[:, m.jnt_dofadr[jid]] = get(accelerations, j)
+                continue
+            qpos[:, adr[0]] = get(angles, j)
+            qvel[:, adr[1]] = get(rates, j)
+            qacc[:, adr[1]] = get(accelerations, j)
+    if not (np.isfinite(qpos).all() and np.isfinite(qvel).all() and np.isfinite(qacc).all()):
+        for values in sides.values():  # name the joint whose series is not finite
+            for d in values:
+                for k, v in (d or {}).items():
+                    _as_series(v, t, k)
     return qpos, qvel, qacc
 
 

@@ -84,18 +84,20 @@ def tail_force(
     span: float,
     length: float,
     rho: float,
-    frame: np.ndarray | None = None,
+    frame: np.ndarray | list | None = None,
 ) -> tuple[np.ndarray, float]:
     """Force on the tail (body axes) for the tail's velocity through the air
     ``vel_body`` (body axes), and the angle of attack used (rad, capped).  ``frame``:
-    :func:`tail_frame` of the clipped controls, when the caller has it already."""
+    :func:`tail_frame` of the clipped controls (or its rows as lists), when the caller
+    has it already."""
     spread = min(max(float(controls.spread), SPREAD_MIN), 1.0)
     if frame is None:
         frame = tail_frame(controls.clipped())
+    fr = frame.tolist() if isinstance(frame, np.ndarray) else frame  # rows, as floats
     v0, v1, v2_ = float(vel_body[0]), float(vel_body[1]), float(vel_body[2])
     # tail axes: chord, span, normal (frame^T v)
-    ux = frame[0, 0] * v0 + frame[1, 0] * v1 + frame[2, 0] * v2_
-    uz = frame[0, 2] * v0 + frame[1, 2] * v1 + frame[2, 2] * v2_
+    ux = fr[0][0] * v0 + fr[1][0] * v1 + fr[2][0] * v2_
+    uz = fr[0][2] * v0 + fr[1][2] * v1 + fr[2][2] * v2_
     v2 = ux * ux + uz * uz
     if v2 == 0.0:
         return np.zeros(3), 0.0
@@ -112,7 +114,7 @@ def tail_force(
         drag = 0.5 * lift * a + profile
         fx = (lift * -uz - drag * ux) / v
         fz = (lift * ux - drag * uz) / v
-    return frame[:, 0] * fx + frame[:, 2] * fz, a
+    return np.array([fr[i][0] * fx + fr[i][2] * fz for i in range(3)]), a
 
 
 __all__ = [

@@ -89,6 +89,19 @@ class SeedPolar(Polar):
         fz = -inv_u * vz * (lift2 * vx2 + drag_u2)
         return fx, fz
 
+    def force_scalar(self, vx: float, vz: float, area: float, rho: float) -> tuple[float, float]:
+        """:meth:`force_panel` for one element, on Python floats (the same operations in
+        the same order: the same numbers, without numpy's per-call cost; the MuJoCo
+        callback's per-step path)."""
+        vx2, vz2 = vx * vx, vz * vz
+        u2 = vx2 + vz2
+        u = math.sqrt(u2)
+        num = 0.5 * rho * area
+        inv_u = num / u if u > 0.0 else 0.0
+        drag_u2 = self.cd0 * u2 + self.cd_max * vz2
+        lift2 = 2.0 * self.cl_max
+        return inv_u * vx * (lift2 * vz2 - drag_u2), -inv_u * vz * (lift2 * vx2 + drag_u2)
+
 
 @dataclass(frozen=True)
 class RoboflyPolar(Polar):
