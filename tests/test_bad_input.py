@@ -432,7 +432,9 @@ def template(tmp_path_factory: pytest.TempPathFactory) -> Path:
     (w / "path_heading_str.toml").write_text(speed_path + 'z = 6\nheading = "left"\n')
     (w / "path_turn.toml").write_text(speed_path + "z = 6\nheading = 1.0\n")
     (w / "path_low3d.toml").write_text(speed_path + "z = 0.4\nheading = 1.0\n")
-    pos_path = "[[keyframe]]\nt = 0\nx = 2\ny = 0.3\nz = 1.2\n[[keyframe]]\nt = 4\nx = 10\nz = 1.2\n"
+    pos_path = (
+        "[[keyframe]]\nt = 0\nx = 2\ny = 0.3\nz = 1.2\n[[keyframe]]\nt = 4\nx = 10\nz = 1.2\n"
+    )
     (w / "path_perch3d.toml").write_text(pos_path + "y = 0.3\n")
     (w / "path_y_nan.toml").write_text(pos_path + "y = nan\n")
     (w / "path_bank.toml").write_text("[[keyframe]]\nt = 0\nV = 0.3\nbank = 0.5\nz = 6\n")
