@@ -1,5 +1,7 @@
 """birdsim: physics-based animation of flapping bird flight (MuJoCo + blade-element aerodynamics)."""
 
+# first, before numpy loads OpenBLAS: its kernels pinned (birdsim/blas_kernel.py)
+import birdsim.blas_kernel  # noqa: F401  isort: skip
 from birdsim.errors import BirdsimError, ParameterError, UnknownModelError
 from birdsim.physics.aero import Polar, RoboflyPolar, SeedPolar
 from birdsim.physics.bird import Bird

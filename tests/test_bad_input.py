@@ -237,6 +237,14 @@ CASES: list[tuple[str, Any, str] | Any] = [
     # issue 28 item 3: the keyframe that is itself below the floor is named, else the segment
     ("fly/path-keyframe-below-floor", ["fly", "{w}/path_kf2_low.toml", "--quiet"], "path 'path_kf2_low': keyframe 2 (t=4) is below the floor clearance"),
     ("fly/path-segment-below-floor", ["fly", "{w}/path_dip.toml", "--quiet"], "the segment from keyframe 2 (t=4) to keyframe 3 (t=8) goes below the floor clearance"),
+    # issue 23 item 1: paths in 3-D
+    ("fly/path-heading-not-a-number", ["fly", "{w}/path_heading_str.toml", "--quiet"], "keyframe 2: heading='left' is not a finite number; allowed: a finite number of radians"),
+    ("fly/path-y-nan", ["fly", "{w}/path_y_nan.toml", "--quiet"], "keyframe 2: y=nan is not a finite number; allowed"),
+    ("fly/path-key-unknown", ["fly", "{w}/path_bank.toml", "--quiet"], "keyframe 1: key 'bank' is unknown; allowed: t, x, y, V, heading"),
+    ("fly/path-3d-through-perch", ["fly", "{w}/path_perch3d.toml", "--quiet"], "through the perch (within 0.55 of x = 6, y = 0"),
+    ("fly/path-3d-below-floor", ["fly", "{w}/path_low3d.toml", "--quiet"], "keyframe 2 (t=4) is below the floor clearance"),
+    ("fly/path-turning-not-yet", ["fly", "{w}/path_turn.toml", "--quiet"], "keyframe 2 gives heading, a path that turns out of the vertical plane"),
+    ("render/path-turning-not-yet", ["render", "{w}/path_turn.toml", "--table", "{w}/table.npz"], "keyframe 2 gives heading, a path that turns out of the vertical plane"),
     ("fly/bird-missing", ["fly", "cruise", "--quiet", "--bird", "{w}/nope.toml"], "--bird '{w}/nope.toml' does not exist"),
     ("render/bird-missing", [*RENDER, "--bird", "{w}/nope.toml"], "--bird '{w}/nope.toml' does not exist"),
     ("export/bird-missing", ["export", "cruise", "--format", "csv", "--out", "{w}/x.csv", "--bird", "{w}/nope.toml"], "--bird '{w}/nope.toml' does not exist"),
@@ -420,6 +428,16 @@ def template(tmp_path_factory: pytest.TempPathFactory) -> Path:
         "duration = 8\n[[keyframe]]\nt = 0\nx = 0\nz = 1.2\n[[keyframe]]\nt = 4\nx = 1\nz = 1.2\nvz = -2\n"
         "[[keyframe]]\nt = 8\nx = 2\nz = 6\n"
     )
+    speed_path = "[[keyframe]]\nt = 0\nV = 0.3\nz = 6\n[[keyframe]]\nt = 4\nV = 0.3\n"
+    (w / "path_heading_str.toml").write_text(speed_path + 'z = 6\nheading = "left"\n')
+    (w / "path_turn.toml").write_text(speed_path + "z = 6\nheading = 1.0\n")
+    (w / "path_low3d.toml").write_text(speed_path + "z = 0.4\nheading = 1.0\n")
+    pos_path = (
+        "[[keyframe]]\nt = 0\nx = 2\ny = 0.3\nz = 1.2\n[[keyframe]]\nt = 4\nx = 10\nz = 1.2\n"
+    )
+    (w / "path_perch3d.toml").write_text(pos_path + "y = 0.3\n")
+    (w / "path_y_nan.toml").write_text(pos_path + "y = nan\n")
+    (w / "path_bank.toml").write_text("[[keyframe]]\nt = 0\nV = 0.3\nbank = 0.5\nz = 6\n")
     (w / "bird_heavy.toml").write_text("mass = 1e300\ngravity = 0.012\n")
     (w / "man_huge_v.toml").write_text("[[keyframe]]\nt = 0\nFx = 0\nFz = -0.3\nV = 1e300\n")
     (w / "man_huge_z.toml").write_text("[[keyframe]]\nt = 0\nFx = 0\nFz = -0.3\nV = 0\nz = 1e300\n")

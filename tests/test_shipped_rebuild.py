@@ -20,6 +20,7 @@ import time
 import numpy as np
 import pytest
 
+from birdsim.blas_kernel import blas_kernels
 from birdsim.tables.build import build_table, config_from_meta
 from birdsim.tables.lookup import load_table
 from birdsim.tables.runner import run_pinned
@@ -43,8 +44,44 @@ def test_every_table_is_listed():
 MIN_OK = {"m5": 2, "pigeon-m5": 17}
 
 
+#: Tables built before their provenance recorded the OpenBLAS kernels were built on
+#: SkylakeX kernels (an AVX-512 Xeon choosing them itself): they rebuild bitwise with
+#: OPENBLAS_CORETYPE=SkylakeX and up to 1.47 rad apart on Haswell's (birdsim/blas_kernel.py).
+UNRECORDED_KERNELS = ["SkylakeX"]
+
+
+def _same_kernels(t) -> None:
+    """Skip, saying why, where this process's OpenBLAS runs other kernels than the table
+    was built on: the rebuild is then not expected to be bitwise (a branch can flip)."""
+    built = t.meta.get("blas_kernels", UNRECORDED_KERNELS)
+    here = blas_kernels()
+    if here != built:
+        pytest.skip(f"table built on OpenBLAS kernels {built}, this process runs {here}")
+
+
+def test_birdsim_pins_the_haswell_kernels():
+    """In a fresh process without OPENBLAS_CORETYPE, importing birdsim first gives every
+    OpenBLAS (numpy's, scipy's) the Haswell kernels on a CPU with AVX2 and FMA."""
+    import os
+    import subprocess
+    import sys
+
+    from birdsim.blas_kernel import REQUIRED_FLAGS, cpu_flags
+
+    if not REQUIRED_FLAGS <= cpu_flags():
+        pytest.skip("the CPU has no AVX2 and FMA: OpenBLAS chooses")
+    env = {k: v for k, v in os.environ.items() if k != "OPENBLAS_CORETYPE"}
+    code = (
+        "import birdsim, numpy, scipy.linalg; from birdsim.blas_kernel import blas_kernels; "
+        "print(blas_kernels())"
+    )
+    out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True)
+    assert out.stdout.strip() == "['Haswell']", out.stderr
+
+
 def _rebuild_slice(stem: str) -> tuple[np.ndarray, np.ndarray, float]:
     t = load_table(PACKAGE_TABLES / f"{stem}.npz")
+    _same_kernels(t)
     rec = t.meta["reproduce"]
     assert re.fullmatch(r"[0-9a-f]{40}", t.meta["git_commit"]), t.meta["git_commit"]  # clean code
     cfg = config_from_meta(t)
@@ -76,6 +113,7 @@ def test_one_slice_of_the_shipped_table_rebuilds_to_1e_9_rad(stem):
 def test_the_whole_base_table_rebuilds_to_1e_9_rad():
     """Every pass (slices, V lines, backward passes, regularising pass), 1331 cells."""
     t = load_table(PACKAGE_TABLES / "base.npz")
+    _same_kernels(t)
     again = build_table(config_from_meta(t), jobs=2)
     assert np.max(np.abs(again.params - t.params)) <= 1e-9
     np.testing.assert_array_equal(again.status, t.status)

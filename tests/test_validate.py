@@ -28,7 +28,7 @@ from birdsim.validation.measurements import (
     load_measurements,
 )
 from birdsim.validation.run import DEFAULT_BIRD, load_flying_bird, validate
-from birdsim.validation.scorecard import score, verdict_for
+from birdsim.validation.scorecard import NOT_SIMULATED, score, verdict_for
 from birdsim.validation.trim import trim_sweep
 
 PIGEON_TOML = """
@@ -249,9 +249,22 @@ VERDICTS = {
 }
 
 
+#: The turning rows (issue 23 item 5): no turning flight yet, so "not yet simulated".
+TURNING_ROWS = {
+    "R11_force_in_body",
+    "R11_force_cone",
+    "HB07_turn_radius",
+    "HB07_heading_roll",
+    "WD98_bank_in_downstroke",
+}
+
+
 def test_pinned_scorecard(result) -> None:  # noqa: ANN001
     rows = {r.measurement.id: r for r in result.rows}
-    assert set(rows) == set(PINNED)
+    assert set(rows) == set(PINNED) | TURNING_ROWS
+    for rid in TURNING_ROWS:
+        assert rows[rid].birdsim is None and rows[rid].variants == {}
+        assert rows[rid].verdict == NOT_SIMULATED and rows[rid].birdsim_text == "not yet simulated"
     for rid, (value, tol) in PINNED.items():
         assert rows[rid].birdsim == pytest.approx(value, rel=tol, abs=1e-9), rid
         assert rows[rid].verdict.split(" ")[0] == VERDICTS.get(rid, "agrees"), (
@@ -480,3 +493,56 @@ def test_diagnosis_says_which_physics_closes_the_gap() -> None:
         )
     )
     assert "still the wrong sign" in trend and "induced velocity on closes" in trend
+
+
+# ---- turning rows (issue 23 item 5) -------------------------------------------------
+
+
+def test_turning_rows_are_cited_and_from_two_sources_at_least() -> None:
+    rows = [m for m in load_measurements() if m.id in TURNING_ROWS]
+    assert len(rows) == len(TURNING_ROWS)
+    assert len({(m.author, m.year) for m in rows}) >= 2
+    for m in rows:
+        assert m.compare.startswith("turn_") and m.url and "'" in m.note, m.id  # a quoted passage
+        assert "Not verified" in m.note, m.id  # what could not be read is said
+
+
+def test_turning_rows_print_not_yet_simulated_and_score_once_flown(
+    tmp_path: Path, pigeon: Path
+) -> None:
+    from birdsim.validation.page import render_html
+    from birdsim.validation.run import scorecard_text
+
+    src = default_path().read_text().splitlines()
+    keep = [src[0]] + [
+        line for line in src[1:] if line.startswith(("TD96_speed_max", *sorted(TURNING_ROWS)))
+    ]
+    data = tmp_path / "turning.csv"
+    data.write_text("\n".join(keep) + "\n")
+    bird = load_flying_bird(pigeon)
+    v = validate(bird, "m3", load_measurements(data), variants=False)  # as `birdsim validate`
+    obj = json.loads(json.dumps(v.obj))
+    by_id = {r["id"]: r for r in obj["rows"]}
+    assert set(by_id) == TURNING_ROWS | {"TD96_speed_max"}
+    for rid in TURNING_ROWS:
+        assert by_id[rid]["verdict"] == NOT_SIMULATED and by_id[rid]["birdsim"] is None
+    speeds = [p["speed"] for p in obj["power_curve"]]
+    assert speeds == [float(i) for i in range(23)]  # the turning rows add no speed
+    text = scorecard_text(v)
+    assert text.count("not yet simulated") == 2 * len(TURNING_ROWS)  # birdsim column + verdict
+    assert "not yet simulated" in render_html(v.obj, v.rows, "t")
+    # once a turning flight gives the values, the rows are scored like the others
+    ms = load_measurements(data)
+    flown = {
+        "turn_radius": 1.0,
+        "turn_force_fixed_in_body": 1.0,
+        "turn_bank_within_downstroke": 0.0,
+    }
+    rows = {r.measurement.id: r for r in score(ms, v.sweep, bird, variants=False, turning=flown)[0]}
+    assert rows["HB07_turn_radius"].verdict.startswith("agrees") and rows[
+        "HB07_turn_radius"
+    ].ratio == pytest.approx(1 / 0.92)
+    assert rows["R11_force_in_body"].verdict == "agrees (yes/no)"
+    assert rows["WD98_bank_in_downstroke"].verdict == "off (yes/no)"
+    assert rows["HB07_heading_roll"].verdict == NOT_SIMULATED
+    assert rows["R11_force_cone"].verdict == NOT_SIMULATED

@@ -4,20 +4,23 @@ A manoeuvre TOML file is a *path* when its ``[[keyframe]]`` tables give position
 speeds; it is a *force schedule* (:mod:`birdsim.flight.manoeuvre`, flown open loop) when
 they give ``Fx``/``Fz`` or when it has a ``[demands]`` table -- every file written for
 earlier versions keeps its meaning. A path file (times in wingbeats, lengths in semispans,
-x forward, z up, speeds in ``omega s``)::
+x forward, y to the bird's left at the start, z up, speeds in ``omega s``, headings in
+radians from +x towards +y, turn rates in rad per reduced time, i.e. ``V / R``)::
 
     name = "hop"                 # optional (default: the file stem)
     description = ""             # optional
     duration = 12                # optional (default: last keyframe + 1), wingbeats
     perch = "start"              # "start", "end", "both" or "" (optional)
-    x0 = 0.0                     # speed form only: x at the first keyframe (optional)
-    [[keyframe]]                 # position form: t, x, z ...
+    x0 = 0.0                     # speed form only: x, y at the first keyframe (optional)
+    y0 = 0.0
+    [[keyframe]]                 # position form: t, x, z (optional y, default 0) ...
     t = 0
     x = 6.0
     z = 1.67
-    vx = 0.0                     # optional slopes (omega s): vx, vz; default automatic
+    vx = 0.0                     # optional slopes (omega s): vx, vy, vz; default automatic
     regime = "take-off"          # optional overlay label
-    [[keyframe]]                 # ... or speed form: t, V, z (optional dV, vz)
+    [[keyframe]]                 # ... or speed form: t, V, z, optional heading (rad; a
+                                 # missing one keeps the previous), dV, turn_rate, vz
 """
 
 from __future__ import annotations
@@ -36,24 +39,48 @@ if sys.version_info >= (3, 11):
 else:  # pragma: no cover
     import tomli as tomllib
 
-PATH_KEYS = ("t", "x", "V", "z", "vx", "vz", "dV", "regime")
+PATH_KEYS = ("t", "x", "y", "V", "heading", "z", "vx", "vy", "vz", "dV", "turn_rate", "regime")
 FORCE_KEYS = ("Fx", "Fz")
 
 
-def get_flight(name_or_path: str) -> FlightPath | Manoeuvre:
+def get_flight(name_or_path: str, *, turning: bool = False) -> FlightPath | Manoeuvre:
     """A preset path by name, or a manoeuvre file (a path, or a force schedule).
 
+    Args:
+        name_or_path: a preset name or a .toml file.
+        turning: accept a path that leaves the vertical plane (y, heading). Off until the
+            bank-to-turn flight of issue 23 flies such paths: the commands that fly today
+            refuse them in one line rather than fly them in the x-z plane.
+
     Raises:
-        ManoeuvreError: unknown name, unreadable or invalid file (one line).
+        ManoeuvreError: unknown name, unreadable or invalid file, a 3-D path when
+            ``turning`` is off (one line).
     """
     if name_or_path in PATH_PRESETS:
         return PATH_PRESETS[name_or_path]
     p = Path(name_or_path)
     if p.suffix.lower() == ".toml" or p.exists():
-        return load_flight(p)
+        flight = load_flight(p)
+        if not turning and isinstance(flight, FlightPath) and flight.is_3d:
+            i, key = _turning_key(flight)
+            raise ManoeuvreError(
+                f"manoeuvre file {str(p)!r}: keyframe {i} gives {key}, a path that turns out "
+                "of the vertical plane, which this command cannot fly yet; allowed: y, vy, "
+                "heading, turn_rate, y0 all 0 (bank-to-turn flight: issue 23)"
+            )
+        return flight
     raise ManoeuvreError(
         f"manoeuvre {name_or_path!r} is unknown; allowed: {', '.join(PATH_PRESETS)} or a .toml file"
     )
+
+
+def _turning_key(flight: FlightPath) -> tuple[int, str]:
+    """The first keyframe (1-based) and key that take a path out of the vertical plane."""
+    for i, k in enumerate(flight.keyframes, 1):
+        for key in ("y", "vy", "heading", "turn_rate"):
+            if getattr(k, key):
+                return i, key
+    return 1, "y0"
 
 
 def load_flight(path: str | Path) -> FlightPath | Manoeuvre:
@@ -87,7 +114,7 @@ def load_flight(path: str | Path) -> FlightPath | Manoeuvre:
 
 
 def _path_from_dict(arg: str, stem: str, data: dict[str, Any]) -> FlightPath:
-    known = {"name", "description", "duration", "perch", "x0", "keyframe"}
+    known = {"name", "description", "duration", "perch", "x0", "y0", "keyframe"}
     unknown = sorted(set(data) - known)
     if unknown:
         raise ManoeuvreError(
@@ -113,11 +140,13 @@ def _path_from_dict(arg: str, stem: str, data: dict[str, Any]) -> FlightPath:
             if key not in row:
                 raise ManoeuvreError(f"{where}: {key} is missing; required: t, z and one of x or V")
         vals = {
-            k: _number(f"{where}: {k}", row[k]) for k in PATH_KEYS if k != "regime" and k in row
+            k: _number(f"{where}: {k}", row[k], _ALLOWED.get(k, "a finite number"))
+            for k in PATH_KEYS
+            if k != "regime" and k in row
         }
         regime = row.get("regime", "")
         if not isinstance(regime, str):
-            raise ManoeuvreError(f"{where}: regime={regime!r} is not a string")
+            raise ManoeuvreError(f"{where}: regime={regime!r} is not a string; allowed: a label")
         keyframes.append(PathKeyframe(regime=regime, **vals))
     last = keyframes[-1].t
     duration = (
@@ -131,7 +160,7 @@ def _path_from_dict(arg: str, stem: str, data: dict[str, Any]) -> FlightPath:
     perch = data.get("perch", "")
     if perch not in ("", "start", "end", "both"):
         raise ManoeuvreError(f"{arg}: perch={perch!r}; allowed: start, end, both or empty")
-    x0 = _number(f"{arg}: x0", data["x0"]) if "x0" in data else 0.0
+    x0, y0 = (_number(f"{arg}: {k}", data[k]) if k in data else 0.0 for k in ("x0", "y0"))
     description = data.get("description", "")
     try:
         return FlightPath(
@@ -142,14 +171,22 @@ def _path_from_dict(arg: str, stem: str, data: dict[str, Any]) -> FlightPath:
             tuple(keyframes),
             str(description),
             x0,
+            y0,
         )
     except PathError as exc:
         raise PathError(f"{arg}: {str(exc)}") from None
 
 
-def _number(arg: str, raw: Any) -> float:
+#: What a key allows, for its error line.
+_ALLOWED = {
+    "heading": "a finite number of radians (0 = +x, pi/2 = a quarter turn to the left)",
+    "turn_rate": "a finite number of radians per reduced time (V / R for a turn of radius R)",
+}
+
+
+def _number(arg: str, raw: Any, allowed: str = "a finite number") -> float:
     if isinstance(raw, bool) or not isinstance(raw, (int, float)) or not math.isfinite(raw):
-        raise ManoeuvreError(f"{arg}={raw!r} is not a finite number")
+        raise ManoeuvreError(f"{arg}={raw!r} is not a finite number; allowed: {allowed}")
     return float(raw)
 
 

@@ -93,7 +93,7 @@ def path_dict(flight: Any) -> dict[str, Any] | None:
     rows = []
     for k in flight.keyframes:
         row = {"t": k.t, "z": k.z}
-        for key in ("x", "V", "vx", "vz", "dV"):
+        for key in ("x", "y", "V", "heading", "vx", "vy", "vz", "dV", "turn_rate"):
             v = getattr(k, key)
             if v is not None:
                 row[key] = v
@@ -108,6 +108,8 @@ def path_dict(flight: Any) -> dict[str, Any] | None:
         out["perch"] = perch
     if flight.x0:
         out["x0"] = flight.x0
+    if flight.y0:
+        out["y0"] = flight.y0
     out["keyframe"] = rows
     return out
 

@@ -78,12 +78,14 @@ def finish_table(
     converged: np.ndarray | None = None,
 ) -> LookupTable:
     from birdsim import __version__
+    from birdsim.blas_kernel import blas_kernels
 
     chk = final_check(cfg, model, X)
     meta = {
         "force": "right wing + body drag (the dissertation's flapcost force), seed earth axes, Fz < 0 is up",
         "package_version": __version__,
         "git_commit": _git_commit(),
+        "blas_kernels": blas_kernels(),
         "built_at": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()),
         "config_sha": cfg.digest(),
         **{k: v for k, v in cfg.to_dict().items() if k != "bird"},

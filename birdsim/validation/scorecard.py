@@ -9,6 +9,9 @@ never from fitted constants.  Verdicts (stated on every row):
 * trends: the sign of birdsim's least-squares slope over the row's speed window against
   the measured sign -> ``same sign`` / ``opposite sign`` (not a ratio score).
 * yes/no: equal -> ``agrees``, else ``off``.  ``shown`` rows are not compared.
+* turning rows (:data:`birdsim.validation.measurements.TURNING_KEYS`): their value comes
+  from a turning flight (``score(..., turning=...)``); without one the row says
+  :data:`NOT_SIMULATED`, which is not a failure and gets no variants.
 
 Rows that are ``off`` are recomputed with the other polar and with induced velocity
 toggled (:data:`VARIANTS`), so the reader sees which physics closes the gap.
@@ -25,7 +28,7 @@ import numpy as np
 from birdsim.errors import BirdsimError
 from birdsim.physics.aero import RoboflyPolar, SeedPolar
 from birdsim.physics.bird import Bird
-from birdsim.validation.measurements import Measurement
+from birdsim.validation.measurements import TURNING_KEYS, Measurement
 from birdsim.validation.trim import TrimSweep, angle_of_attack_deg, trim_sweep
 
 AGREE, ROUGH = 1.5, 2.0
@@ -45,6 +48,8 @@ CURVE_KEYS = {
 #: A wingbeat "folds" when its span ratio (mid-upstroke / mid-downstroke) is below this
 #: (issue 24's threshold for the optimiser folding in pigeon cruise).
 FOLDED_SPAN_RATIO = 0.95
+#: The verdict of a turning row while no turning flight gives its value (issue 23).
+NOT_SIMULATED = "not yet simulated (turning flight: issue 23)"
 
 
 @dataclass(frozen=True)
@@ -65,7 +70,7 @@ class Row:
         """A birdsim value of this row (its own or a variant's) as printed."""
         m = self.measurement
         if value is None:
-            return "cannot trim"
+            return "not yet simulated" if m.compare in TURNING_KEYS else "cannot trim"
         if m.kind == "trend":
             return f"{value:+.3g} {_slope_unit(m.compare)}"
         if m.kind == "yesno":
@@ -94,6 +99,8 @@ def _slope_unit(key: str) -> str:
 
 def verdict_for(m: Measurement, value: float | None) -> tuple[float | None, str]:
     """(ratio, verdict text with its tolerance) of birdsim's ``value`` against ``m``."""
+    if m.compare in TURNING_KEYS and value is None:
+        return None, NOT_SIMULATED
     if m.kind == "shown":
         return None, "not scored (shown only)"
     if value is None:
@@ -127,6 +134,8 @@ def model_value(m: Measurement, sweep: TrimSweep, bird: Bird) -> float | None:
         BirdsimError: the row's speed is not in the sweep, or an unknown compare key.
     """
     key = m.compare
+    if key in TURNING_KEYS:  # from a turning flight, not the sweep (see score)
+        return None
     if key == "min_power_speed":
         mp = sweep.min_power()
         return None if mp is None else mp[0]
@@ -203,7 +212,11 @@ def sweep_speeds(
     measurements: Sequence[Measurement], base: Sequence[float] = DEFAULT_SPEEDS
 ) -> tuple[float, ...]:
     """The curve's speeds plus every speed a row is evaluated at, sorted."""
-    extra = {m.speed_m_s for m in measurements if m.speed_m_s is not None and m.kind != "trend"}
+    extra = {
+        m.speed_m_s
+        for m in measurements
+        if m.speed_m_s is not None and m.kind != "trend" and m.compare not in TURNING_KEYS
+    }
     return tuple(sorted(set(base) | {float(v) for v in extra}))
 
 
@@ -225,6 +238,7 @@ def score(
     *,
     variants: bool = True,
     progress: Callable[[str], None] | None = None,
+    turning: dict[str, float] | None = None,
 ) -> tuple[tuple[Row, ...], dict[str, TrimSweep]]:
     """Score every measurement against ``sweep``; rows that are off get variant values.
 
@@ -236,6 +250,8 @@ def score(
             variants).
         variants: recompute off rows with the other physics.
         progress: called with each variant's label before its sweep.
+        turning: birdsim's values of the turning rows by compare key (in the row's unit),
+            from the turning flights; a key missing here is "not yet simulated".
     Returns:
         (rows, variant sweeps by label) -- the variant sweeps cover only what off rows need.
     Raises:
@@ -243,10 +259,17 @@ def score(
     """
     rows = []
     for m in measurements:
-        v = model_value(m, sweep, bird)
+        if m.compare in TURNING_KEYS:
+            v = (turning or {}).get(m.compare)
+        else:
+            v = model_value(m, sweep, bird)
         ratio, verdict = verdict_for(m, v)
         rows.append(Row(m, v, ratio, verdict))
-    off = [r for r in rows if r.verdict.startswith(("off", "opposite"))]
+    off = [
+        r
+        for r in rows
+        if r.verdict.startswith(("off", "opposite")) and r.measurement.compare not in TURNING_KEYS
+    ]
     vsweeps: dict[str, TrimSweep] = {}
     if variants and off:
         starts = {p.speed: np.array([p.params[n] for n in p.params]) for p in sweep.points}
@@ -293,6 +316,7 @@ def _safe(m: Measurement, sweep: TrimSweep, bird: Bird) -> float | None:
 __all__ = [
     "AGREE",
     "DEFAULT_SPEEDS",
+    "NOT_SIMULATED",
     "ROUGH",
     "Row",
     "model_value",

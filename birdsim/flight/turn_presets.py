@@ -1,0 +1,204 @@
+"""The turning presets as paths (issue 23 item 3): data only, not yet flown.
+
+Speed-and-heading paths (:class:`birdsim.flight.path.FlightPath`, speed form) in reduced
+units, like the straight presets of :mod:`birdsim.flight.presets` and kept apart from them
+(the ``birdsim fly`` preset list and the straight presets' figures are untouched): the
+bank-to-turn controller registers them once it flies them.
+
+Every turn is a *coordinated-turn template*: the heading ramps from a turn rate of 0 to
+``omega_t = V / R`` over :data:`RAMP_BEATS` wingbeats (a smoothstep turn rate: the
+heading's quintic with slopes 0 and ``omega_t`` and a heading change ``omega_t h / 2``,
+so the turn rate is ``omega_t s^2 (3 - 2 s)``), turns at the constant rate, and ramps
+back, all at constant speed; a turn is therefore an arc of radius R with two short
+spiral transitions, and its centripetal acceleration ``V omega_t = V^2 / R`` asks for a
+bank ``atan(V^2 / (R g))``.
+
+* ``turn-90``: a level 90-degree turn to the left at slow speed, after the corridor turns
+  of Ros et al. 2011 (PNAS 108:19990; pigeons at about 3-4 m/s, radius about 1 m):
+  :data:`SLOW_SPEED` 0.2 omega s (3.3 m/s for the pigeon), :data:`SLOW_RADIUS` 3 s
+  (0.99 m); centripetal acceleration 0.0133 omega^2 s = 1.11 g of the seed bird and the
+  pigeon (bank about 48 degrees).
+* ``circle``: a level 360-degree circle to the left at cruise speed (0.5 omega s) and
+  radius :data:`CIRCLE_RADIUS` 25 s (8.3 m for the pigeon; 0.83 g, bank about 40
+  degrees); by the symmetry of the ramps the track leaves the loop on the line and
+  heading it entered on.
+* ``s-turn``: at cruise speed, 45 degrees to the left then 45 to the right (radius 25 s),
+  ending on the first heading, offset to the left.
+* ``u-turn``: from rest on the perch, out at slow speed, a keyhole turn (right by
+  :data:`U_TURN_THETA`, left by 180 + 2 theta degrees, right by theta; radius 3 s) and
+  back to rest on the perch it left, facing the other way. theta (about 60 degrees) and
+  the outbound straight are solved so that the path ends on the perch to round-off.
+"""
+
+from __future__ import annotations
+
+import math
+
+from scipy.optimize import brentq
+
+from birdsim.flight.path import PERCH_X, PERCH_Z, FlightPath, PathKeyframe
+from birdsim.flight.presets import CRUISE_HEIGHT, CRUISE_SPEED
+
+TWO_PI = 2.0 * math.pi
+#: Slow turning speed (omega s) and radius (semispans): Ros et al. 2011's pigeon turns.
+SLOW_SPEED = 0.2
+SLOW_RADIUS = 3.0
+#: Radius of the cruise-speed circle and s-turn (semispans).
+CIRCLE_RADIUS = 25.0
+#: Wingbeats of each turn-rate ramp (slow turns, cruise turns).
+RAMP_BEATS = 1.5
+CRUISE_RAMP_BEATS = 2.0
+#: Straight flight before the first and after the last turn (wingbeats).
+STRAIGHT_BEATS = 2.0
+
+_K = PathKeyframe
+
+
+def turn_keyframes(
+    t0: float, psi0: float, delta: float, speed: float, radius: float, ramp_beats: float, z: float
+) -> list[PathKeyframe]:
+    """The keyframes of one turn by ``delta`` rad (positive to the left) from heading
+    ``psi0`` at time ``t0`` [wingbeats], at constant ``speed`` [omega s], radius
+    ``radius`` [s] and height ``z`` [s]: start, end of the ramp in, start of the ramp
+    out, end (turn rates 0, w, w, 0 with w = +-speed / radius).
+
+    Raises:
+        ValueError: the turn is shorter than its two ramps.
+    """
+    rate = speed / radius
+    h = ramp_beats * TWO_PI
+    ramp = 0.5 * rate * h  # heading change of one smoothstep ramp
+    if abs(delta) < 2.0 * ramp:
+        raise ValueError(f"turn of {delta:g} rad is shorter than its ramps (2 x {ramp:g} rad)")
+    sign = math.copysign(1.0, delta)
+    steady_beats = (abs(delta) - 2.0 * ramp) / rate / TWO_PI
+    t1 = t0 + ramp_beats
+    t2 = t1 + steady_beats
+    return [
+        _K(t0, z, V=speed, heading=psi0, turn_rate=0.0),
+        _K(t1, z, V=speed, heading=psi0 + sign * ramp, turn_rate=sign * rate),
+        _K(t2, z, V=speed, heading=psi0 + delta - sign * ramp, turn_rate=sign * rate),
+        _K(t2 + ramp_beats, z, V=speed, heading=psi0 + delta, turn_rate=0.0),
+    ]
+
+
+def turns_keyframes(
+    t0: float, deltas: list[float], speed: float, radius: float, ramp_beats: float, z: float
+) -> list[PathKeyframe]:
+    """Turns one after the other from heading 0 at ``t0`` (each starts where the last ends)."""
+    out: list[PathKeyframe] = []
+    psi = 0.0
+    for delta in deltas:
+        ks = turn_keyframes(t0, psi, delta, speed, radius, ramp_beats, z)
+        out.extend(ks if not out else ks[1:])
+        t0, psi = ks[-1].t, psi + delta
+    return out
+
+
+def _level(name: str, deltas: list[float], speed: float, radius: float, ramp: float, text: str):
+    ks = turns_keyframes(STRAIGHT_BEATS, deltas, speed, radius, ramp, CRUISE_HEIGHT)
+    first = _K(0.0, CRUISE_HEIGHT, V=speed, heading=0.0, turn_rate=0.0, regime="straight")
+    ks[0] = _K(ks[0].t, ks[0].z, V=speed, heading=0.0, turn_rate=0.0, regime="turn")
+    last = ks[-1]
+    ks[-1] = _K(last.t, last.z, V=speed, heading=last.heading, turn_rate=0.0, regime="straight")
+    x0 = -speed * STRAIGHT_BEATS * TWO_PI  # the first turn starts at x = 0
+    return FlightPath(name, ks[-1].t + STRAIGHT_BEATS, False, False, (first, *ks), text, x0=x0)
+
+
+#: The u-turn's take-off (0 -> SLOW_SPEED) and braking (the landing preset's last 17
+#: wingbeats, scaled to start at SLOW_SPEED): (wingbeats from the start of the phase, V, z).
+U_TAKE_OFF = ((0.0, 0.0, PERCH_Z), (7.0, SLOW_SPEED, 2.0))
+U_BRAKING = ((0.0, SLOW_SPEED, 2.0), (5.0, 0.12, 1.8), (10.0, 0.04, 1.7), (16.0, 0.0, PERCH_Z))
+#: Straight flight at slow speed before the keyhole and after it (wingbeats, before the
+#: outbound one is lengthened to bring the bird back to its perch).
+U_STRAIGHT = 1.0
+U_RAMP_BEATS = 1.0
+
+
+def _u_turn(theta: float, out_beats: float, perch: bool) -> FlightPath:
+    v, r, zt = SLOW_SPEED, SLOW_RADIUS, U_TAKE_OFF[-1][2]
+    ks = [_K(t, z, V=s, heading=0.0, regime="take-off" if t == 0 else "") for t, s, z in U_TAKE_OFF]
+    t0 = U_TAKE_OFF[-1][0] + out_beats
+    turn = turns_keyframes(t0, [-theta, math.pi + 2 * theta, -theta], v, r, U_RAMP_BEATS, zt)
+    turn[0] = _K(turn[0].t, zt, V=v, heading=0.0, turn_rate=0.0, regime="keyhole turn")
+    ks += turn
+    tb = turn[-1].t + U_STRAIGHT
+    for i, (dt, s, z) in enumerate(U_BRAKING):
+        label = ("braking", "", "approach", "perched")[i]
+        ks.append(_K(tb + dt, z, V=s, heading=math.pi, regime=label))
+    return FlightPath(
+        "u-turn",
+        ks[-1].t + 1.0,
+        perch,
+        perch,
+        tuple(ks),
+        "from rest on the perch: out at slow speed, a keyhole turn, back to rest on the perch",
+        x0=PERCH_X,
+    )
+
+
+def _solve_u_turn() -> tuple[float, float]:
+    """(theta, outbound straight [wingbeats]) that bring the u-turn back onto its perch:
+    theta closes y (the keyhole's sideways offset, 0 at 60 degrees for circular arcs),
+    the straight closes x (the path is linear in its length)."""
+
+    def end(theta: float, out: float) -> tuple[float, float]:
+        p = _u_turn(theta, out, perch=False)
+        s = p.state(p.keyframes[-1].t * TWO_PI)
+        return s.x - PERCH_X, s.y
+
+    theta = brentq(lambda th: end(th, U_STRAIGHT)[1], 0.8, 1.3, xtol=1e-15, rtol=1e-15)
+    dx = end(theta, U_STRAIGHT)[0]
+    out = U_STRAIGHT - dx / (SLOW_SPEED * TWO_PI)
+    if out < U_STRAIGHT:  # the take-off covers more ground than the braking: never here
+        raise RuntimeError(f"u-turn: outbound straight {out:g} wingbeats; re-lay the braking")
+    return theta, out
+
+
+def _presets() -> dict[str, FlightPath]:
+    quarter = 0.5 * math.pi
+    turn_90 = _level(
+        "turn-90",
+        [quarter],
+        SLOW_SPEED,
+        SLOW_RADIUS,
+        RAMP_BEATS,
+        f"a level 90-degree turn to the left at V = {SLOW_SPEED:g} omega s, radius "
+        f"{SLOW_RADIUS:g} semispans (Ros et al. 2011's pigeon turns)",
+    )
+    circle = _level(
+        "circle",
+        [TWO_PI],
+        CRUISE_SPEED,
+        CIRCLE_RADIUS,
+        CRUISE_RAMP_BEATS,
+        f"a level 360-degree circle to the left at cruise speed, radius {CIRCLE_RADIUS:g} "
+        "semispans",
+    )
+    s_turn = _level(
+        "s-turn",
+        [0.25 * math.pi, -0.25 * math.pi],
+        CRUISE_SPEED,
+        CIRCLE_RADIUS,
+        CRUISE_RAMP_BEATS,
+        "at cruise speed: 45 degrees to the left, then 45 to the right, back on the first heading",
+    )
+    u_turn = _u_turn(*U_TURN_SOLUTION, perch=True)
+    return {p.name: p for p in (turn_90, circle, s_turn, u_turn)}
+
+
+#: The u-turn's keyhole angle theta [rad] and outbound straight [wingbeats].
+U_TURN_SOLUTION: tuple[float, float] = _solve_u_turn()
+U_TURN_THETA = U_TURN_SOLUTION[0]
+#: The turning presets by name (not in ``PATH_PRESETS``: not yet flown).
+TURN_PRESETS: dict[str, FlightPath] = _presets()
+
+__all__ = [
+    "CIRCLE_RADIUS",
+    "SLOW_RADIUS",
+    "SLOW_SPEED",
+    "TURN_PRESETS",
+    "U_TURN_THETA",
+    "turn_keyframes",
+    "turns_keyframes",
+]
