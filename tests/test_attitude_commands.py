@@ -112,3 +112,66 @@ def test_side_gust_is_flown_back_by_banking():
         attitude_commands.LATERAL_ROLL_MAX = saved
     y0 = _beat_means(a0, "y")
     assert abs(y0[-1]) > 2.0 * abs(y[-1]) and abs(y0[-1]) >= np.abs(y0[:-1]).max()
+
+
+# ---- turning's foundation (issue 23; the turning presets do not fly yet) -------------
+
+
+@pytest.mark.parametrize("angles", [(0.3, 0.0, 0.0), (0.3, 0.4, 0.0), (1.2, -0.5, 2.4)])
+def test_error_rotvec_takes_roll_and_yaw_as_scipy_does(angles):
+    """The attitude error log(S^T S_cmd) for a Z-Y-X command (pitch, roll, yaw) equals
+    scipy's rotation algebra to round-off (1e-12 rad)."""
+    from scipy.spatial.transform import Rotation
+
+    from birdsim.flight.flight_arrays import error_rotvec
+
+    pitch, roll, yaw = angles
+    q = np.random.default_rng(3).normal(size=(6, 4))
+    q /= np.linalg.norm(q, axis=1)[:, None]
+    c = np.diag([1.0, -1.0, -1.0])
+    s_body = c @ Rotation.from_quat(q[:, [1, 2, 3, 0]]).as_matrix() @ c
+    s_cmd = Rotation.from_euler("ZYX", [yaw, pitch, roll]).as_matrix()
+    want = Rotation.from_matrix(np.swapaxes(s_body, 1, 2) @ s_cmd).as_rotvec()
+    np.testing.assert_allclose(error_rotvec(q, pitch, roll, yaw), want, atol=1e-12)
+
+
+def test_body_rates_are_the_euler_kinematics():
+    """body_rates equals the body-axis angular velocity of the Z-Y-X attitude moved by
+    small steps of yaw and pitch (central differences of scipy's rotations; 1e-8 for
+    steps of 1e-5 rad)."""
+    from scipy.spatial.transform import Rotation
+
+    from birdsim.flight.attitude_commands import body_rates
+
+    pitch, roll, dpitch, dyaw, h = 0.4, -0.6, 0.03, 0.05, 1e-5
+    rot = lambda t: Rotation.from_euler("ZYX", [dyaw * t, pitch + dpitch * t, roll])  # noqa: E731
+    # R(t)^T R'(t) = [omega]x, body axes
+    w = (rot(-h).inv() * rot(h)).as_rotvec() / (2 * h)
+    np.testing.assert_allclose(body_rates(pitch, roll, dpitch, dyaw), w, atol=1e-8)
+
+
+def test_track_frame_of_a_turn():
+    """The turning presets' paths (issue 23) in their track frame: straight presets are
+    not 3-D; on the circle's steady arc the heading turns at V / R, the centripetal
+    acceleration (to the left) is V^2 / R (5e-4 relative: the tabulated heading's
+    differences) and the banked force's az carries sqrt(g^2 + a_lat^2) - g; the distance
+    along the track grows at the speed."""
+    from birdsim.flight.presets import PATH_PRESETS
+    from birdsim.flight.track import TrackFrame, is_three_d
+    from birdsim.flight.turn_presets import CIRCLE_RADIUS, TURN_PRESETS
+
+    for name in ("cruise", "take-off"):
+        assert not is_three_d(PATH_PRESETS[name], PATH_PRESETS[name].duration_beats * 2 * math.pi)
+    circle = TURN_PRESETS["circle"]
+    t_end = circle.duration_beats * 2 * math.pi
+    assert is_three_d(circle, t_end)
+    g = 0.012
+    track = TrackFrame(circle, t_end, g)
+    mid = 0.5 * t_end
+    s = track.sample(np.array([mid - 1.0, mid, mid + 1.0]))
+    v = 0.5
+    np.testing.assert_allclose(s["heading_rate"][1], v / CIRCLE_RADIUS, rtol=5e-4)
+    np.testing.assert_allclose(s["a_lat"][1], v * v / CIRCLE_RADIUS, rtol=5e-4)
+    np.testing.assert_allclose(s["az"][1], math.hypot(g, v * v / CIRCLE_RADIUS) - g, rtol=5e-3)
+    np.testing.assert_allclose(np.diff(s["x"]), v, rtol=1e-3)
+    np.testing.assert_allclose(s["vx"][1], v, rtol=1e-9)

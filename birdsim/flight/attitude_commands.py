@@ -4,6 +4,7 @@ acceleration to feed forward, and the lateral path loop's bank (roll) command.""
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -35,24 +36,59 @@ def command_filter(
     return value, rate, (target - value) / tau**2 - 2.0 * rate / tau
 
 
-def bank_command(window: list, per_beat: int, gravity: float) -> float:
+#: The largest bank of a turn (rad): the centripetal acceleration fed forward may ask for
+#: more than a correction's LATERAL_ROLL_MAX.
+TURN_ROLL_MAX = math.radians(60.0)
+
+
+@functools.lru_cache(maxsize=4)
+def _fit_now(n: int) -> np.ndarray:
+    return wingbeat_fit_matrix(n, TWO_PI, beats=FIT_BEATS)[0]
+
+
+def bank_command(window: list, per_beat: int, gravity: float, a_left_ref: float = 0.0) -> float:
     """The lateral path loop's roll command (rad, seed axes: right wing down > 0) from the
-    last wingbeat's samples ``(y, vy)`` (MuJoCo y, to the left; the reference has y = 0):
-    the wingbeat-mean side error and velocity (the trend's value now), the sideways
-    acceleration they ask for (:data:`LATERAL_BEATS`) and the bank that tilts the weight's
-    support by it."""
+    last wingbeat's samples ``(y, vy)``: the bird's side offset from the path and its
+    rate, to the left (MuJoCo y; a straight path has y = 0): the wingbeat-mean offset
+    (the trend's value now), the sideways acceleration it asks for
+    (:data:`LATERAL_BEATS`) plus the path's own ``a_left_ref`` (a turn's centripetal
+    acceleration, to the left), and the bank that tilts by it the force that carries
+    ``gravity`` (the weight's acceleration plus the path's vertical one)."""
     if not window or gravity <= 0.0:
         return 0.0
     n = FIT_BEATS * per_beat
     yv = np.array(window, dtype=float)
     if len(yv) < n:
         yv = np.vstack([np.repeat(yv[:1], n - len(yv), axis=0), yv])
-    y, vy = wingbeat_fit_matrix(n, TWO_PI, beats=FIT_BEATS)[0] @ yv
+    y, vy = _fit_now(n) @ yv
     w = 1.0 / LATERAL_BEATS  # omega / (2 pi N), reduced units (omega = 1 per 2 pi)
     w = w / TWO_PI
-    a_left = -(w * w * y + 2.0 * w * vy)
+    a_left = a_left_ref - (w * w * y + 2.0 * w * vy)
+    bound = LATERAL_ROLL_MAX if a_left_ref == 0.0 else TURN_ROLL_MAX
     # banking right (roll > 0) leans the support to the right, -y
-    return float(np.clip(math.atan2(-a_left, gravity), -LATERAL_ROLL_MAX, LATERAL_ROLL_MAX))
+    return float(np.clip(math.atan2(-a_left, gravity), -bound, bound))
 
 
-__all__ = ["LATERAL_BEATS", "LATERAL_ROLL_MAX", "bank_command", "command_filter"]
+def body_rates(pitch: float, roll: float, pitch_rate: float, yaw_rate: float) -> np.ndarray:
+    """The body rates (p, q, r), seed body axes, of the Z-Y-X attitude (yaw, ``pitch``,
+    ``roll``) turning at ``yaw_rate`` (about seed z, down) and ``pitch_rate``, the roll
+    held: the rates a steady turn's command moves at (Euler kinematics)."""
+    cp, sp = math.cos(pitch), math.sin(pitch)
+    cr, sr = math.cos(roll), math.sin(roll)
+    return np.array(
+        [
+            -yaw_rate * sp,
+            pitch_rate * cr + yaw_rate * cp * sr,
+            -pitch_rate * sr + yaw_rate * cp * cr,
+        ]
+    )
+
+
+__all__ = [
+    "LATERAL_BEATS",
+    "LATERAL_ROLL_MAX",
+    "TURN_ROLL_MAX",
+    "bank_command",
+    "body_rates",
+    "command_filter",
+]

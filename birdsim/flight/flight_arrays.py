@@ -13,18 +13,24 @@ from birdsim.flight.simulate import C_SEED
 
 
 def attitude_estimate(
-    window: list, d: Any, per_beat: int, period: float, pitch_cmd: float, roll_cmd: float = 0.0
+    window: list,
+    d: Any,
+    per_beat: int,
+    period: float,
+    pitch_cmd: float,
+    roll_cmd: float = 0.0,
+    yaw_cmd: float = 0.0,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Wingbeat-mean attitude error and body rates (seed body axes) over the last
     wingbeat of samples ``(quat, omega_body)``: the error is the rotation vector that
-    turns the body onto the command (``roll_cmd``, ``pitch_cmd``, yaw 0), ``log(S^T S_cmd)``
+    turns the body onto the command (``roll_cmd``, ``pitch_cmd``, ``yaw_cmd``), ``log(S^T S_cmd)``
     -- no Euler angles, so no gimbal lock at a steep body; before a whole wingbeat the
     missing samples are the start's."""
     if not window:
         window = [(np.array(d.qpos[3:7]), C_SEED * np.array(d.qvel[3:6]))]
     quat = np.array([w[0] for w in window])
     rate = np.array([w[1] for w in window])
-    err = error_rotvec(quat, pitch_cmd, roll_cmd)
+    err = error_rotvec(quat, pitch_cmd, roll_cmd, yaw_cmd)
     n = FIT_BEATS * per_beat
     if len(window) < n:
         pad = n - len(window)
@@ -34,27 +40,31 @@ def attitude_estimate(
     return fit[0] @ err, fit[0] @ rate
 
 
-def error_rotvec(quat: np.ndarray, pitch_cmd: float, roll_cmd: float = 0.0) -> np.ndarray:
+def error_rotvec(
+    quat: np.ndarray, pitch_cmd: float, roll_cmd: float = 0.0, yaw_cmd: float = 0.0
+) -> np.ndarray:
     """The rotation vectors (n, 3) of ``S^T S_cmd`` for MuJoCo quaternions ``quat`` (n, 4)
     (w, x, y, z): S the body's orientation in seed axes (``C R C``, C = diag(1, -1, -1),
-    whose quaternion is (w, x, -y, -z)), S_cmd the pitch ``pitch_cmd`` about seed y then
-    the roll ``roll_cmd`` about x (Z-Y-X with yaw 0).
+    whose quaternion is (w, x, -y, -z)), S_cmd the Z-Y-X attitude: ``yaw_cmd`` about seed
+    z, then ``pitch_cmd`` about y, then ``roll_cmd`` about x.
     Quaternion algebra, the numbers of scipy's ``Rotation`` (matrix product, then
     ``as_rotvec``) to round-off (``tests/test_step_kernel.py``), in a few numpy calls."""
     q = quat / np.sqrt(np.einsum("ij,ij->i", quat, quat))[:, None]
     w, x, y, z = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
     c, s = np.cos(0.5 * pitch_cmd), np.sin(0.5 * pitch_cmd)
     v = np.empty((len(q), 3))
-    if roll_cmd == 0.0:
+    if roll_cmd == 0.0 and yaw_cmd == 0.0:
         # conj(q_S) * q_cmd, q_cmd = (c, 0, s, 0)
         rw = w * c - y * s
         v[:, 0] = -x * c - z * s
         v[:, 1] = w * s + y * c
         v[:, 2] = z * c - x * s
     else:
-        # q_cmd = (c, 0, s, 0) * (cr, sr, 0, 0) = (c cr, c sr, s cr, -s sr)
+        # q_cmd = (cy, 0, 0, sy) * (c, 0, s, 0) * (cr, sr, 0, 0)
         cr, sr = np.cos(0.5 * roll_cmd), np.sin(0.5 * roll_cmd)
-        a2, b2, c2, d2 = c * cr, c * sr, s * cr, -s * sr
+        cy, sy = np.cos(0.5 * yaw_cmd), np.sin(0.5 * yaw_cmd)
+        yp = (cy * c, -sy * s, cy * s, sy * c)  # (cy, 0, 0, sy) * (c, 0, s, 0)
+        a2, b2, c2, d2 = _qmul(yp, (cr, sr, 0.0, 0.0))
         a1, b1, c1, d1 = w, -x, y, z  # conj(q_S)
         rw = a1 * a2 - b1 * b2 - c1 * c2 - d1 * d2
         v[:, 0] = a1 * b2 + b1 * a2 + c1 * d2 - d1 * c2
@@ -71,6 +81,18 @@ def error_rotvec(quat: np.ndarray, pitch_cmd: float, roll_cmd: float = 0.0) -> n
         taylor = 2.0 + a2 / 12.0 + 7.0 * a2 * a2 / 2880.0
         scale = np.where(small, taylor, angle / np.sin(0.5 * angle))
     return scale[:, None] * v
+
+
+def _qmul(p: tuple, q: tuple) -> tuple:
+    """The quaternion product p q of (w, x, y, z) tuples."""
+    a1, b1, c1, d1 = p
+    a2, b2, c2, d2 = q
+    return (
+        a1 * a2 - b1 * b2 - c1 * c2 - d1 * d2,
+        a1 * b2 + b1 * a2 + c1 * d2 - d1 * c2,
+        a1 * c2 - b1 * d2 + c1 * a2 + d1 * b2,
+        a1 * d2 + b1 * c2 - c1 * b2 + d1 * a2,
+    )
 
 
 @functools.lru_cache(maxsize=4)

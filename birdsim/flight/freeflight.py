@@ -18,11 +18,13 @@ import numpy as np
 
 from birdsim.errors import BirdsimError, limits_text, magnitude_ok
 from birdsim.flight.attitude import FIT_BEATS, AttitudeLoop
-from birdsim.flight.attitude_commands import bank_command, command_filter
+from birdsim.flight.attitude_commands import bank_command, body_rates, command_filter
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
+from birdsim.flight.demand_schedule import DemandSchedule, RefState
 from birdsim.flight.flight_arrays import attitude_estimate, flight_arrays
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
 from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
+from birdsim.flight.track import TrackFrame, is_three_d
 from birdsim.flight.trim import sample_reference, trim_start
 from birdsim.flight.wingbeat import WingbeatSchedule
 from birdsim.physics.bird import Bird
@@ -43,54 +45,12 @@ SP_MARGIN = 0.8
 #: smoothing: measured over 0, 3/16, 3/8 and 0.6, 3/8 flew take-off best (path RMS
 #: 0.0804, 0.0739, 0.0726, 0.0751) with cruise unchanged (docs/flight.md).
 SP_LEAD = 0.375
+#: Turning: the bank is asked for the path's centripetal acceleration BANK_LEAD wingbeats
+#: ahead (the roll loop's lag) through a second-order filter of BANK_BEATS.
+BANK_LEAD = 1.0
+BANK_BEATS = 0.5
 #: The integral only runs while the estimated position error is below this (semispans).
 INTEGRAL_BAND = 0.1
-
-
-@dataclass(frozen=True)
-class RefState:
-    """A reference state (reduced units, x forward, z up): PathState's fields."""
-
-    x: float
-    z: float
-    vx: float
-    vz: float
-    ax: float
-    az: float
-
-
-class DemandSchedule:
-    """A force-keyframe manoeuvre (birdsim.flight.manoeuvre.Manoeuvre) as an open-loop
-    reference: demands Fx, Fz, V straight from the keyframes (table units); the
-    reference path is x = integral of V, z = the keyframes' height."""
-
-    open_loop_demands = True
-
-    def __init__(self, manoeuvre: Any, x0: float = 0.0):
-        self.manoeuvre = manoeuvre
-        self.name = manoeuvre.name
-        self.duration_beats = float(manoeuvre.duration)
-        self.x0 = x0
-        self._grid = np.linspace(
-            0.0, self.duration_beats * TWO_PI, max(2, int(self.duration_beats * 64) + 1)
-        )
-        v = manoeuvre.demands(self._grid / TWO_PI)["V"]
-        dx = np.concatenate([[0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * np.diff(self._grid))])
-        self._x = dx
-
-    def demands(self, t: float) -> tuple[float, float, float]:
-        d = self.manoeuvre.demands(t / TWO_PI)
-        return float(d["Fx"]), float(d["Fz"]), float(d["V"])
-
-    def state(self, t: float) -> RefState:
-        d = self.manoeuvre.demands(np.array([t, t + 1e-3]) / TWO_PI)
-        x = (
-            self.x0
-            + float(np.interp(t, self._grid, self._x))
-            + max(0.0, t - self._grid[-1]) * float(d["V"][0])
-        )
-        vz = (float(d["z"][1]) - float(d["z"][0])) / 1e-3
-        return RefState(x, float(d["z"][0]), float(d["V"][0]), vz, 0.0, 0.0)
 
 
 @dataclass
@@ -165,20 +125,34 @@ def fly(
     every = config.steps_per_beat // config.log_per_beat
     n_ctl = int(math.ceil(beats * per_beat_ctl - 1e-9))
 
+    # a path with a side component: the path loop in its track frame, banked (turning)
+    track = None
+    if not demands_only and is_three_d(reference, beats * TWO_PI):
+        if config.attitude != "free":
+            raise BirdsimError(
+                "a path with a side component (keyframe y) needs attitude='free' "
+                "(--attitude free): a posed body cannot bank"
+            )
+        track = TrackFrame(reference, beats * TWO_PI, red.gravity)
+    path = reference if track is None else track
+
     def command(t: float, est: Any, integral: np.ndarray, pitch: float) -> Any:
         w = wind_at(gusts, t / TWO_PI, speed)
         if demands_only:
             fx, fz, v = reference.demands(t)
             return ctl.lookup_table_force(fx, fz, v - float(w[0]))
-        return ctl.command(reference.state(t), est, integral, pitch, (float(w[0]), float(w[2])))
+        return ctl.command(path.state(t), est, integral, pitch, (float(w[0]), float(w[2])))
 
-    ref0 = reference.state(0.0)
+    ref0 = path.state(0.0)
     pitch0 = 0.0
     cmd = command(0.0, None, np.zeros(2), pitch0)
     if "pitch" in names:
         cmd = command(0.0, None, np.zeros(2), float(cmd.params[names.index("pitch")]))
     window = ErrorWindow(config.log_per_beat, TWO_PI)
-    per_sample = ("Fx_demand", "Fz_demand", "climb_demand", "V_air", "saturated", "x_ref", "z_ref")
+    per_sample = (
+        *("Fx_demand", "Fz_demand", "climb_demand", "V_air", "saturated"),
+        *("x_ref", "y_ref", "z_ref"),
+    )
     rows: dict[str, list] = {
         k: []
         for k in (*per_sample, "params", "pitch_command", "tail", "inputs", "attitude_saturated")
@@ -193,9 +167,9 @@ def fly(
             if not ctl.open_loop and gains.ki > 0:
                 # the wingbeat's real mean force differs a little from the table's (the body
                 # bobs, the wings weigh): start the integral where it cancels that difference
-                *_, bias = trim_start(fb, reference, cmd.params, pos0, vel0, config, every)
+                *_, bias = trim_start(fb, path, cmd.params, pos0, vel0, config, every)
                 if free:  # again, from the rotation the first probe measured
-                    *_, bias = trim_start(fb, reference, cmd.params, pos0, vel0, config, every)
+                    *_, bias = trim_start(fb, path, cmd.params, pos0, vel0, config, every)
                 limit = INTEGRAL_LIMIT * red.gravity / gains.ki if red.gravity > 0 else np.inf
                 integral = np.clip(bias / gains.ki, -limit, limit)
                 cmd = command(
@@ -207,9 +181,7 @@ def fly(
                 fb.schedule = WingbeatSchedule(
                     fb.m, fb.kin, fb.red, cmd.params, smoothing=config.smoothing_beats * TWO_PI
                 )
-            pos0, vel0, history, _ = trim_start(
-                fb, reference, cmd.params, pos0, vel0, config, every
-            )
+            pos0, vel0, history, _ = trim_start(fb, path, cmd.params, pos0, vel0, config, every)
             for e_pos, e_vel, vx in history:  # the wingbeat before the start, on the orbit
                 window.add(e_pos, e_vel, vx)
         # the start's prescription from the schedule that will be flown (after the trim)
@@ -229,6 +201,7 @@ def fly(
             if compensate
             else None
         )
+        roll_ref = roll_rate_ref = roll_acc_ref = 0.0  # turning's bank command (filtered)
         att_window: list[tuple[np.ndarray, np.ndarray]] = []
         lat_window: list[tuple[float, float]] = []
         dt_ctl = steps_ctl * h
@@ -261,9 +234,22 @@ def fly(
                 pitch_ref, pitch_rate_ref, pitch_acc_ref = command_filter(
                     pitch_ref, pitch_rate_ref, pitch, tau_ref, dt_ctl
                 )
-                roll_cmd = bank_command(lat_window, config.log_per_beat, red.gravity)
+                if track is None:
+                    roll_cmd = bank_command(lat_window, config.log_per_beat, red.gravity)
+                    yaw_cmd = yaw_rate = 0.0
+                else:  # turning: the centripetal acceleration fed forward, heading followed
+                    ts = track.state(t)
+                    ahead = track.state(t + BANK_LEAD * TWO_PI)  # against the roll loop's lag
+                    target = bank_command(
+                        lat_window, config.log_per_beat, red.gravity + ahead.az, ahead.a_lat
+                    )
+                    roll_ref, roll_rate_ref, roll_acc_ref = command_filter(
+                        roll_ref, roll_rate_ref, target, BANK_BEATS * TWO_PI, dt_ctl
+                    )
+                    roll_cmd = roll_ref
+                    yaw_cmd, yaw_rate = -ts.heading, -ts.heading_rate  # seed yaw: z down
                 err, rates = attitude_estimate(
-                    att_window, fb.d, config.log_per_beat, TWO_PI, pitch_ref, roll_cmd
+                    att_window, fb.d, config.log_per_beat, TWO_PI, pitch_ref, roll_cmd, yaw_cmd
                 )
                 body_pitch = pitch_ref - float(err[1])  # the wingbeat-mean pitch
                 if compensate:
@@ -283,8 +269,9 @@ def fly(
                     err,
                     rates,
                     dt_ctl,
-                    rate_cmd=np.array([0.0, pitch_rate_ref, 0.0]),
-                    acc_cmd=np.array([0.0, pitch_acc_ref, 0.0]),
+                    rate_cmd=body_rates(pitch_ref, roll_cmd, pitch_rate_ref, yaw_rate)
+                    + np.array([roll_rate_ref, 0.0, 0.0]),
+                    acc_cmd=np.array([roll_acc_ref, pitch_acc_ref, 0.0]),
                     jac_params=None if offset is None else cmd.params + offset,
                     jac_pitch=body_pitch,
                 )
@@ -299,13 +286,23 @@ def fly(
             new = record[start:]
             q_new = np.array([r[1] for r in new])
             v_new = np.array([r[2] for r in new])
-            refs = sample_reference(reference, np.array([r[0] for r in new]))
-            e_pos = np.stack([refs["x"] - q_new[:, 0], refs["z"] - q_new[:, 2]], axis=1)
-            e_vel = np.stack([refs["vx"] - v_new[:, 0], refs["vz"] - v_new[:, 2]], axis=1)
+            t_new = np.array([r[0] for r in new])
+            if track is None:
+                refs = sample_reference(reference, t_new)
+                e_pos = np.stack([refs["x"] - q_new[:, 0], refs["z"] - q_new[:, 2]], axis=1)
+                e_vel = np.stack([refs["vx"] - v_new[:, 0], refs["vz"] - v_new[:, 2]], axis=1)
+                v_along = v_new[:, 0]
+                lat_window.extend(zip(q_new[:, 1], v_new[:, 1]))
+                y_ref = np.zeros(len(new))
+            else:
+                e_pos, e_vel, v_along, lateral, refs = track.errors(
+                    t_new, q_new[:, :3], v_new[:, :3]
+                )
+                lat_window.extend(map(tuple, lateral))
+                y_ref = refs["y"]
             for j in range(len(new)):
-                window.add(e_pos[j], e_vel[j], float(v_new[j, 0]))
+                window.add(e_pos[j], e_vel[j], float(v_along[j]))
             att_window.extend(zip(q_new[:, 3:7], C_SEED * v_new[:, 3:6]))
-            lat_window.extend(zip(q_new[:, 1], v_new[:, 1]))
             # |v - wind| as np.linalg.norm computes it (sqrt of the dot product)
             rows["V_air"].extend(math.sqrt(u.dot(u)) for u in v_new[:, :3] - wind)
             rows["params"].extend(pres.params[: len(new) * every : every])
@@ -319,6 +316,7 @@ def fly(
             n_new = len(new)
             rows["x_ref"].extend(refs["x"].tolist())
             rows["z_ref"].extend(refs["z"].tolist())
+            rows["y_ref"].extend(y_ref.tolist())
             rows["Fx_demand"].extend([cmd.Fx] * n_new)
             rows["Fz_demand"].extend([cmd.Fz] * n_new)
             rows["climb_demand"].extend([cmd.climb] * n_new)

@@ -1,0 +1,139 @@
+"""A three-dimensional path seen from its own heading: the frame of turning flight's
+path loop (reduced units; MuJoCo world axes: x forward at the start, y to the left,
+z up).
+
+Birds turn by banking (Ros et al. 2011, PNAS 108:19990: the wingbeat-mean force stays
+nearly fixed in the body and the body rolls to point it).  So the path loop stays the
+two-dimensional one of straight flight, in the vertical plane through the path's
+heading: along the track (the horizontal component of the path's velocity sets the
+heading ``psi``, counter-clockwise from x about z up) and up.  The sideways part is the
+bank's: the path's centripetal acceleration ``a_lat`` (to the left) plus a correction
+of the bird's side offset (``attitude_commands.bank_command``) is delivered by rolling
+the wings' force, whose magnitude the symmetric table gives: the track state's ``az``
+is the vertical acceleration the force in the banked plane must carry,
+``sqrt((az + g)^2 + a_lat^2) - g``.  A path without a side component (every straight
+preset) is not seen through this frame at all (:func:`is_three_d`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+TWO_PI = 2.0 * math.pi
+#: Below this horizontal path speed (semispan omega) the heading is held (hover, a perch).
+HOLD_SPEED = 0.02
+#: Samples per wingbeat of the heading's grid.
+GRID_PER_BEAT = 64
+
+
+def is_three_d(reference: Any, t_end: float) -> bool:
+    """Whether ``reference`` (a path with ``sample``) leaves the x-z plane before ``t_end``."""
+    fn = getattr(reference, "sample", None)
+    if fn is None:
+        return False
+    s = fn(np.linspace(0.0, t_end, 513))
+    return "y" in s and bool(np.any(np.asarray(s["y"]) != 0) or np.any(np.asarray(s["vy"]) != 0))
+
+
+@dataclass(frozen=True)
+class TrackState:
+    """The path at one time in its track frame: ``x`` the distance along the track,
+    ``vx``/``ax`` along the heading, ``z``/``vz`` up, ``az`` the vertical acceleration the
+    banked force carries (see the module), ``a_lat`` the centripetal acceleration (to the
+    left), ``heading``/``heading_rate`` psi and its rate (rad, counter-clockwise about z)."""
+
+    x: float
+    z: float
+    vx: float
+    vz: float
+    ax: float
+    az: float
+    a_lat: float
+    heading: float
+    heading_rate: float
+
+
+class TrackFrame:
+    """``reference`` (x, y, z and their rates from ``sample``) in its own track frame,
+    tabulated over ``[0, t_end]`` and a wingbeat beyond; ``gravity`` the reduced bird's."""
+
+    def __init__(self, reference: Any, t_end: float, gravity: float):
+        self.reference = reference
+        self.gravity = float(gravity)
+        t = np.arange(0.0, t_end + 2.0 * TWO_PI, TWO_PI / GRID_PER_BEAT)
+        s = reference.sample(t)
+        vx, vy = np.asarray(s["vx"], dtype=float), np.asarray(s["vy"], dtype=float)
+        moving = np.hypot(vx, vy) > HOLD_SPEED
+        psi = np.arctan2(vy, vx)
+        if not moving.any():
+            psi[:] = 0.0
+        else:
+            # the last heading flown while moving, held (and the first, before it)
+            idx = np.where(moving, np.arange(len(t)), 0)
+            idx = np.maximum.accumulate(idx)
+            idx[: int(np.argmax(moving))] = int(np.argmax(moving))
+            psi = np.unwrap(psi[idx])
+        self._t = t
+        self._psi = psi
+        self._psi_rate = np.gradient(psi, t)
+        along = np.cos(psi) * vx + np.sin(psi) * vy
+        arc = np.concatenate([[0.0], np.cumsum(0.5 * (along[1:] + along[:-1]) * np.diff(t))])
+        self._arc = float(np.asarray(s["x"])[0]) + arc
+
+    def heading(self, t: Any) -> np.ndarray:
+        """psi(t) (rad, counter-clockwise from x about z up)."""
+        return np.interp(t, self._t, self._psi)
+
+    def sample(self, t: Any) -> dict[str, np.ndarray]:
+        """The path at reduced times ``t`` in its track frame (see :class:`TrackState`)."""
+        t = np.asarray(t, dtype=float)
+        s = self.reference.sample(t)
+        psi = np.interp(t, self._t, self._psi)
+        c, sn = np.cos(psi), np.sin(psi)
+        ax, ay, az = (np.asarray(s[k], dtype=float) for k in ("ax", "ay", "az"))
+        a_lat = -sn * ax + c * ay
+        g = self.gravity
+        return {
+            "x": np.interp(t, self._t, self._arc),
+            "z": np.asarray(s["z"], dtype=float),
+            "vx": c * np.asarray(s["vx"]) + sn * np.asarray(s["vy"]),
+            "vz": np.asarray(s["vz"], dtype=float),
+            "ax": c * ax + sn * ay,
+            "az": np.sqrt((az + g) ** 2 + a_lat**2) - g,
+            "a_lat": a_lat,
+            "heading": psi,
+            "heading_rate": np.interp(t, self._t, self._psi_rate),
+        }
+
+    def state(self, t: float) -> TrackState:
+        s = self.sample(np.array([float(t)]))
+        return TrackState(*(float(s[k][0]) for k in TrackState.__dataclass_fields__))
+
+    def errors(
+        self, t: np.ndarray, pos: np.ndarray, vel: np.ndarray
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, dict[str, np.ndarray]]:
+        """For the bird at world positions ``pos`` and velocities ``vel`` (n, 3) at times
+        ``t``: the path loop's errors (reference minus bird) along the track and up (n, 2),
+        their rates (n, 2), the bird's speed along the heading (n,), its side offset
+        from the path and that offset's rate, to the left (n, 2), and the world
+        reference (x, y, z) for the log."""
+        s = self.reference.sample(t)
+        psi = np.interp(t, self._t, self._psi)
+        c, sn = np.cos(psi), np.sin(psi)
+        ep = np.stack([s["x"], s["y"], s["z"]], axis=1) - pos
+        ev = np.stack([s["vx"], s["vy"], s["vz"]], axis=1) - vel
+        fwd = lambda e: c * e[:, 0] + sn * e[:, 1]  # noqa: E731
+        left = lambda e: -sn * e[:, 0] + c * e[:, 1]  # noqa: E731
+        e_pos = np.stack([fwd(ep), ep[:, 2]], axis=1)
+        e_vel = np.stack([fwd(ev), ev[:, 2]], axis=1)
+        v_along = c * vel[:, 0] + sn * vel[:, 1]
+        lateral = np.stack([-left(ep), -left(ev)], axis=1)
+        world = {k: np.asarray(s[k], dtype=float) for k in ("x", "y", "z")}
+        return e_pos, e_vel, v_along, lateral, world
+
+
+__all__ = ["HOLD_SPEED", "TrackFrame", "TrackState", "is_three_d"]
