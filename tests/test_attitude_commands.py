@@ -175,3 +175,19 @@ def test_track_frame_of_a_turn():
     np.testing.assert_allclose(s["az"][1], math.hypot(g, v * v / CIRCLE_RADIUS) - g, rtol=5e-3)
     np.testing.assert_allclose(np.diff(s["x"]), v, rtol=1e-3)
     np.testing.assert_allclose(s["vx"][1], v, rtol=1e-9)
+
+
+def test_a_turning_body_rolls_into_the_turn():
+    """Measured with the body yawing left (r < 0, seed axes) as in a left turn, the
+    wingbeat-mean moment rolls the bird further left (Mx < 0: the outer, right wing
+    meets faster air); not yawing, the symmetric bird has no roll moment (round-off)."""
+    from birdsim.flight.attitude import measured_jacobian
+    from birdsim.flight.presets import DEMO_MODEL, demo_bird
+    from birdsim.flight.simulate import FreeBird, SimConfig
+
+    params = np.array([0.14, 0.9, 0.3, 0.35])  # m3 cruise-like: pitch, flap, twist, stroke plane
+    with FreeBird(DEMO_MODEL, demo_bird(), params, config=SimConfig(attitude="free")) as fb:
+        level, _ = measured_jacobian(fb, params, 0.14, 0.5)
+        turning, _ = measured_jacobian(fb, params, 0.14, 0.5, np.array([0.0, 0.0, -0.02]))
+    assert abs(level[0]) < 1e-12
+    assert turning[0] < -1e-4

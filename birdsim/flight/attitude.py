@@ -81,6 +81,8 @@ JAC_STEP = 0.02
 #: Jacobian.
 JAC_DV = 0.05
 JAC_DPITCH = 0.1
+#: ... and the change of a turn's body rates (rad per time unit) that does.
+JAC_DRATE = 0.002
 #: Regularisation of the allocation (relative to the inputs' bounds).
 LAMBDA = 1e-4
 #: The integral's share of the moment is bounded by this many times the inertia x
@@ -151,10 +153,12 @@ def attitude_gains(omega: float = 1.0, beats: object = AXIS_BEATS) -> AttitudeGa
 
 
 def measured_jacobian(
-    fb, params: np.ndarray, pitch: float, speed: float
+    fb, params: np.ndarray, pitch: float, speed: float, omega_body: np.ndarray | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
     """(M_0 (3,), J (3, k)): the wingbeat-mean moment (seed body axes) with every input
-    at zero and its one-sided derivatives, measured in MuJoCo (see the module)."""
+    at zero and its one-sided derivatives, measured in MuJoCo (see the module); the body
+    turning at ``omega_body`` (seed body axes; a steady turn's rates: the outer wing's
+    faster air is in M_0), else not rotating."""
 
     m, cb, sched = fb.m, fb.cb, fb.schedule
     d = getattr(fb, "_jac_data", None)
@@ -167,6 +171,7 @@ def measured_jacobian(
     saved = cb.tail_controls
     m.opt.wind[:] = 0.0
     quat = pitch_quat(pitch)
+    omega_mj = np.zeros(3) if omega_body is None else np.asarray(omega_body) * (1.0, -1.0, -1.0)
     k_in = len(INPUTS) + 1
     # every input's wingbeat in one prescription (per sample: the same numbers as one
     # prescription per input)
@@ -193,7 +198,7 @@ def measured_jacobian(
                 d.qpos[:3] = (0.0, 0.0, 6.0)
                 d.qpos[3:7] = quat
                 d.qvel[:3] = (speed, 0.0, 0.0)
-                d.qvel[3:6] = 0.0
+                d.qvel[3:6] = omega_mj
                 # the passive forces (the callback) need only positions and velocities
                 fwd_pos(m, d)
                 fwd_vel(m, d)
@@ -254,6 +259,7 @@ class AttitudeLoop:
         self.u = np.zeros(len(INPUTS))
         self.saturated = False
         self._jac: tuple[float, np.ndarray, np.ndarray, float] | None = None
+        self._turn = np.zeros(3)  # the turning rates the Jacobians were measured at
         self.kinds = INPUTS
 
     def preset_integral(
@@ -304,6 +310,7 @@ class AttitudeLoop:
         jac_pitch: float | None = None,
         rate_cmd: np.ndarray | None = None,
         acc_cmd: np.ndarray | None = None,
+        turn_rates: np.ndarray | None = None,
     ) -> tuple[np.ndarray, np.ndarray, float, TailControls]:
         """The wings' and tail's commands for this control step.  ``err`` / ``rates``:
         the wingbeat-mean attitude error (rotation vector onto the command) and body
@@ -315,14 +322,19 @@ class AttitudeLoop:
             self.saturated = False
             return split_inputs(names, params, self.u)
         jp = pitch_cmd if jac_pitch is None else jac_pitch
+        turn = np.zeros(3) if turn_rates is None else np.asarray(turn_rates, dtype=float)
         if (
             self._jac is None
             or abs(self._jac[0] - speed) > JAC_DV
             or abs(self._jac[3] - jp) > JAC_DPITCH
+            or np.abs(self._turn - turn).max() > JAC_DRATE
         ):
             at = params if jac_params is None else jac_params
-            m0, jac = measured_jacobian(self.fb, at, jp, max(speed, 0.0))
+            m0, jac = measured_jacobian(
+                self.fb, at, jp, max(speed, 0.0), turn if turn.any() else None
+            )
             self._jac = (speed, m0, jac, jp)
+            self._turn = turn
         _, m0, jac, _ = self._jac
         g = self.gains
         lim = INTEGRAL_LIMIT_RAD * g.omega_a**2 / g.ki

@@ -272,6 +272,7 @@ def fly(
                     rate_cmd=body_rates(pitch_ref, roll_cmd, pitch_rate_ref, yaw_rate)
                     + np.array([roll_rate_ref, 0.0, 0.0]),
                     acc_cmd=np.array([roll_acc_ref, pitch_acc_ref, 0.0]),
+                    turn_rates=body_rates(pitch_ref, roll_cmd, 0.0, yaw_rate),
                     jac_params=None if offset is None else cmd.params + offset,
                     jac_pitch=body_pitch,
                 )
