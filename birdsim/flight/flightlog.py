@@ -6,7 +6,8 @@ Per sample (``log_per_beat`` per wingbeat, >= 32):
 t               time [the bird's time unit: s for the pigeon]
 x, z            torso origin, x forward, z UP [the bird's length unit]
 vx, vz          its velocity [length / time]
-x_ref, z_ref    the path [length]
+x_ref, y_ref,   the path [length] (y_ref: 0 for a path in the vertical plane)
+z_ref
 pitch           body pitch, nose up [rad] (Euler Z-Y-X, docs/conventions.md)
 roll, yaw       body roll (right wing down) and yaw (nose right) [rad]
 pitch_command   the table's (commanded) body pitch [rad]
@@ -78,6 +79,7 @@ def log_arrays(result: FlightResult, manoeuvre: str = "") -> dict[str, np.ndarra
         "vx": a["vx"] * sc.speed,
         "vz": a["vz"] * sc.speed,
         "x_ref": a["x_ref"] * sc.length,
+        "y_ref": a["y_ref"] * sc.length,
         "z_ref": a["z_ref"] * sc.length,
         "pitch": a["pitch"],
         **{n: a[n] for n in result.param_names},
@@ -212,7 +214,13 @@ def summary(
     t_beats = np.asarray(arrays["t"]) * omega / TWO_PI
     ex = np.asarray(arrays["x"]) - np.asarray(arrays["x_ref"])
     ez = np.asarray(arrays["z"]) - np.asarray(arrays["z_ref"])
-    err = np.hypot(ex, ez)
+    # three-dimensional where the log has the side (a free body off its path, a turn)
+    ey = (
+        np.asarray(arrays["y"]) - np.asarray(arrays["y_ref"])
+        if "y" in arrays and "y_ref" in arrays
+        else np.zeros_like(ex)
+    )
+    err = np.hypot(np.hypot(ex, ey), ez)
     late = t_beats >= skip_beats
     sat = np.asarray(arrays["saturated"], dtype=bool)
     beat_index = np.floor(t_beats + 1e-9).astype(int)
@@ -240,6 +248,7 @@ def summary(
         "rms_error_after_start": rms(err[late]),
         "max_error_after_start": float(err[late].max()) if np.any(late) else float("nan"),
         "rms_altitude_error_after_start": rms(ez[late]),
+        "rms_side_error_after_start": rms(ey[late]),
         "final_position": [float(arrays["x"][-1]), float(arrays["z"][-1])],
         "final_reference": [float(arrays["x_ref"][-1]), float(arrays["z_ref"][-1])],
         "final_speed": float(np.hypot(arrays["vx"][-1], arrays["vz"][-1])),

@@ -85,7 +85,7 @@ def flight_states(log: dict[str, Any], options: Any, *, title: str = "") -> Any:
     ref = np.column_stack(
         [
             np.asarray(log["x_ref"]) / sc.length,
-            np.zeros(t_log.size),
+            np.asarray(log["y_ref"]) / sc.length if "y_ref" in log else np.zeros(t_log.size),
             np.asarray(log["z_ref"]) / sc.length,
         ]
     )
@@ -94,6 +94,12 @@ def flight_states(log: dict[str, Any], options: Any, *, title: str = "") -> Any:
         k: resample(t_log, np.asarray(log[k], dtype=float), t)
         for k in ("x", "z", "x_ref", "z_ref", "V_air", "Fx_demand", "Fz_demand", "pitch_moment")
     }
+    # the side error (a free body off its path, a turn); 0 for a log without y
+    sampled["ey"] = (
+        resample(t_log, np.asarray(log["y"], float) - np.asarray(log["y_ref"], float), t)
+        if "y_ref" in log and "y" in log
+        else np.zeros(t.size)
+    )
     sat = np.asarray(log["saturated"], dtype=bool)[
         np.clip(np.searchsorted(t_log, t, side="right") - 1, 0, t_log.size - 1)
     ]
@@ -159,7 +165,8 @@ def flight_states(log: dict[str, Any], options: Any, *, title: str = "") -> Any:
     def brief(k: int) -> list:
         """The default overlay: time and flight, position error and airspeed, saturation."""
         err = math.hypot(
-            sampled["x"][k] - sampled["x_ref"][k], sampled["z"][k] - sampled["z_ref"][k]
+            math.hypot(sampled["x"][k] - sampled["x_ref"][k], sampled["ey"][k]),
+            sampled["z"][k] - sampled["z_ref"][k],
         )
         unit_v = "m/s" if unit_l == "m" else "omega s"
         lines: list = [
