@@ -3,24 +3,16 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
+from birdsim.flight.path import PathState
+
+#: The reference state of a force-keyframe manoeuvre: a path state in the vertical plane.
+RefState = PathState
+
 TWO_PI = 2.0 * math.pi
-
-
-@dataclass(frozen=True)
-class RefState:
-    """A reference state (reduced units, x forward, z up): PathState's fields."""
-
-    x: float
-    z: float
-    vx: float
-    vz: float
-    ax: float
-    az: float
 
 
 class DemandSchedule:
