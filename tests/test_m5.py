@@ -197,3 +197,44 @@ def test_forces_reports_the_span_ratio(capsys):
     assert out["span_ratio"] < 0.95  # a fold of 0.6 rad at mid-upstroke shortens the span
     assert main(["forces", "--model", "m3", "--speed", "0.5", "--json"]) == 0
     assert json.loads(capsys.readouterr().out)["span_ratio"] == pytest.approx(1.0, abs=1e-12)
+
+
+@pytest.mark.parametrize("fraction", [0.0, 1.0])
+def test_kernel_refuses_a_bird_without_m5_geometry(fraction):
+    """The fused kernel called directly (kernel.means, means_and_gradients, and the cost's
+    forces that call them) refuses an m5 bird with no arm or no hand in evaluate_cycle's
+    one line; before, it returned the forces of a wing with a zero-area panel."""
+    from birdsim.errors import BirdsimError
+    from birdsim.tables.cost import forces, forces_and_gradients
+
+    if not kernel.available():
+        pytest.skip("no compiled kernel")
+    bird = Bird(hand_span_fraction=fraction)
+    flat = {k: v[:2] for k, v in _m5_sets(2, 3).items()}
+    v, z = np.full(2, 0.4), np.zeros(2)
+    X = np.stack([flat[n] for n in M5.param_names], axis=-1)
+    with pytest.raises(BirdsimError) as ref:
+        evaluate_cycle("m5", flat, v, bird=bird, n=16)
+    line = str(ref.value)
+    assert "\n" not in line and f"hand_span_fraction={fraction!r}" in line
+    calls = (
+        lambda: kernel.means(M5, flat, v, z, np.zeros((2, 3)), bird, sample_phases(16, False)),
+        lambda: kernel.means_and_gradients(M5, flat, v, z, bird, sample_phases(16, False)),
+        lambda: forces(M5, X, v, bird, 16),
+        lambda: forces_and_gradients(M5, X, v, bird, 16),
+    )
+    for call in calls:
+        with pytest.raises(BirdsimError) as err:
+            call()
+        assert str(err.value) == line
+    assert kernel.available()  # a refused bird does not switch the kernel off
+    out = kernel.means(
+        M4,
+        {k: v for k, v in _m4_sets(2, 3).items()},
+        v,
+        z,
+        np.zeros((2, 3)),
+        bird,
+        sample_phases(16, False),
+    )
+    assert out is not None  # m4 keeps its zero-span panels (Bird allows 0 and 1)

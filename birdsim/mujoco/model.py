@@ -227,6 +227,7 @@ def _add_bird(
                 chord,
                 sign,
                 plumage.wing_bars,
+                fan=km.name == "m5" and kind == "hand",  # m5's primaries fan (mujoco/fan.py)
             )
 
     for side in SIDES:

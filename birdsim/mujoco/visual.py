@@ -246,25 +246,38 @@ def add_panel_dress(
     chord: float,
     sign: float,
     bars: int,
+    fan: bool = False,
 ) -> None:
     """Meshes ``<prefix>_<colour>`` dressing one panel (span along ``sign`` * y of
-    ``body``); nothing for a panel of zero span."""
+    ``body``); nothing for a panel of zero span.  ``fan`` (m5's hand): each primary is
+    its own geom ``<prefix>_primary_<k>`` (inner to outer), so that it can turn
+    (:mod:`birdsim.mujoco.fan`); the meshes are the same pieces."""
     if span <= 1e-9 * max(chord, 1e-300):
         return
     pieces = panel_planform(kind, span, chord, bars)
     vis = spec.find_default("visual")
+    primaries = [p for p in pieces if p.kind.startswith("primaries")]
+    groups = []  # (geom and mesh name, colour, polygons)
     for colour in dict.fromkeys(p.kind for p in pieces):
-        polys = [p.polygon for p in pieces if p.kind == colour]
+        if fan and colour.startswith("primaries"):
+            groups += [
+                (f"{prefix}_primary_{k}", colour, [p.polygon])
+                for k, p in enumerate(primaries)
+                if p.kind == colour
+            ]
+        else:
+            groups.append(
+                (f"{prefix}_{colour}", colour, [p.polygon for p in pieces if p.kind == colour])
+            )
+    for name, colour, polys in groups:
         z = (
             0.25 * WING_THICKNESS * chord if colour in ("coverts", "bars") else 0.0
         )  # coverts on top
         v, f = extrude(polys, sign, WING_THICKNESS * chord, z)
-        mesh = spec.add_mesh(
-            name=f"{prefix}_{colour}", uservert=v.ravel().tolist(), userface=f.ravel().tolist()
-        )
+        mesh = spec.add_mesh(name=name, uservert=v.ravel().tolist(), userface=f.ravel().tolist())
         mesh.inertia = mujoco.mjtMeshInertia.mjMESH_INERTIA_SHELL
         body.add_geom(
-            name=f"{prefix}_{colour}",
+            name=name,
             default=vis,
             type=mujoco.mjtGeom.mjGEOM_MESH,
             meshname=mesh.name,

@@ -30,6 +30,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from birdsim.errors import BirdsimError
 from birdsim.physics.aero import RoboflyPolar, SeedPolar
 from birdsim.physics.bird import Bird
 from birdsim.physics.jit import numba
@@ -40,6 +41,7 @@ from birdsim.physics.kernel_means import (  # _polar_force, _rot: re-exported
     _rot,  # noqa: F401
 )
 from birdsim.physics.kinematics import Joint, KinematicModel, Offset, strip_positions
+from birdsim.physics.m5 import fold_bird_error
 
 _STATE = {"ok": numba is not None, "warned": False}
 
@@ -126,7 +128,13 @@ def supported(bird: Bird) -> bool:
 
 @functools.lru_cache(maxsize=64)
 def setup(m: KinematicModel, bird: Bird) -> Setup:
-    """Encode the chains of ``m`` for ``bird`` (geometry, strips, polar) as arrays."""
+    """Encode the chains of ``m`` for ``bird`` (geometry, strips, polar) as arrays.
+
+    Raises:
+        BirdsimError: m5 for a bird without m5's geometry (one line, as evaluate_cycle).
+    """
+    if m.area_folds and (why := fold_bird_error(bird)) is not None:
+        raise BirdsimError(f"bird: {why}")  # a direct means() call gets evaluate_cycle's guard
     panels = m.chain_with_geometry(bird)
     names = tuple(j.name for j in m.joints)
     K, L = len(panels), max(len(c) for c, _, _ in panels)

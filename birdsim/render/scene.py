@@ -58,6 +58,7 @@ class Scene:
     def __init__(self, states: StateSequence | Playback, options: RenderOptions):
         import mujoco
 
+        from birdsim.mujoco.fan import PrimaryFan
         from birdsim.mujoco.model import aero_sites, build_model
         from birdsim.render.tail_pose import TailPoser
 
@@ -96,6 +97,7 @@ class Scene:
         self._torso = mujoco.mj_name2id(self.m, mujoco.mjtObj.mjOBJ_BODY, "torso")
         self._tail = getattr(states, "tail", None)  # (F, 3) elevation, spread, roll
         self._tail_poser = TailPoser(self.m, self._s) if self._tail is not None else None
+        self._fan = PrimaryFan.for_model(self.m, states.bird)  # m5: the primaries fan
         self.d = mujoco.MjData(self.m)
         self.renderer = mujoco.Renderer(self.m, options.height, options.width, max_geom=4000)
         flags = self.renderer.scene.flags
@@ -179,6 +181,8 @@ class Scene:
         self.d.qvel[:] = self.states.qvel[k]
         if self._tail_poser is not None:  # the dressed tail follows the controls
             self._tail_poser.pose(float(self._tail[k, 0]), float(self._tail[k, 2]))
+        if self._fan is not None:  # m5's primaries fan closed with the wrist's flexion
+            self._fan.pose(self.d.qpos)
         mj.mj_kinematics(self.m, self.d)
         mj.mj_comPos(self.m, self.d)
         mj.mj_camlight(self.m, self.d)
