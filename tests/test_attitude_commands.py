@@ -194,3 +194,20 @@ def test_a_turning_body_rolls_into_the_turn():
         turning, _ = measured_jacobian(fb, params, 0.14, 0.5, np.array([0.0, 0.0, -0.02]))
     assert abs(level[0]) < 1e-12
     assert turning[0] < -1e-4
+
+
+def test_a_posed_body_refuses_a_turning_path():
+    """A path that leaves the vertical plane cannot be flown posed (a posed body cannot
+    bank): one line naming the attitude and what is allowed."""
+    from birdsim.commands.fly import load_table_for
+    from birdsim.errors import BirdsimError
+    from birdsim.flight.freeflight import fly
+    from birdsim.flight.presets import DEMO_MODEL, demo_bird
+    from birdsim.flight.simulate import SimConfig
+    from birdsim.flight.turn_presets import TURN_PRESETS
+
+    bird = demo_bird()
+    table = load_table_for(bird, DEMO_MODEL, None)
+    with pytest.raises(BirdsimError, match="needs attitude='free'") as err:
+        fly(TURN_PRESETS["turn-90"], table, bird, DEMO_MODEL, config=SimConfig())
+    assert "\n" not in str(err.value)
