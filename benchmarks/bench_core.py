@@ -180,7 +180,7 @@ def main() -> None:
             1,
             0.5,
         )
-        if model != "m4":  # the appendix transcription covers the single-panel models
+        if model not in ("m4", "m5"):  # the appendix transcription: single-panel models
             times = np.linspace(0, 2 * np.pi, n, endpoint=False)
             plain = _rate(
                 lambda model=model, single_p=single_p, speed=speed, times=times: flapcost_histories(
