@@ -16,6 +16,7 @@ which is what it costs on an idle machine: the 2 cores are shared with other job
 from __future__ import annotations
 
 import argparse
+import sys
 import tempfile
 import time
 from pathlib import Path
@@ -71,7 +72,8 @@ def main() -> None:
 
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("--source", choices=("seed", "pigeon", "kinematic", "all"), default="all")
-    which = ap.parse_args().source
+    # run by benchmarks/run.py, sys.argv holds run.py's section names, not these options
+    which = ap.parse_args(sys.argv[1:] if __name__ == "__main__" else []).source
     sources = {
         "seed": lambda: _free_flight("models/seed-bird.toml", 2.0),
         "pigeon": lambda: _free_flight("models/pigeon.toml", None),
