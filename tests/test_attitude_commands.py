@@ -211,3 +211,19 @@ def test_a_posed_body_refuses_a_turning_path():
     with pytest.raises(BirdsimError, match="needs attitude='free'") as err:
         fly(TURN_PRESETS["turn-90"], table, bird, DEMO_MODEL, config=SimConfig())
     assert "\n" not in str(err.value)
+
+
+@pytest.mark.parametrize(
+    "preset, bound, measured",
+    [("take-off", 0.09, 0.0726), ("landing", 0.16, 0.130)],
+)
+def test_free_take_off_and_landing_hold_their_measured_figures(preset, bound, measured):
+    """Take-off and landing with the attitude free: NOT yet within the issue's targets
+    (1.5 x the posed 0.046 and 0.051: 0.068 and 0.077); bounded here at about 1.2 x what
+    they measured this session (docs/flight.md), so that a change which makes them worse
+    is seen; the pitch stays within 5 degrees RMS of the
+    command (measured 2.4 and 3.7)."""
+    a, s = _free(preset)
+    assert s["rms_error_after_start"] <= bound, (s["rms_error_after_start"], measured)
+    pe = _beat_means(a, "pitch")[2:] - _beat_means(a, "pitch_command")[2:]
+    assert math.degrees(np.sqrt(np.mean(pe**2))) <= 5.0
