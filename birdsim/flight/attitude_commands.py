@@ -4,12 +4,12 @@ acceleration to feed forward, and the lateral path loop's bank (roll) command.""
 
 from __future__ import annotations
 
-import functools
 import math
 
 import numpy as np
 
-from birdsim.flight.attitude import FIT_BEATS, wingbeat_fit_matrix
+from birdsim.flight.attitude import FIT_BEATS
+from birdsim.flight.flight_arrays import fit_matrix
 
 TWO_PI = 2.0 * math.pi
 #: The lateral path loop (attitude free): a side error and velocity ask for a sideways
@@ -41,11 +41,6 @@ def command_filter(
 TURN_ROLL_MAX = math.radians(60.0)
 
 
-@functools.lru_cache(maxsize=4)
-def _fit_now(n: int) -> np.ndarray:
-    return wingbeat_fit_matrix(n, TWO_PI, beats=FIT_BEATS)[0]
-
-
 def bank_command(window: list, per_beat: int, gravity: float, a_left_ref: float = 0.0) -> float:
     """The lateral path loop's roll command (rad, seed axes: right wing down > 0) from the
     last wingbeat's samples ``(y, vy)``: the bird's side offset from the path and its
@@ -60,7 +55,7 @@ def bank_command(window: list, per_beat: int, gravity: float, a_left_ref: float 
     yv = np.array(window, dtype=float)
     if len(yv) < n:
         yv = np.vstack([np.repeat(yv[:1], n - len(yv), axis=0), yv])
-    y, vy = _fit_now(n) @ yv
+    y, vy = fit_matrix(n, TWO_PI)[0] @ yv
     w = 1.0 / LATERAL_BEATS  # omega / (2 pi N), reduced units (omega = 1 per 2 pi)
     w = w / TWO_PI
     a_left = a_left_ref - (w * w * y + 2.0 * w * vy)

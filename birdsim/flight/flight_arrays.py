@@ -36,7 +36,7 @@ def attitude_estimate(
         pad = n - len(window)
         err = np.vstack([np.repeat(err[:1], pad, axis=0), err])
         rate = np.vstack([np.zeros((pad, 3)), rate])
-    fit = _fit_matrix(n, period)
+    fit = fit_matrix(n, period)
     return fit[0] @ err, fit[0] @ rate
 
 
@@ -96,7 +96,8 @@ def _qmul(p: tuple, q: tuple) -> tuple:
 
 
 @functools.lru_cache(maxsize=4)
-def _fit_matrix(n: int, period: float) -> np.ndarray:
+def fit_matrix(n: int, period: float) -> np.ndarray:
+    """:func:`birdsim.flight.attitude.wingbeat_fit_matrix` over FIT_BEATS, cached."""
     return wingbeat_fit_matrix(n, period, beats=FIT_BEATS)
 
 
@@ -147,4 +148,4 @@ def flight_arrays(record: list, rows: dict, names: tuple[str, ...]) -> dict[str,
     return arrays
 
 
-__all__ = ["attitude_estimate", "error_rotvec", "flight_arrays"]
+__all__ = ["attitude_estimate", "error_rotvec", "fit_matrix", "flight_arrays"]

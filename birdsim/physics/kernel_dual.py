@@ -16,6 +16,7 @@ import math
 import numpy as np
 
 from birdsim.physics.jit import jit as _jit
+from birdsim.physics.jit import jit_inline as _jit_inline
 
 # ---- forward-mode dual numbers: value in [0], d/d(param i) in [1 + i] ----------------
 
@@ -106,6 +107,103 @@ def _scale_by_area(gx, gz, cq, half_loss):
     gz[0] *= f0
 
 
+@_jit_inline
+def _dual_row(pitch_b, speed_b, climb_b, ip, bias_b, const, dbias, J, D, nd):
+    """A row's start, in dual numbers of width D (value, then nd parameter derivatives,
+    then any further columns): the joints' value/cos/sin/rate arrays with the constant
+    joints filled, the body pitch's cos and sin, and the freestream A in body axes."""
+    cq = np.zeros((J, D))
+    sq = np.zeros((J, D))
+    qv = np.zeros((J, D))
+    qd = np.zeros((J, D))
+    CP = np.zeros(D)
+    SP = np.zeros(D)
+    CP[0], SP[0] = math.cos(pitch_b), math.sin(pitch_b)
+    CP[1 + ip], SP[1 + ip] = -SP[0], CP[0]
+    rx, rz = speed_b, -climb_b
+    A = np.zeros((3, D))
+    for i in range(D):
+        A[0, i] = CP[i] * rx - SP[i] * rz
+        A[2, i] = SP[i] * rx + CP[i] * rz
+    for j in range(J):
+        if const[j]:
+            q = bias_b[j]
+            c, s = math.cos(q), math.sin(q)
+            qv[j, 0], cq[j, 0], sq[j, 0] = q, c, s
+            for i in range(1, nd + 1):
+                qv[j, i] = dbias[j, i - 1]
+                cq[j, i] = -s * dbias[j, i - 1]
+                sq[j, i] = c * dbias[j, i - 1]
+    return cq, sq, qv, qd, CP, SP, A
+
+
+@_jit_inline
+def _dual_joints(
+    ct_t, st_t, cph, sph, amp_b, bias_b, const, damp, dphase, dbias, omega, nd, qv, cq, sq, qd
+):
+    """The oscillating joints' angles (value, cos, sin) and rates at one phase, in dual
+    numbers over the nd parameters."""
+    for j in range(amp_b.shape[0]):
+        if not const[j]:
+            sarg = st_t * cph[j] + ct_t * sph[j]
+            carg = ct_t * cph[j] - st_t * sph[j]
+            am = amp_b[j]
+            q = am * sarg + bias_b[j]
+            c, s = math.cos(q), math.sin(q)
+            qv[j, 0], cq[j, 0], sq[j, 0] = q, c, s
+            qd[j, 0] = (am * omega) * carg
+            for i in range(1, nd + 1):
+                dq = damp[j, i - 1] * sarg + am * carg * dphase[j, i - 1] + dbias[j, i - 1]
+                qv[j, i] = dq
+                cq[j, i] = -s * dq
+                sq[j, i] = c * dq
+                qd[j, i] = omega * (damp[j, i - 1] * carg - am * sarg * dphase[j, i - 1])
+
+
+@_jit_inline
+def _dual_chain(k, e, L, kind, joint, axis, span, radius, qv, qd, cq, sq, p, vf, dv):
+    """Strip e of panel k: its control point p and flapping velocity vf (body axes, dual
+    numbers), walked from the panel up the joint chain."""
+    D = p.shape[1]
+    p[:, :] = 0.0
+    vf[:, :] = 0.0
+    p[1, 0] = radius[k, e]
+    for il in range(L - 1, -1, -1):
+        kd = kind[k, il]
+        if kd == 0:
+            p[1, 0] += span[k, il]
+            continue
+        j = joint[k, il]
+        a = axis[k, il]
+        dv[:, :] = 0.0
+        if kd == 2:
+            for i in range(D):
+                p[a, i] += qv[j, i]
+                dv[a, i] = qd[j, i]
+        else:
+            _drot(p, a, cq[j], sq[j], -1.0)
+            _drot(vf, a, cq[j], sq[j], -1.0)
+            # dv = qd * (e_a x p)
+            if a == 0:
+                r1, r2, o1, o2 = 1, 2, 2, 1  # (0, -z, y)
+                sg1, sg2 = -1.0, 1.0
+            elif a == 1:
+                r1, r2, o1, o2 = 0, 2, 2, 0  # (z, 0, -x)
+                sg1, sg2 = 1.0, -1.0
+            else:
+                r1, r2, o1, o2 = 0, 1, 1, 0  # (-y, x, 0)
+                sg1, sg2 = -1.0, 1.0
+            w0, a1, a2 = qd[j, 0], p[o1, 0], p[o2, 0]
+            dv[r1, 0] = sg1 * w0 * a1
+            dv[r2, 0] = sg2 * w0 * a2
+            for i in range(1, D):
+                dv[r1, i] = sg1 * (w0 * p[o1, i] + qd[j, i] * a1)
+                dv[r2, i] = sg2 * (w0 * p[o2, i] + qd[j, i] * a2)
+        for cc in range(3):
+            for i in range(D):
+                vf[cc, i] += dv[cc, i]
+
+
 @_jit
 def _grad_kernel(
     lo,
@@ -143,28 +241,9 @@ def _grad_kernel(
     for b in range(lo, hi):
         cph = np.cos(phase[b])
         sph = np.sin(phase[b])
-        cq = np.zeros((J, D))
-        sq = np.zeros((J, D))
-        qv = np.zeros((J, D))
-        qd = np.zeros((J, D))
-        CP = np.zeros(D)
-        SP = np.zeros(D)
-        CP[0], SP[0] = math.cos(pitch[b]), math.sin(pitch[b])
-        CP[1 + ip], SP[1 + ip] = -SP[0], CP[0]
-        rx, rz = speed[b], -climb[b]
-        A = np.zeros((3, D))
-        for i in range(D):
-            A[0, i] = CP[i] * rx - SP[i] * rz
-            A[2, i] = SP[i] * rx + CP[i] * rz
-        for j in range(J):
-            if const[j]:
-                q = bias[b, j]
-                c, s = math.cos(q), math.sin(q)
-                qv[j, 0], cq[j, 0], sq[j, 0] = q, c, s
-                for i in range(1, D):
-                    qv[j, i] = dbias[j, i - 1]
-                    cq[j, i] = -s * dbias[j, i - 1]
-                    sq[j, i] = c * dbias[j, i - 1]
+        cq, sq, qv, qd, CP, SP, A = _dual_row(
+            pitch[b], speed[b], climb[b], ip, bias[b], const, dbias, J, D, D - 1
+        )
         p = np.zeros((3, D))
         vf = np.zeros((3, D))  # flapping velocity (both groups: only their sum is needed here)
         v = np.zeros((3, D))
@@ -174,24 +253,29 @@ def _grad_kernel(
         gz = np.zeros(D)
         acc = np.zeros((4, D))
         for t in range(N):
-            for j in range(J):
-                if not const[j]:
-                    sarg = stt[t] * cph[j] + ct[t] * sph[j]
-                    carg = ct[t] * cph[j] - stt[t] * sph[j]
-                    am = amp[b, j]
-                    q = am * sarg + bias[b, j]
-                    c, s = math.cos(q), math.sin(q)
-                    qv[j, 0], cq[j, 0], sq[j, 0] = q, c, s
-                    qd[j, 0] = (am * omega) * carg
-                    for i in range(1, D):
-                        dq = damp[j, i - 1] * sarg + am * carg * dphase[j, i - 1] + dbias[j, i - 1]
-                        qv[j, i] = dq
-                        cq[j, i] = -s * dq
-                        sq[j, i] = c * dq
-                        qd[j, i] = omega * (damp[j, i - 1] * carg - am * sarg * dphase[j, i - 1])
+            _dual_joints(
+                ct[t],
+                stt[t],
+                cph,
+                sph,
+                amp[b],
+                bias[b],
+                const,
+                damp,
+                dphase,
+                dbias,
+                omega,
+                D - 1,
+                qv,
+                cq,
+                sq,
+                qd,
+            )
             for k in range(K):
                 L = length[k]
                 for e in range(strips[k]):
+                    # _dual_chain written out: as a call (even inlined by numba) it cost this
+                    # kernel 15-45 % of its speed (measured side by side, base to m5)
                     p[:, :] = 0.0
                     vf[:, :] = 0.0
                     p[1, 0] = radius[k, e]

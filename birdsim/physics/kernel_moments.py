@@ -13,13 +13,18 @@ assembles the whole bird's values and Jacobians.  None where the kernel cannot r
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from birdsim.physics import kernel
 from birdsim.physics.jit import jit as _jit
-from birdsim.physics.kernel_dual import _dpolar, _drot, _scale_by_area
+from birdsim.physics.kernel_dual import (
+    _dpolar,
+    _drot,
+    _dual_chain,
+    _dual_joints,
+    _dual_row,
+    _scale_by_area,
+)
 from birdsim.physics.wing_sides import MIRROR_F, MIRROR_M, drag_body, sides
 
 
@@ -139,32 +144,13 @@ def _moments_kernel(
     for b in range(lo, hi):
         cph = np.cos(phase[b])
         sph = np.sin(phase[b])
-        cq = np.zeros((J, D))
-        sq = np.zeros((J, D))
-        qv = np.zeros((J, D))
-        qd = np.zeros((J, D))
-        CP = np.zeros(D)
-        SP = np.zeros(D)
-        CP[0], SP[0] = math.cos(pitch[b]), math.sin(pitch[b])
-        CP[1 + ip], SP[1 + ip] = -SP[0], CP[0]
-        rx, rz = speed[b], -climb[b]
-        A = np.zeros((3, D))
-        for i in range(D):
-            A[0, i] = CP[i] * rx - SP[i] * rz
-            A[2, i] = SP[i] * rx + CP[i] * rz
+        cq, sq, qv, qd, CP, SP, A = _dual_row(
+            pitch[b], speed[b], climb[b], ip, bias[b], const, dbias, J, D, d
+        )
         W = np.zeros((3, D))  # the body rate: value and d/d(p, q, r)
         for cc in range(3):
             W[cc, 0] = rate[b, cc]
             W[cc, 1 + d + cc] = 1.0
-        for j in range(J):
-            if const[j]:
-                q = bias[b, j]
-                c, s = math.cos(q), math.sin(q)
-                qv[j, 0], cq[j, 0], sq[j, 0] = q, c, s
-                for i in range(1, d + 1):
-                    qv[j, i] = dbias[j, i - 1]
-                    cq[j, i] = -s * dbias[j, i - 1]
-                    sq[j, i] = c * dbias[j, i - 1]
         p = np.zeros((3, D))
         vf = np.zeros((3, D))
         v = np.zeros((3, D))
@@ -174,60 +160,28 @@ def _moments_kernel(
         gz = np.zeros(D)
         acc = np.zeros((6, D))
         for t in range(N):
-            for j in range(J):
-                if not const[j]:
-                    sarg = stt[t] * cph[j] + ct[t] * sph[j]
-                    carg = ct[t] * cph[j] - stt[t] * sph[j]
-                    am = amp[b, j]
-                    q = am * sarg + bias[b, j]
-                    c, s = math.cos(q), math.sin(q)
-                    qv[j, 0], cq[j, 0], sq[j, 0] = q, c, s
-                    qd[j, 0] = (am * omega) * carg
-                    for i in range(1, d + 1):
-                        dq = damp[j, i - 1] * sarg + am * carg * dphase[j, i - 1] + dbias[j, i - 1]
-                        qv[j, i] = dq
-                        cq[j, i] = -s * dq
-                        sq[j, i] = c * dq
-                        qd[j, i] = omega * (damp[j, i - 1] * carg - am * sarg * dphase[j, i - 1])
+            _dual_joints(
+                ct[t],
+                stt[t],
+                cph,
+                sph,
+                amp[b],
+                bias[b],
+                const,
+                damp,
+                dphase,
+                dbias,
+                omega,
+                d,
+                qv,
+                cq,
+                sq,
+                qd,
+            )
             for k in range(K):
                 L = length[k]
                 for e in range(strips[k]):
-                    p[:, :] = 0.0
-                    vf[:, :] = 0.0
-                    p[1, 0] = radius[k, e]
-                    for il in range(L - 1, -1, -1):
-                        kd = kind[k, il]
-                        if kd == 0:
-                            p[1, 0] += span[k, il]
-                            continue
-                        j = joint[k, il]
-                        a = axis[k, il]
-                        dv[:, :] = 0.0
-                        if kd == 2:
-                            for i in range(D):
-                                p[a, i] += qv[j, i]
-                                dv[a, i] = qd[j, i]
-                        else:
-                            _drot(p, a, cq[j], sq[j], -1.0)
-                            _drot(vf, a, cq[j], sq[j], -1.0)
-                            if a == 0:
-                                r1, r2, o1, o2 = 1, 2, 2, 1
-                                sg1, sg2 = -1.0, 1.0
-                            elif a == 1:
-                                r1, r2, o1, o2 = 0, 2, 2, 0
-                                sg1, sg2 = 1.0, -1.0
-                            else:
-                                r1, r2, o1, o2 = 0, 1, 1, 0
-                                sg1, sg2 = -1.0, 1.0
-                            w0, a1, a2 = qd[j, 0], p[o1, 0], p[o2, 0]
-                            dv[r1, 0] = sg1 * w0 * a1
-                            dv[r2, 0] = sg2 * w0 * a2
-                            for i in range(1, D):
-                                dv[r1, i] = sg1 * (w0 * p[o1, i] + qd[j, i] * a1)
-                                dv[r2, i] = sg2 * (w0 * p[o2, i] + qd[j, i] * a2)
-                        for cc in range(3):
-                            for i in range(D):
-                                vf[cc, i] += dv[cc, i]
+                    _dual_chain(k, e, L, kind, joint, axis, span, radius, qv, qd, cq, sq, p, vf, dv)
                     # air velocity: body + flapping + omega x r (dual products)
                     for cc in range(3):
                         c1, c2 = (cc + 1) % 3, (cc + 2) % 3
