@@ -83,6 +83,8 @@ JAC_DV = 0.05
 JAC_DPITCH = 0.1
 #: ... and the change of a turn's body rates (rad per time unit) that does.
 JAC_DRATE = 0.002
+#: Cancel the flapping's rate derivatives in the demand (:func:`measured_rate_derivatives`).
+RATE_CANCEL = True
 #: Regularisation of the allocation (relative to the inputs' bounds).
 LAMBDA = 1e-4
 #: The integral's share of the moment is bounded by this many times the inertia x
@@ -152,6 +154,19 @@ def attitude_gains(omega: float = 1.0, beats: object = AXIS_BEATS) -> AttitudeGa
     return AttitudeGains(wa, 3.0 * wa * wa, 3.0 * wa, wa**3)
 
 
+def damped_gains(omega_a: np.ndarray, damping: np.ndarray) -> AttitudeGains:
+    """Per axis gains (per unit inertia) for a body whose wingbeat-mean rotation already
+    has the damping ``c`` (per unit inertia, >= 0; the flapping's, measured): closed-loop
+    poles at ``-p`` and a double pole at ``-omega_a``, ``p = max(c, omega_a)`` (the
+    natural pole kept where it is faster than the design): ``Kd = p + 2 omega_a - c``,
+    ``Kp = 2 p omega_a + omega_a^2``, ``Ki = p omega_a^2``; at ``c = 0`` the triple pole
+    of :func:`attitude_gains`."""
+    wa = np.asarray(omega_a, dtype=float)
+    c = np.asarray(damping, dtype=float)
+    p = np.maximum(c, wa)
+    return AttitudeGains(wa, 2.0 * p * wa + wa * wa, p + 2.0 * wa - c, p * wa * wa)
+
+
 def measured_jacobian(
     fb, params: np.ndarray, pitch: float, speed: float, omega_body: np.ndarray | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
@@ -212,6 +227,68 @@ def measured_jacobian(
     return m0, jac
 
 
+#: Step of the rate derivatives (:func:`measured_rate_derivatives`, rad per time unit).
+RATE_STEP = 0.01
+
+
+def measured_rate_derivatives(
+    fb, params: np.ndarray, pitch: float, speed: float, omega_body: np.ndarray | None = None
+) -> np.ndarray:
+    """(3, 3): the wingbeat-mean moment's derivatives (seed body axes, about the centre of
+    mass) with respect to the body rates p, q, r (seed body axes), measured like
+    :func:`measured_jacobian` (the same wingbeat, every input at zero; one-sided steps of
+    :data:`RATE_STEP` from the body turning at ``omega_body``).  The
+    flapping's damping (cruise, seed bird: dMx/dp -0.39, dMz/dr -0.05 weight x semispan
+    per rad per time unit) and its cross terms (dMx/dr +0.31: the outer wing's faster
+    air) act at once on the body: the attitude loop cancels them
+    (:meth:`AttitudeLoop.update`)."""
+    m, cb, sched = fb.m, fb.cb, fb.schedule
+    d = getattr(fb, "_jac_data", None)
+    if d is None:
+        d = fb._jac_data = mujoco.MjData(m)
+    n = JAC_SAMPLES
+    times = np.arange(n) * (fb.red.period / n)
+    names = sched.names
+    right, left, sh, tail = split_inputs(names, params, np.zeros(len(INPUTS)))
+    z = np.zeros((n, len(names)))
+    sw = np.repeat([np.concatenate([sh, sh])], n, axis=0)
+    pres = sched.prescribe(
+        times,
+        np.repeat([right], n, axis=0),
+        z,
+        z,
+        left=(np.repeat([left], n, axis=0), z, z),
+        shoulder=(sw, np.zeros_like(sw), np.zeros_like(sw)),
+    )
+    c = np.array([1.0, -1.0, -1.0])  # seed <-> MuJoCo axes
+    base = np.zeros(3) if omega_body is None else np.asarray(omega_body, dtype=float)
+    states = [base] + [base + RATE_STEP * np.eye(3)[i] for i in range(3)]
+    wind = m.opt.wind.copy()
+    saved = cb.tail_controls
+    m.opt.wind[:] = 0.0
+    cb.tail_controls = tail
+    quat = pitch_quat(pitch)
+    out = []
+    try:
+        for omega in states:
+            acc = np.zeros(3)
+            for k in range(n):
+                d.qpos[:] = pres.qpos[k]
+                d.qvel[:] = pres.qvel[k]
+                d.qpos[:3] = (0.0, 0.0, 6.0)
+                d.qpos[3:7] = quat
+                d.qvel[:3] = (speed, 0.0, 0.0)
+                d.qvel[3:6] = omega * c
+                mujoco.mj_fwdPosition(m, d)
+                mujoco.mj_fwdVelocity(m, d)
+                acc += d.qfrc_passive[3:6]
+            out.append(acc / n * c)
+    finally:
+        m.opt.wind[:] = wind
+        cb.tail_controls = saved
+    return np.stack([(o - out[0]) / RATE_STEP for o in out[1:]], axis=1)
+
+
 def _unit(i: int) -> np.ndarray:
     """The inputs with input ``i - 1`` at :data:`JAC_STEP` (``i = 0``: all zero)."""
     u = np.zeros(len(INPUTS))
@@ -259,6 +336,8 @@ class AttitudeLoop:
         self.u = np.zeros(len(INPUTS))
         self.saturated = False
         self._jac: tuple[float, np.ndarray, np.ndarray, float] | None = None
+        #: the moment's rate derivatives (3, 3) measured with the Jacobians
+        self.rate_jac = np.zeros((3, 3))
         self._turn = np.zeros(3)  # the turning rates the Jacobians were measured at
         self.kinds = INPUTS
 
@@ -273,9 +352,10 @@ class AttitudeLoop:
             return
         m0, jac = measured_jacobian(self.fb, params, pitch, max(speed, 0.0))
         self._jac = (speed, m0, jac, pitch)
-        g = self.gains
-        lim = INTEGRAL_LIMIT_RAD * g.omega_a**2 / g.ki
-        self.integral = np.clip((m0 - np.asarray(moment)) / (self.inertia * g.ki), -lim, lim)
+        if RATE_CANCEL:
+            self.rate_jac = measured_rate_derivatives(self.fb, params, pitch, max(speed, 0.0))
+        lim = INTEGRAL_LIMIT_RAD * self.gains.omega_a**2
+        self.integral = np.clip((m0 - np.asarray(moment)) / self.inertia, -lim, lim)
 
     def bounds(self, params: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         kin = self.fb.kin
@@ -333,16 +413,29 @@ class AttitudeLoop:
             m0, jac = measured_jacobian(
                 self.fb, at, jp, max(speed, 0.0), turn if turn.any() else None
             )
+            if RATE_CANCEL:
+                self.rate_jac = measured_rate_derivatives(
+                    self.fb, at, jp, max(speed, 0.0), turn if turn.any() else None
+                )
             self._jac = (speed, m0, jac, jp)
             self._turn = turn
         _, m0, jac, _ = self._jac
-        g = self.gains
-        lim = INTEGRAL_LIMIT_RAD * g.omega_a**2 / g.ki
+        # the flapping's own damping (each axis, >= 0) is part of the plant the gains are
+        # placed for; what is left of the rate derivatives (cross terms, any negative
+        # damping) is cancelled with the estimated rates
+        damping = np.maximum(-np.diag(self.rate_jac), 0.0) if RATE_CANCEL else np.zeros(3)
+        g = damped_gains(self.gains.omega_a, damping / self.inertia)
+        lim = INTEGRAL_LIMIT_RAD * g.omega_a**2
         if not self.saturated:  # anti-windup: frozen while the inputs are at their bounds
-            self.integral = np.clip(self.integral + dt * err, -lim, lim)
+            self.integral = np.clip(self.integral + dt * g.ki * err, -lim, lim)
         rate_err = (0.0 if rate_cmd is None else rate_cmd) - rates
         acc = 0.0 if acc_cmd is None else acc_cmd
-        demand = self.inertia * (acc + g.kp * err + g.kd * rate_err + g.ki * self.integral) - m0
+        demand = self.inertia * (acc + g.kp * err + g.kd * rate_err + self.integral) - m0
+        residual = self.rate_jac + np.diag(damping)
+        demand -= residual @ (np.asarray(rates, dtype=float) - turn)
+        # the damping opposes the commanded rotation too: fed forward (the damping then
+        # acts on the rate error only, as the gains assume)
+        demand += damping * (rate_err + np.asarray(rates, dtype=float) - turn)
         lo, hi = self.bounds(params)
         u = np.zeros(len(INPUTS))
         miss = 0.0
@@ -376,5 +469,6 @@ __all__ = [
     "attitude_gains",
     "euler_zyx",
     "measured_jacobian",
+    "measured_rate_derivatives",
     "split_inputs",
 ]
