@@ -23,6 +23,7 @@ from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.demand_schedule import DemandSchedule, RefState
 from birdsim.flight.flight_arrays import attitude_estimate, flight_arrays
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
+from birdsim.flight.pitch_plan import PitchPlan
 from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
 from birdsim.flight.track import TrackFrame, is_three_d
 from birdsim.flight.trim import sample_reference, trim_start
@@ -45,6 +46,8 @@ SP_MARGIN = 0.8
 #: smoothing: measured over 0, 3/16, 3/8 and 0.6, 3/8 flew take-off best (path RMS
 #: 0.0804, 0.0739, 0.0726, 0.0751) with cruise unchanged (docs/flight.md).
 SP_LEAD = 0.375
+#: Plan the free body's pitch command along the known path (birdsim.flight.pitch_plan).
+PITCH_PLAN = True
 #: Turning: the bank is asked for the path's centripetal acceleration BANK_LEAD wingbeats
 #: ahead (the roll loop's lag) through a second-order filter of BANK_BEATS.
 BANK_LEAD = 1.0
@@ -201,6 +204,15 @@ def fly(
             if compensate
             else None
         )
+        plan = None
+        if compensate and track is None and PITCH_PLAN and "pitch" in names:
+            plan = PitchPlan(
+                lambda tt: _feedforward_pitch(ctl, path, tt, names),
+                n_ctl,
+                steps_ctl * h,
+                tau_ref,
+                float(fb.schedule.output[names.index("pitch")]),
+            )
         roll_ref = roll_rate_ref = roll_acc_ref = 0.0  # turning's bank command (filtered)
         att_window: list[tuple[np.ndarray, np.ndarray]] = []
         lat_window: list[tuple[float, float]] = []
@@ -231,9 +243,12 @@ def fly(
                 # the body's pitch command: the table's pitch through a critically damped
                 # second-order filter of time constant PITCH_COMMAND_BEATS (the stroke
                 # plane takes the difference); its rate and acceleration feed forward
-                pitch_ref, pitch_rate_ref, pitch_acc_ref = command_filter(
-                    pitch_ref, pitch_rate_ref, pitch, tau_ref, dt_ctl
-                )
+                if plan is not None:  # planned along the known path (no lag)
+                    pitch_ref, pitch_rate_ref, pitch_acc_ref = plan.step(k, pitch)
+                else:
+                    pitch_ref, pitch_rate_ref, pitch_acc_ref = command_filter(
+                        pitch_ref, pitch_rate_ref, pitch, tau_ref, dt_ctl
+                    )
                 if track is None:
                     roll_cmd = bank_command(lat_window, config.log_per_beat, red.gravity)
                     yaw_cmd = yaw_rate = 0.0
@@ -341,6 +356,16 @@ def fly(
     result.meta["attitude"] = config.attitude
     result.meta["attitude_loop"] = bool(free and attitude_loop)
     return result
+
+
+def _feedforward_pitch(ctl: Controller, path: Any, t: float, names: tuple) -> float:
+    """The table's pitch (with the air-path angle) of ``path``'s feed-forward at ``t`` (no
+    error, no wind; the body drag at that pitch: three fixed-point steps from 0)."""
+    p = 0.0
+    zero = np.zeros(2)
+    for _ in range(3):
+        p = float(ctl.command(path.state(t), None, zero, p).params[names.index("pitch")])
+    return p
 
 
 def _identity_if(flag: bool) -> Any:
