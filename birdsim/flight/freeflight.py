@@ -27,7 +27,7 @@ from birdsim.flight.pitch_plan import PitchPlan
 from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
 from birdsim.flight.track import TrackFrame, is_three_d
 from birdsim.flight.trim import sample_reference, trim_start
-from birdsim.flight.wingbeat import WingbeatSchedule
+from birdsim.flight.wingbeat import INPUT_SMOOTHING_BEATS, WingbeatSchedule
 from birdsim.physics.bird import Bird
 from birdsim.physics.units import reduced_bird, scales
 
@@ -42,10 +42,10 @@ PITCH_COMMAND_BEATS = 3.0
 #: the optimiser's search, not the shoulder).
 SP_MARGIN = 0.8
 #: Wingbeats ahead the stroke plane's compensation predicts the body's pitch (the
-#: estimated pitch rate times this), against the lag of the estimate and the inputs'
-#: smoothing: measured over 0, 3/16, 3/8 and 0.6, 3/8 flew take-off best (path RMS
-#: 0.0804, 0.0739, 0.0726, 0.0751) with cruise unchanged (docs/flight.md).
-SP_LEAD = 0.375
+#: estimated pitch rate times this): the lag of the offset's smoothing, two cascaded
+#: filters of INPUT_SMOOTHING_BEATS.  Measured (take-off / landing path RMS): 0: 0.032 /
+#: 0.048, 0.2: 0.034 / 0.042, 0.25: 0.034 / 0.042, 0.375: 0.036 / 0.044 (docs/flight.md).
+SP_LEAD = 2.0 * INPUT_SMOOTHING_BEATS
 #: Plan the free body's pitch command along the known path (birdsim.flight.pitch_plan).
 PITCH_PLAN = True
 #: Turning: the bank is asked for the path's centripetal acceleration BANK_LEAD wingbeats
@@ -275,7 +275,13 @@ def fly(
                     offset = np.zeros(len(names))
                     # the body's pitch predicted SP_LEAD ahead (the estimate lags)
                     lead = float(rates[1]) * SP_LEAD * TWO_PI
-                    sp = cmd.params[sp_index] + pitch - (body_pitch + lead)
+                    # the table's pitch as its target (cmd.params), not the schedule's
+                    # smoothed output: the offset is smoothed by the same filters as the
+                    # stroke plane's target, so the world stroke plane follows the table's
+                    # as the posed body's does (the smoothed output, smoothed again, lagged
+                    # the table by a wingbeat: take-off 0.072, landing 0.102)
+                    p_table = cmd.params[names.index("pitch")] if "pitch" in names else pitch
+                    sp = cmd.params[sp_index] + p_table - (body_pitch + lead)
                     offset[sp_index] = float(np.clip(sp, *sp_bounds)) - cmd.params[sp_index]
                 right, left, shoulder, tail = att.update(
                     cmd.params,
