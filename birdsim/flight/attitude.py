@@ -423,7 +423,8 @@ class AttitudeLoop:
         # the flapping's own damping (each axis, >= 0) is part of the plant the gains are
         # placed for; what is left of the rate derivatives (cross terms, any negative
         # damping) is cancelled with the estimated rates
-        damping = np.maximum(-np.diag(self.rate_jac), 0.0) if RATE_CANCEL else np.zeros(3)
+        d_used = self.rate_jac if RATE_CANCEL else np.zeros((3, 3))
+        damping = np.maximum(-np.diag(d_used), 0.0)
         g = damped_gains(self.gains.omega_a, damping / self.inertia)
         lim = INTEGRAL_LIMIT_RAD * g.omega_a**2
         if not self.saturated:  # anti-windup: frozen while the inputs are at their bounds
@@ -431,7 +432,7 @@ class AttitudeLoop:
         rate_err = (0.0 if rate_cmd is None else rate_cmd) - rates
         acc = 0.0 if acc_cmd is None else acc_cmd
         demand = self.inertia * (acc + g.kp * err + g.kd * rate_err + self.integral) - m0
-        residual = self.rate_jac + np.diag(damping)
+        residual = d_used + np.diag(damping)
         demand -= residual @ (np.asarray(rates, dtype=float) - turn)
         # the damping opposes the commanded rotation too: fed forward (the damping then
         # acts on the rate error only, as the gains assume)
