@@ -41,8 +41,16 @@ import mujoco
 import numpy as np
 from scipy.optimize import lsq_linear
 
-from birdsim.mujoco.model import pitch_quat
-from birdsim.mujoco.tail import ELEVATION_MAX, ROLL_MAX, TailControls
+from birdsim.flight.attitude_jacobians import (
+    INPUTS,
+    JAC_SAMPLES,
+    JAC_STEP,
+    SHOULDER_BOUND,
+    measured_jacobian,
+    measured_rate_derivatives,
+    split_inputs,
+)
+from birdsim.mujoco.tail import TailControls
 
 #: Wingbeats per time constant of the attitude loop.  Measured (seed bird): without the
 #: stroke plane's compensation 0.5, 1 and 1.5 wingbeats limit-cycled at a period of two
@@ -55,28 +63,10 @@ ATTITUDE_BEATS = 2.0
 #: gust's roll and yaw are back within 2 degrees in 4 wingbeats (3: 5 and 3 degrees
 #: still after 8).
 AXIS_BEATS = (2.0, ATTITUDE_BEATS, 2.0)
-#: The inputs: (name, kind, bound in rad).  The wing inputs and their signs are those of
-#: ``birdsim.physics.moments.CONTROL_INPUTS`` (the differential stroke plane rolls the
-#: bird most strongly, the differential flap and twist yaw it, the symmetric sweep
-#: pitches it), plus the tail's.  kind: "diff" (right +u/2, left -u/2 on the
-#: wing parameter), "sweep" (symmetric sweep offset of both shoulders), "tail".
-SHOULDER_BOUND = 0.3
-INPUTS = (
-    ("flap_amp", "diff", 0.15),
-    ("twist_amp", "diff", 0.15),
-    ("sweep", "shoulder", SHOULDER_BOUND),
-    ("tail_elevation", "tail", ELEVATION_MAX),
-    ("tail_roll", "tail", ROLL_MAX),
-    ("stroke_plane", "diff", 0.15),
-    ("dihedral", "shoulder", SHOULDER_BOUND),
-)
 #: The moment rows and the inputs of the two allocations: pitch by the symmetric inputs
 #: (sweep, tail elevation), roll and yaw by the differential ones.
 SYM_ROWS, SYM_INPUTS = [1], [2, 3, 6]
 LAT_ROWS, LAT_INPUTS = [0, 2], [0, 1, 4, 5]
-#: Phases per wingbeat of a Jacobian measurement and the input step (rad).
-JAC_SAMPLES = 16
-JAC_STEP = 0.02
 #: Airspeed change (semispan omega) and pitch command change (rad) that trigger a new
 #: Jacobian.
 JAC_DV = 0.05
@@ -165,159 +155,6 @@ def damped_gains(omega_a: np.ndarray, damping: np.ndarray) -> AttitudeGains:
     c = np.asarray(damping, dtype=float)
     p = np.maximum(c, wa)
     return AttitudeGains(wa, 2.0 * p * wa + wa * wa, p + 2.0 * wa - c, p * wa * wa)
-
-
-def measured_jacobian(
-    fb, params: np.ndarray, pitch: float, speed: float, omega_body: np.ndarray | None = None
-) -> tuple[np.ndarray, np.ndarray]:
-    """(M_0 (3,), J (3, k)): the wingbeat-mean moment (seed body axes) with every input
-    at zero and its one-sided derivatives, measured in MuJoCo (see the module); the body
-    turning at ``omega_body`` (seed body axes; a steady turn's rates: the outer wing's
-    faster air is in M_0), else not rotating."""
-
-    m, cb, sched = fb.m, fb.cb, fb.schedule
-    d = getattr(fb, "_jac_data", None)
-    if d is None:  # a second MjData, kept for the next measurement
-        d = fb._jac_data = mujoco.MjData(m)
-    n = JAC_SAMPLES
-    times = np.arange(n) * (fb.red.period / n)
-    names = sched.names
-    wind = m.opt.wind.copy()
-    saved = cb.tail_controls
-    m.opt.wind[:] = 0.0
-    quat = pitch_quat(pitch)
-    omega_mj = np.zeros(3) if omega_body is None else np.asarray(omega_body) * (1.0, -1.0, -1.0)
-    k_in = len(INPUTS) + 1
-    # every input's wingbeat in one prescription (per sample: the same numbers as one
-    # prescription per input)
-    split = [split_inputs(names, params, _unit(i)) for i in range(k_in)]
-    z = np.zeros((n * k_in, len(names)))
-    sw = np.repeat([np.concatenate([sp[2], sp[2]]) for sp in split], n, axis=0)
-    pres = sched.prescribe(
-        np.tile(times, k_in),
-        np.repeat([sp[0] for sp in split], n, axis=0),
-        z,
-        z,
-        left=(np.repeat([sp[1] for sp in split], n, axis=0), z, z),
-        shoulder=(sw, np.zeros_like(sw), np.zeros_like(sw)),
-    )
-    out = []
-    fwd_pos, fwd_vel = mujoco.mj_fwdPosition, mujoco.mj_fwdVelocity
-    try:
-        for i in range(k_in):
-            cb.tail_controls = split[i][3]
-            acc = np.zeros(3)
-            for k in range(i * n, (i + 1) * n):
-                d.qpos[:] = pres.qpos[k]
-                d.qvel[:] = pres.qvel[k]
-                d.qpos[:3] = (0.0, 0.0, 6.0)
-                d.qpos[3:7] = quat
-                d.qvel[:3] = (speed, 0.0, 0.0)
-                d.qvel[3:6] = omega_mj
-                # the passive forces (the callback) need only positions and velocities
-                fwd_pos(m, d)
-                fwd_vel(m, d)
-                acc += d.qfrc_passive[3:6]
-            out.append(acc / n * np.array([1.0, -1.0, -1.0]))
-    finally:
-        m.opt.wind[:] = wind
-        cb.tail_controls = saved
-    m0 = out[0]
-    jac = np.stack([(o - m0) / JAC_STEP for o in out[1:]], axis=1)
-    return m0, jac
-
-
-#: Step of the rate derivatives (:func:`measured_rate_derivatives`, rad per time unit).
-RATE_STEP = 0.01
-
-
-def measured_rate_derivatives(
-    fb, params: np.ndarray, pitch: float, speed: float, omega_body: np.ndarray | None = None
-) -> np.ndarray:
-    """(3, 3): the wingbeat-mean moment's derivatives (seed body axes, about the centre of
-    mass) with respect to the body rates p, q, r (seed body axes), measured like
-    :func:`measured_jacobian` (the same wingbeat, every input at zero; one-sided steps of
-    :data:`RATE_STEP` from the body turning at ``omega_body``).  The
-    flapping's damping (cruise, seed bird: dMx/dp -0.39, dMz/dr -0.05 weight x semispan
-    per rad per time unit) and its cross terms (dMx/dr +0.31: the outer wing's faster
-    air) act at once on the body: the attitude loop cancels them
-    (:meth:`AttitudeLoop.update`)."""
-    m, cb, sched = fb.m, fb.cb, fb.schedule
-    d = getattr(fb, "_jac_data", None)
-    if d is None:
-        d = fb._jac_data = mujoco.MjData(m)
-    n = JAC_SAMPLES
-    times = np.arange(n) * (fb.red.period / n)
-    names = sched.names
-    right, left, sh, tail = split_inputs(names, params, np.zeros(len(INPUTS)))
-    z = np.zeros((n, len(names)))
-    sw = np.repeat([np.concatenate([sh, sh])], n, axis=0)
-    pres = sched.prescribe(
-        times,
-        np.repeat([right], n, axis=0),
-        z,
-        z,
-        left=(np.repeat([left], n, axis=0), z, z),
-        shoulder=(sw, np.zeros_like(sw), np.zeros_like(sw)),
-    )
-    c = np.array([1.0, -1.0, -1.0])  # seed <-> MuJoCo axes
-    base = np.zeros(3) if omega_body is None else np.asarray(omega_body, dtype=float)
-    states = [base] + [base + RATE_STEP * np.eye(3)[i] for i in range(3)]
-    wind = m.opt.wind.copy()
-    saved = cb.tail_controls
-    m.opt.wind[:] = 0.0
-    cb.tail_controls = tail
-    quat = pitch_quat(pitch)
-    out = []
-    try:
-        for omega in states:
-            acc = np.zeros(3)
-            for k in range(n):
-                d.qpos[:] = pres.qpos[k]
-                d.qvel[:] = pres.qvel[k]
-                d.qpos[:3] = (0.0, 0.0, 6.0)
-                d.qpos[3:7] = quat
-                d.qvel[:3] = (speed, 0.0, 0.0)
-                d.qvel[3:6] = omega * c
-                mujoco.mj_fwdPosition(m, d)
-                mujoco.mj_fwdVelocity(m, d)
-                acc += d.qfrc_passive[3:6]
-            out.append(acc / n * c)
-    finally:
-        m.opt.wind[:] = wind
-        cb.tail_controls = saved
-    return np.stack([(o - out[0]) / RATE_STEP for o in out[1:]], axis=1)
-
-
-def _unit(i: int) -> np.ndarray:
-    """The inputs with input ``i - 1`` at :data:`JAC_STEP` (``i = 0``: all zero)."""
-    u = np.zeros(len(INPUTS))
-    if i:
-        u[i - 1] = JAC_STEP
-    return u
-
-
-def split_inputs(
-    names: tuple[str, ...], params: np.ndarray, u: np.ndarray
-) -> tuple[np.ndarray, np.ndarray, float, TailControls]:
-    """(right params, left params, shoulder offsets (sweep, dihedral), tail controls) for
-    inputs ``u``."""
-    right = np.array(params, dtype=float)
-    left = right.copy()
-    shoulder = np.zeros(2)
-    elevation = roll = 0.0
-    for (name, kind, _), ui in zip(INPUTS, u):
-        if kind == "diff" and name in names:
-            j = names.index(name)
-            right[j] += 0.5 * ui
-            left[j] -= 0.5 * ui
-        elif kind == "shoulder":
-            shoulder[0 if name == "sweep" else 1] = float(ui)
-        elif name == "tail_elevation":
-            elevation = float(ui)
-        elif name == "tail_roll":
-            roll = float(ui)
-    return right, left, shoulder, TailControls(elevation, 1.0, roll)
 
 
 class AttitudeLoop:
@@ -469,6 +306,10 @@ __all__ = [
     "AttitudeLoop",
     "attitude_gains",
     "euler_zyx",
+    "JAC_SAMPLES",
+    "JAC_STEP",
+    "SHOULDER_BOUND",
+    "damped_gains",
     "measured_jacobian",
     "measured_rate_derivatives",
     "split_inputs",
