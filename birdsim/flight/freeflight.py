@@ -23,7 +23,7 @@ from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.demand_schedule import DemandSchedule, RefState
 from birdsim.flight.flight_arrays import attitude_estimate, flight_arrays
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
-from birdsim.flight.pitch_plan import PitchPlan
+from birdsim.flight.pitch_plan import PitchPlan, feedforward_pitch
 from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
 from birdsim.flight.track import TrackFrame, is_three_d
 from birdsim.flight.trim import sample_reference, trim_start
@@ -46,8 +46,10 @@ SP_MARGIN = 0.8
 #: filters of INPUT_SMOOTHING_BEATS.  Measured (take-off / landing path RMS): 0: 0.032 /
 #: 0.048, 0.2: 0.034 / 0.042, 0.25: 0.034 / 0.042, 0.375: 0.036 / 0.044 (docs/flight.md).
 SP_LEAD = 2.0 * INPUT_SMOOTHING_BEATS
-#: Plan the free body's pitch command along the known path (birdsim.flight.pitch_plan).
+#: Plan the free body's pitch command along the known path (birdsim.flight.pitch_plan),
+#: from the feed-forward's table pitch PLAN_PER_BEAT times a wingbeat.
 PITCH_PLAN = True
+PLAN_PER_BEAT = 2
 #: Turning: the bank is asked for the path's centripetal acceleration BANK_LEAD wingbeats
 #: ahead (the roll loop's lag) through a second-order filter of BANK_BEATS.
 BANK_LEAD = 1.0
@@ -207,11 +209,12 @@ def fly(
         plan = None
         if compensate and track is None and PITCH_PLAN and "pitch" in names:
             plan = PitchPlan(
-                lambda tt: _feedforward_pitch(ctl, path, tt, names),
+                feedforward_pitch(ctl, path, names),
                 n_ctl,
                 steps_ctl * h,
                 tau_ref,
                 float(fb.schedule.output[names.index("pitch")]),
+                stride=max(1, per_beat_ctl // PLAN_PER_BEAT),
             )
         roll_ref = roll_rate_ref = roll_acc_ref = 0.0  # turning's bank command (filtered)
         att_window: list[tuple[np.ndarray, np.ndarray]] = []
@@ -362,16 +365,6 @@ def fly(
     result.meta["attitude"] = config.attitude
     result.meta["attitude_loop"] = bool(free and attitude_loop)
     return result
-
-
-def _feedforward_pitch(ctl: Controller, path: Any, t: float, names: tuple) -> float:
-    """The table's pitch (with the air-path angle) of ``path``'s feed-forward at ``t`` (no
-    error, no wind; the body drag at that pitch: three fixed-point steps from 0)."""
-    p = 0.0
-    zero = np.zeros(2)
-    for _ in range(3):
-        p = float(ctl.command(path.state(t), None, zero, p).params[names.index("pitch")])
-    return p
 
 
 def _identity_if(flag: bool) -> Any:

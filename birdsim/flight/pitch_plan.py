@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 
@@ -52,16 +53,21 @@ class PitchPlan:
         dt: float,
         tau: float,
         start_pitch: float,
+        stride: int = 1,
     ):
         """``table_pitch(t)``: the table's pitch of the path's feed-forward at reduced time
-        ``t`` (with the air-path angle, as the flight's schedule holds it); ``n_steps``
-        control steps ``dt`` apart; ``tau`` the command's time constant; ``start_pitch``
-        the pitch the flight starts at."""
+        ``t`` (with the air-path angle, as the flight's schedule holds it), asked in
+        increasing ``t`` every ``stride`` control steps and interpolated linearly between
+        (the smoothing's time constant is many strides); ``n_steps`` control steps ``dt``
+        apart; ``tau`` the command's time constant; ``start_pitch`` the pitch the flight
+        starts at."""
         self.dt = dt
         self.tau = tau
         margin = int(math.ceil(3.0 * tau / dt)) if tau > 0 else 0
-        times = dt * np.arange(n_steps + margin + 1)
-        self.raw = np.array([table_pitch(float(t)) for t in times])
+        n = n_steps + margin + 1
+        coarse = stride * np.arange(-(-n // stride) + 1)
+        values = np.array([table_pitch(float(dt * k)) for k in coarse])
+        self.raw = np.interp(np.arange(n), coarse, values)
         s = tau / math.sqrt(2.0)
         self.plan = _smooth(self.raw, s, dt) if tau > 0 else self.raw.copy()
         self.rate = np.gradient(self.plan, dt)
@@ -85,4 +91,23 @@ class PitchPlan:
         )
 
 
-__all__ = ["PitchPlan"]
+def feedforward_pitch(ctl: Any, path: Any, names: tuple) -> Callable[[float], float]:
+    """``f(t)`` for :class:`PitchPlan`: the table's pitch (with the air-path angle) of
+    ``path``'s feed-forward through the controller ``ctl`` (a
+    :class:`birdsim.flight.controller.Controller`; no error, no wind), asked in
+    increasing ``t``: the body drag at that pitch by fixed-point steps (three from 0 at
+    the first ``t``, then one from the last pitch)."""
+    zero, i = np.zeros(2), names.index("pitch")
+    last: list[float] = []
+
+    def f(t: float) -> float:
+        p = last[0] if last else 0.0
+        for _ in range(1 if last else 3):
+            p = float(ctl.command(path.state(t), None, zero, p).params[i])
+        last[:] = [p]
+        return p
+
+    return f
+
+
+__all__ = ["PitchPlan", "feedforward_pitch"]
