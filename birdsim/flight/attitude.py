@@ -48,6 +48,7 @@ from birdsim.flight.attitude_jacobians import (
     SHOULDER_BOUND,
     measured_jacobian,
     measured_rate_derivatives,
+    measured_with_rocking,
     split_inputs,
 )
 from birdsim.mujoco.tail import TailControls
@@ -75,6 +76,13 @@ JAC_DPITCH = 0.1
 JAC_DRATE = 0.002
 #: Cancel the flapping's rate derivatives in the demand (:func:`measured_rate_derivatives`).
 RATE_CANCEL = True
+#: Measure the Jacobians with the body's rocking within the wingbeat
+#: (:func:`birdsim.flight.attitude_jacobians.measured_with_rocking`).  Off: with it the
+#: loop's yaw authority is the one measured in flight (a quarter of the held body's for
+#: the differential flap amplitude), but the loop then asks for four times the input and
+#: roll and yaw limit-cycle at a period of two wingbeats (+-2 degrees of roll in a yaw
+#: step); the side gust's peak error rose from 0.155 to 0.187 (docs/flight.md).
+ROCKING = False
 #: Regularisation of the allocation (relative to the inputs' bounds).
 LAMBDA = 1e-4
 #: The integral's share of the moment is bounded by this many times the inertia x
@@ -187,12 +195,25 @@ class AttitudeLoop:
         path loop's integral starts the same way)."""
         if not self.enabled:
             return
-        m0, jac = measured_jacobian(self.fb, params, pitch, max(speed, 0.0))
+        m0, jac = self._measure(params, pitch, speed, None)
         self._jac = (speed, m0, jac, pitch)
-        if RATE_CANCEL:
-            self.rate_jac = measured_rate_derivatives(self.fb, params, pitch, max(speed, 0.0))
         lim = INTEGRAL_LIMIT_RAD * self.gains.omega_a**2
         self.integral = np.clip((m0 - np.asarray(moment)) / self.inertia, -lim, lim)
+
+    def _measure(
+        self, params: np.ndarray, pitch: float, speed: float, turn: np.ndarray | None
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """(M_0, J) for the loop, and the rate derivatives into ``rate_jac``: with
+        :data:`ROCKING`, what the body's rocking within the wingbeat does to them included
+        (:func:`measured_with_rocking`)."""
+        v = max(speed, 0.0)
+        if ROCKING:
+            m0, jac, rate = measured_with_rocking(self.fb, params, pitch, v, self.inertia, turn)
+        else:
+            m0, jac = measured_jacobian(self.fb, params, pitch, v, turn)
+            rate = measured_rate_derivatives(self.fb, params, pitch, v, turn)
+        self.rate_jac = rate if RATE_CANCEL else np.zeros((3, 3))
+        return m0, jac
 
     def bounds(self, params: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         kin = self.fb.kin
@@ -247,13 +268,7 @@ class AttitudeLoop:
             or np.abs(self._turn - turn).max() > JAC_DRATE
         ):
             at = params if jac_params is None else jac_params
-            m0, jac = measured_jacobian(
-                self.fb, at, jp, max(speed, 0.0), turn if turn.any() else None
-            )
-            if RATE_CANCEL:
-                self.rate_jac = measured_rate_derivatives(
-                    self.fb, at, jp, max(speed, 0.0), turn if turn.any() else None
-                )
+            m0, jac = self._measure(at, jp, speed, turn if turn.any() else None)
             self._jac = (speed, m0, jac, jp)
             self._turn = turn
         _, m0, jac, _ = self._jac
@@ -312,5 +327,6 @@ __all__ = [
     "damped_gains",
     "measured_jacobian",
     "measured_rate_derivatives",
+    "measured_with_rocking",
     "split_inputs",
 ]

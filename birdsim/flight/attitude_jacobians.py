@@ -94,6 +94,99 @@ def measured_jacobian(
     return m0, jac
 
 
+def measured_with_rocking(
+    fb,
+    params: np.ndarray,
+    pitch: float,
+    speed: float,
+    inertia: np.ndarray,
+    omega_body: np.ndarray | None = None,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(M_0 (3,), J (3, k), D (3, 3)) as :func:`measured_jacobian` and
+    :func:`measured_rate_derivatives` measure them on the held body, plus what the body's
+    rocking within the wingbeat does to the means.  A free body counter-rotates within
+    each wingbeat (the wings' relative angular momentum h, the moment's swing about its
+    mean), and the flapping's rate derivatives change with the phase, so the rocking's
+    rate times them has a mean: measured in flight, the rocking that a differential flap
+    amplitude itself causes cancelled nine tenths of its yaw moment.  Per input, the
+    rocking ``w(t)`` is the periodic solution of ``I w' - D w = (M(t) - mean M) - h'(t)``
+    (``I`` the principal moments ``inertia``, seed axes; ``D`` the mean rate derivative;
+    solved per wingbeat harmonic), and ``mean_t D(t) w(t)`` is added to the mean moment.
+    Seed body axes, about the torso origin; the same phases and steps as the held
+    measurement."""
+    m, cb, sched = fb.m, fb.cb, fb.schedule
+    d = getattr(fb, "_jac_data", None)
+    if d is None:
+        d = fb._jac_data = mujoco.MjData(m)
+    n = JAC_SAMPLES
+    times = np.arange(n) * (fb.red.period / n)
+    names = sched.names
+    c = np.array([1.0, -1.0, -1.0])
+    base = np.zeros(3) if omega_body is None else np.asarray(omega_body, dtype=float)
+    k_in = len(INPUTS) + 1
+    split = [split_inputs(names, params, _unit(i)) for i in range(k_in)]
+    # the inputs' sets, then the base wingbeat turning a step faster about each axis
+    sets = [(sp, base) for sp in split] + [
+        (split[0], base + RATE_STEP * np.eye(3)[a]) for a in range(3)
+    ]
+    z = np.zeros((n * len(sets), len(names)))
+    sw = np.repeat([np.concatenate([sp[2], sp[2]]) for sp, _ in sets], n, axis=0)
+    pres = sched.prescribe(
+        np.tile(times, len(sets)),
+        np.repeat([sp[0] for sp, _ in sets], n, axis=0),
+        z,
+        z,
+        left=(np.repeat([sp[1] for sp, _ in sets], n, axis=0), z, z),
+        shoulder=(sw, np.zeros_like(sw), np.zeros_like(sw)),
+    )
+    wind = m.opt.wind.copy()
+    saved = cb.tail_controls
+    m.opt.wind[:] = 0.0
+    quat = pitch_quat(pitch)
+    mom = np.zeros((len(sets), n, 3))
+    h = np.zeros((len(sets), n, 3))
+    vec, res = np.zeros(m.nv), np.zeros(m.nv)
+    try:
+        for i, (sp, omega) in enumerate(sets):
+            cb.tail_controls = sp[3]
+            for k in range(n):
+                row = i * n + k
+                d.qpos[:] = pres.qpos[row]
+                d.qvel[:] = pres.qvel[row]
+                d.qpos[:3] = (0.0, 0.0, 6.0)
+                d.qpos[3:7] = quat
+                d.qvel[:3] = (speed, 0.0, 0.0)
+                d.qvel[3:6] = omega * c
+                mujoco.mj_fwdPosition(m, d)
+                mujoco.mj_fwdVelocity(m, d)
+                mom[i, k] = d.qfrc_passive[3:6] * c
+                vec[:] = d.qvel
+                vec[:6] = 0.0  # the wings' motion relative to the torso
+                mujoco.mj_mulM(m, d, res, vec)
+                h[i, k] = res[3:6] * c
+    finally:
+        m.opt.wind[:] = wind
+        cb.tail_controls = saved
+    d_phase = np.stack([(mom[k_in + a] - mom[0]) / RATE_STEP for a in range(3)], axis=2)
+    d_mean = d_phase.mean(axis=0)  # (3, 3)
+    # the periodic rocking per set: harmonics j = 1 .. n/2 - 1 of the wingbeat (omega = 1
+    # per time unit in reduced units: one wingbeat = 2 pi)
+    spec_m = np.fft.rfft(mom[:k_in], axis=1)
+    spec_h = np.fft.rfft(h[:k_in], axis=1)
+    spec_w = np.zeros_like(spec_m)
+    w0 = 2.0 * np.pi / fb.red.period
+    for j in range(1, n // 2):
+        a = 1j * j * w0 * np.diag(inertia) - d_mean
+        rhs = spec_m[:, j, :] - 1j * j * w0 * spec_h[:, j, :]
+        spec_w[:, j, :] = np.linalg.solve(a, rhs.T).T
+    rocking = np.fft.irfft(spec_w, n=n, axis=1)  # (k_in, n, 3)
+    rectified = np.einsum("kab,ikb->ia", d_phase, rocking) / n
+    means = mom[:k_in].mean(axis=1) + rectified
+    m0 = means[0]
+    jac = np.stack([(o - m0) / JAC_STEP for o in means[1:]], axis=1)
+    return m0, jac, d_mean
+
+
 #: Step of the rate derivatives (:func:`measured_rate_derivatives`, rad per time unit).
 RATE_STEP = 0.01
 
@@ -195,5 +288,6 @@ __all__ = [
     "SHOULDER_BOUND",
     "measured_jacobian",
     "measured_rate_derivatives",
+    "measured_with_rocking",
     "split_inputs",
 ]
