@@ -93,20 +93,29 @@ def test_free_hover_meets_the_targets():
 
 def test_side_gust_is_flown_back_by_banking():
     """A one-wingbeat side gust (30 % of cruise speed, from the left) in cruise: the bird
-    rolls, drifts right, and the lateral loop banks it back: the side error turns and
-    shrinks (measured: -0.60 semispan at wingbeat 11, +0.04 at 15); with the lateral loop
-    off (LATERAL_ROLL_MAX = 0) it keeps drifting (-1.16 at 15, still moving away)."""
+    rolls (the gust's within-wingbeat roll moment, about 11 degrees), drifts right, and the
+    lateral loop banks it back.  A regression guard on the recovery: the largest path
+    error stays below 0.2 semispan (measured 0.155; 0.53 before the attitude loop placed
+    its gains for the flapping's own roll damping and cancelled its cross terms,
+    docs/flight.md) and from 7 wingbeats after the gust the error is within 0.05 semispan
+    (measured at most 0.042 over wingbeats 11-15).  Not yet within the issue's 2 degrees
+    of level by then (roll and yaw swing by 5 degrees: measured, not asserted).  With the
+    lateral loop off (LATERAL_ROLL_MAX = 0) it keeps drifting (-0.30 at wingbeat 15,
+    still moving away)."""
     from birdsim.flight import attitude_commands
     from birdsim.flight.gust import parse_gust
 
     g = [parse_gust("3:1:0:0.15:0")]
     a, s = _free("cruise", beats=16, gusts=g)
     # the summary's errors are three-dimensional: the side error is in them
-    assert s["rms_side_error_after_start"] > 0.1
+    assert s["rms_side_error_after_start"] > 0.03
     assert s["rms_error_after_start"] >= s["rms_side_error_after_start"]
+    err = np.sqrt((a["x_ref"] - a["x"]) ** 2 + a["y"] ** 2 + (a["z_ref"] - a["z"]) ** 2)
+    assert err.max() < 0.2
+    assert err[11 * 64 :].max() <= 0.05
     y = _beat_means(a, "y")
-    assert np.abs(y).max() > 0.2  # the gust moves it
-    assert abs(y[-1]) < 0.5 * np.abs(y).max()
+    assert np.abs(y).max() > 0.1  # the gust moves it
+    assert math.degrees(np.abs(_beat_means(a, "roll")).max()) > 5.0  # and rocks it
     saved = attitude_commands.LATERAL_ROLL_MAX
     try:
         attitude_commands.LATERAL_ROLL_MAX = 0.0
@@ -114,7 +123,7 @@ def test_side_gust_is_flown_back_by_banking():
     finally:
         attitude_commands.LATERAL_ROLL_MAX = saved
     y0 = _beat_means(a0, "y")
-    assert abs(y0[-1]) > 2.0 * abs(y[-1]) and abs(y0[-1]) >= np.abs(y0[:-1]).max()
+    assert abs(y0[-1]) > 5.0 * abs(y[-1]) and abs(y0[-1]) >= np.abs(y0[:-1]).max()
 
 
 # ---- turning's foundation (issue 23; the turning presets do not fly yet) -------------
@@ -214,16 +223,19 @@ def test_a_posed_body_refuses_a_turning_path():
 
 
 @pytest.mark.parametrize(
-    "preset, bound, measured",
-    [("take-off", 0.09, 0.0726), ("landing", 0.16, 0.130)],
+    "preset, posed, measured",
+    [("take-off", 0.046, 0.0343), ("landing", 0.051, 0.0419)],
 )
-def test_free_take_off_and_landing_hold_their_measured_figures(preset, bound, measured):
-    """Take-off and landing with the attitude free: NOT yet within the issue's targets
-    (1.5 x the posed 0.046 and 0.051: 0.068 and 0.077); bounded here at about 1.2 x what
-    they measured this session (docs/flight.md), so that a change which makes them worse
-    is seen; the pitch stays within 5 degrees RMS of the
-    command (measured 2.4 and 3.7)."""
+def test_free_take_off_and_landing_meet_the_targets(preset, posed, measured):
+    """Take-off and landing with the attitude free: path RMS after the start within the
+    issue's 1.5 x the posed figure (measured 0.034 and 0.042, below the posed 0.046 and
+    0.051), wingbeat-mean pitch within 3 degrees RMS of the command (measured 2.1 and
+    2.7), no attitude- or table-saturated sample.  Before the stroke plane's compensation
+    took the table's pitch target (not its smoothed output) and the pitch command was
+    planned along the path: 0.073 and 0.130 (docs/flight.md)."""
     a, s = _free(preset)
-    assert s["rms_error_after_start"] <= bound, (s["rms_error_after_start"], measured)
+    assert s["rms_error_after_start"] <= 1.5 * posed, (s["rms_error_after_start"], measured)
     pe = _beat_means(a, "pitch")[2:] - _beat_means(a, "pitch_command")[2:]
-    assert math.degrees(np.sqrt(np.mean(pe**2))) <= 5.0
+    assert math.degrees(np.sqrt(np.mean(pe**2))) <= 3.0
+    assert not a["attitude_saturated"].any()
+    assert not a["saturated"].any()

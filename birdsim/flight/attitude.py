@@ -41,8 +41,17 @@ import mujoco
 import numpy as np
 from scipy.optimize import lsq_linear
 
-from birdsim.mujoco.model import pitch_quat
-from birdsim.mujoco.tail import ELEVATION_MAX, ROLL_MAX, TailControls
+from birdsim.flight.attitude_jacobians import (
+    INPUTS,
+    JAC_SAMPLES,
+    JAC_STEP,
+    SHOULDER_BOUND,
+    measured_jacobian,
+    measured_rate_derivatives,
+    measured_with_rocking,
+    split_inputs,
+)
+from birdsim.mujoco.tail import TailControls
 
 #: Wingbeats per time constant of the attitude loop.  Measured (seed bird): without the
 #: stroke plane's compensation 0.5, 1 and 1.5 wingbeats limit-cycled at a period of two
@@ -55,34 +64,25 @@ ATTITUDE_BEATS = 2.0
 #: gust's roll and yaw are back within 2 degrees in 4 wingbeats (3: 5 and 3 degrees
 #: still after 8).
 AXIS_BEATS = (2.0, ATTITUDE_BEATS, 2.0)
-#: The inputs: (name, kind, bound in rad).  The wing inputs and their signs are those of
-#: ``birdsim.physics.moments.CONTROL_INPUTS`` (the differential stroke plane rolls the
-#: bird most strongly, the differential flap and twist yaw it, the symmetric sweep
-#: pitches it), plus the tail's.  kind: "diff" (right +u/2, left -u/2 on the
-#: wing parameter), "sweep" (symmetric sweep offset of both shoulders), "tail".
-SHOULDER_BOUND = 0.3
-INPUTS = (
-    ("flap_amp", "diff", 0.15),
-    ("twist_amp", "diff", 0.15),
-    ("sweep", "shoulder", SHOULDER_BOUND),
-    ("tail_elevation", "tail", ELEVATION_MAX),
-    ("tail_roll", "tail", ROLL_MAX),
-    ("stroke_plane", "diff", 0.15),
-    ("dihedral", "shoulder", SHOULDER_BOUND),
-)
 #: The moment rows and the inputs of the two allocations: pitch by the symmetric inputs
 #: (sweep, tail elevation), roll and yaw by the differential ones.
 SYM_ROWS, SYM_INPUTS = [1], [2, 3, 6]
 LAT_ROWS, LAT_INPUTS = [0, 2], [0, 1, 4, 5]
-#: Phases per wingbeat of a Jacobian measurement and the input step (rad).
-JAC_SAMPLES = 16
-JAC_STEP = 0.02
 #: Airspeed change (semispan omega) and pitch command change (rad) that trigger a new
 #: Jacobian.
 JAC_DV = 0.05
 JAC_DPITCH = 0.1
 #: ... and the change of a turn's body rates (rad per time unit) that does.
 JAC_DRATE = 0.002
+#: Cancel the flapping's rate derivatives in the demand (:func:`measured_rate_derivatives`).
+RATE_CANCEL = True
+#: Measure the Jacobians with the body's rocking within the wingbeat
+#: (:func:`birdsim.flight.attitude_jacobians.measured_with_rocking`).  Off: with it the
+#: loop's yaw authority is the one measured in flight (a quarter of the held body's for
+#: the differential flap amplitude), but the loop then asks for four times the input and
+#: roll and yaw limit-cycle at a period of two wingbeats (+-2 degrees of roll in a yaw
+#: step); the side gust's peak error rose from 0.155 to 0.187 (docs/flight.md).
+ROCKING = False
 #: Regularisation of the allocation (relative to the inputs' bounds).
 LAMBDA = 1e-4
 #: The integral's share of the moment is bounded by this many times the inertia x
@@ -152,95 +152,17 @@ def attitude_gains(omega: float = 1.0, beats: object = AXIS_BEATS) -> AttitudeGa
     return AttitudeGains(wa, 3.0 * wa * wa, 3.0 * wa, wa**3)
 
 
-def measured_jacobian(
-    fb, params: np.ndarray, pitch: float, speed: float, omega_body: np.ndarray | None = None
-) -> tuple[np.ndarray, np.ndarray]:
-    """(M_0 (3,), J (3, k)): the wingbeat-mean moment (seed body axes) with every input
-    at zero and its one-sided derivatives, measured in MuJoCo (see the module); the body
-    turning at ``omega_body`` (seed body axes; a steady turn's rates: the outer wing's
-    faster air is in M_0), else not rotating."""
-
-    m, cb, sched = fb.m, fb.cb, fb.schedule
-    d = getattr(fb, "_jac_data", None)
-    if d is None:  # a second MjData, kept for the next measurement
-        d = fb._jac_data = mujoco.MjData(m)
-    n = JAC_SAMPLES
-    times = np.arange(n) * (fb.red.period / n)
-    names = sched.names
-    wind = m.opt.wind.copy()
-    saved = cb.tail_controls
-    m.opt.wind[:] = 0.0
-    quat = pitch_quat(pitch)
-    omega_mj = np.zeros(3) if omega_body is None else np.asarray(omega_body) * (1.0, -1.0, -1.0)
-    k_in = len(INPUTS) + 1
-    # every input's wingbeat in one prescription (per sample: the same numbers as one
-    # prescription per input)
-    split = [split_inputs(names, params, _unit(i)) for i in range(k_in)]
-    z = np.zeros((n * k_in, len(names)))
-    sw = np.repeat([np.concatenate([sp[2], sp[2]]) for sp in split], n, axis=0)
-    pres = sched.prescribe(
-        np.tile(times, k_in),
-        np.repeat([sp[0] for sp in split], n, axis=0),
-        z,
-        z,
-        left=(np.repeat([sp[1] for sp in split], n, axis=0), z, z),
-        shoulder=(sw, np.zeros_like(sw), np.zeros_like(sw)),
-    )
-    out = []
-    fwd_pos, fwd_vel = mujoco.mj_fwdPosition, mujoco.mj_fwdVelocity
-    try:
-        for i in range(k_in):
-            cb.tail_controls = split[i][3]
-            acc = np.zeros(3)
-            for k in range(i * n, (i + 1) * n):
-                d.qpos[:] = pres.qpos[k]
-                d.qvel[:] = pres.qvel[k]
-                d.qpos[:3] = (0.0, 0.0, 6.0)
-                d.qpos[3:7] = quat
-                d.qvel[:3] = (speed, 0.0, 0.0)
-                d.qvel[3:6] = omega_mj
-                # the passive forces (the callback) need only positions and velocities
-                fwd_pos(m, d)
-                fwd_vel(m, d)
-                acc += d.qfrc_passive[3:6]
-            out.append(acc / n * np.array([1.0, -1.0, -1.0]))
-    finally:
-        m.opt.wind[:] = wind
-        cb.tail_controls = saved
-    m0 = out[0]
-    jac = np.stack([(o - m0) / JAC_STEP for o in out[1:]], axis=1)
-    return m0, jac
-
-
-def _unit(i: int) -> np.ndarray:
-    """The inputs with input ``i - 1`` at :data:`JAC_STEP` (``i = 0``: all zero)."""
-    u = np.zeros(len(INPUTS))
-    if i:
-        u[i - 1] = JAC_STEP
-    return u
-
-
-def split_inputs(
-    names: tuple[str, ...], params: np.ndarray, u: np.ndarray
-) -> tuple[np.ndarray, np.ndarray, float, TailControls]:
-    """(right params, left params, shoulder offsets (sweep, dihedral), tail controls) for
-    inputs ``u``."""
-    right = np.array(params, dtype=float)
-    left = right.copy()
-    shoulder = np.zeros(2)
-    elevation = roll = 0.0
-    for (name, kind, _), ui in zip(INPUTS, u):
-        if kind == "diff" and name in names:
-            j = names.index(name)
-            right[j] += 0.5 * ui
-            left[j] -= 0.5 * ui
-        elif kind == "shoulder":
-            shoulder[0 if name == "sweep" else 1] = float(ui)
-        elif name == "tail_elevation":
-            elevation = float(ui)
-        elif name == "tail_roll":
-            roll = float(ui)
-    return right, left, shoulder, TailControls(elevation, 1.0, roll)
+def damped_gains(omega_a: np.ndarray, damping: np.ndarray) -> AttitudeGains:
+    """Per axis gains (per unit inertia) for a body whose wingbeat-mean rotation already
+    has the damping ``c`` (per unit inertia, >= 0; the flapping's, measured): closed-loop
+    poles at ``-p`` and a double pole at ``-omega_a``, ``p = max(c, omega_a)`` (the
+    natural pole kept where it is faster than the design): ``Kd = p + 2 omega_a - c``,
+    ``Kp = 2 p omega_a + omega_a^2``, ``Ki = p omega_a^2``; at ``c = 0`` the triple pole
+    of :func:`attitude_gains`."""
+    wa = np.asarray(omega_a, dtype=float)
+    c = np.asarray(damping, dtype=float)
+    p = np.maximum(c, wa)
+    return AttitudeGains(wa, 2.0 * p * wa + wa * wa, p + 2.0 * wa - c, p * wa * wa)
 
 
 class AttitudeLoop:
@@ -259,6 +181,8 @@ class AttitudeLoop:
         self.u = np.zeros(len(INPUTS))
         self.saturated = False
         self._jac: tuple[float, np.ndarray, np.ndarray, float] | None = None
+        #: the moment's rate derivatives (3, 3) measured with the Jacobians
+        self.rate_jac = np.zeros((3, 3))
         self._turn = np.zeros(3)  # the turning rates the Jacobians were measured at
         self.kinds = INPUTS
 
@@ -271,11 +195,25 @@ class AttitudeLoop:
         path loop's integral starts the same way)."""
         if not self.enabled:
             return
-        m0, jac = measured_jacobian(self.fb, params, pitch, max(speed, 0.0))
+        m0, jac = self._measure(params, pitch, speed, None)
         self._jac = (speed, m0, jac, pitch)
-        g = self.gains
-        lim = INTEGRAL_LIMIT_RAD * g.omega_a**2 / g.ki
-        self.integral = np.clip((m0 - np.asarray(moment)) / (self.inertia * g.ki), -lim, lim)
+        lim = INTEGRAL_LIMIT_RAD * self.gains.omega_a**2
+        self.integral = np.clip((m0 - np.asarray(moment)) / self.inertia, -lim, lim)
+
+    def _measure(
+        self, params: np.ndarray, pitch: float, speed: float, turn: np.ndarray | None
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """(M_0, J) for the loop, and the rate derivatives into ``rate_jac``: with
+        :data:`ROCKING`, what the body's rocking within the wingbeat does to them included
+        (:func:`measured_with_rocking`)."""
+        v = max(speed, 0.0)
+        if ROCKING:
+            m0, jac, rate = measured_with_rocking(self.fb, params, pitch, v, self.inertia, turn)
+        else:
+            m0, jac = measured_jacobian(self.fb, params, pitch, v, turn)
+            rate = measured_rate_derivatives(self.fb, params, pitch, v, turn)
+        self.rate_jac = rate if RATE_CANCEL else np.zeros((3, 3))
+        return m0, jac
 
     def bounds(self, params: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         kin = self.fb.kin
@@ -330,19 +268,27 @@ class AttitudeLoop:
             or np.abs(self._turn - turn).max() > JAC_DRATE
         ):
             at = params if jac_params is None else jac_params
-            m0, jac = measured_jacobian(
-                self.fb, at, jp, max(speed, 0.0), turn if turn.any() else None
-            )
+            m0, jac = self._measure(at, jp, speed, turn if turn.any() else None)
             self._jac = (speed, m0, jac, jp)
             self._turn = turn
         _, m0, jac, _ = self._jac
-        g = self.gains
-        lim = INTEGRAL_LIMIT_RAD * g.omega_a**2 / g.ki
+        # the flapping's own damping (each axis, >= 0) is part of the plant the gains are
+        # placed for; what is left of the rate derivatives (cross terms, any negative
+        # damping) is cancelled with the estimated rates
+        d_used = self.rate_jac if RATE_CANCEL else np.zeros((3, 3))
+        damping = np.maximum(-np.diag(d_used), 0.0)
+        g = damped_gains(self.gains.omega_a, damping / self.inertia)
+        lim = INTEGRAL_LIMIT_RAD * g.omega_a**2
         if not self.saturated:  # anti-windup: frozen while the inputs are at their bounds
-            self.integral = np.clip(self.integral + dt * err, -lim, lim)
+            self.integral = np.clip(self.integral + dt * g.ki * err, -lim, lim)
         rate_err = (0.0 if rate_cmd is None else rate_cmd) - rates
         acc = 0.0 if acc_cmd is None else acc_cmd
-        demand = self.inertia * (acc + g.kp * err + g.kd * rate_err + g.ki * self.integral) - m0
+        demand = self.inertia * (acc + g.kp * err + g.kd * rate_err + self.integral) - m0
+        residual = d_used + np.diag(damping)
+        demand -= residual @ (np.asarray(rates, dtype=float) - turn)
+        # the damping opposes the commanded rotation too: fed forward (the damping then
+        # acts on the rate error only, as the gains assume)
+        demand += damping * (rate_err + np.asarray(rates, dtype=float) - turn)
         lo, hi = self.bounds(params)
         u = np.zeros(len(INPUTS))
         miss = 0.0
@@ -375,6 +321,12 @@ __all__ = [
     "AttitudeLoop",
     "attitude_gains",
     "euler_zyx",
+    "JAC_SAMPLES",
+    "JAC_STEP",
+    "SHOULDER_BOUND",
+    "damped_gains",
     "measured_jacobian",
+    "measured_rate_derivatives",
+    "measured_with_rocking",
     "split_inputs",
 ]

@@ -23,10 +23,11 @@ from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.demand_schedule import DemandSchedule, RefState
 from birdsim.flight.flight_arrays import attitude_estimate, flight_arrays
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
+from birdsim.flight.pitch_plan import PitchPlan, feedforward_pitch
 from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
 from birdsim.flight.track import TrackFrame, is_three_d
 from birdsim.flight.trim import sample_reference, trim_start
-from birdsim.flight.wingbeat import WingbeatSchedule
+from birdsim.flight.wingbeat import INPUT_SMOOTHING_BEATS, WingbeatSchedule
 from birdsim.physics.bird import Bird
 from birdsim.physics.units import reduced_bird, scales
 
@@ -41,10 +42,14 @@ PITCH_COMMAND_BEATS = 3.0
 #: the optimiser's search, not the shoulder).
 SP_MARGIN = 0.8
 #: Wingbeats ahead the stroke plane's compensation predicts the body's pitch (the
-#: estimated pitch rate times this), against the lag of the estimate and the inputs'
-#: smoothing: measured over 0, 3/16, 3/8 and 0.6, 3/8 flew take-off best (path RMS
-#: 0.0804, 0.0739, 0.0726, 0.0751) with cruise unchanged (docs/flight.md).
-SP_LEAD = 0.375
+#: estimated pitch rate times this): the lag of the offset's smoothing, two cascaded
+#: filters of INPUT_SMOOTHING_BEATS.  Measured (take-off / landing path RMS): 0: 0.032 /
+#: 0.048, 0.2: 0.034 / 0.042, 0.25: 0.034 / 0.042, 0.375: 0.036 / 0.044 (docs/flight.md).
+SP_LEAD = 2.0 * INPUT_SMOOTHING_BEATS
+#: Plan the free body's pitch command along the known path (birdsim.flight.pitch_plan),
+#: from the feed-forward's table pitch PLAN_PER_BEAT times a wingbeat.
+PITCH_PLAN = True
+PLAN_PER_BEAT = 2
 #: Turning: the bank is asked for the path's centripetal acceleration BANK_LEAD wingbeats
 #: ahead (the roll loop's lag) through a second-order filter of BANK_BEATS.
 BANK_LEAD = 1.0
@@ -201,6 +206,16 @@ def fly(
             if compensate
             else None
         )
+        plan = None
+        if compensate and track is None and PITCH_PLAN and "pitch" in names:
+            plan = PitchPlan(
+                feedforward_pitch(ctl, path, names),
+                n_ctl,
+                steps_ctl * h,
+                tau_ref,
+                float(fb.schedule.output[names.index("pitch")]),
+                stride=max(1, per_beat_ctl // PLAN_PER_BEAT),
+            )
         roll_ref = roll_rate_ref = roll_acc_ref = 0.0  # turning's bank command (filtered)
         att_window: list[tuple[np.ndarray, np.ndarray]] = []
         lat_window: list[tuple[float, float]] = []
@@ -231,9 +246,12 @@ def fly(
                 # the body's pitch command: the table's pitch through a critically damped
                 # second-order filter of time constant PITCH_COMMAND_BEATS (the stroke
                 # plane takes the difference); its rate and acceleration feed forward
-                pitch_ref, pitch_rate_ref, pitch_acc_ref = command_filter(
-                    pitch_ref, pitch_rate_ref, pitch, tau_ref, dt_ctl
-                )
+                if plan is not None:  # planned along the known path (no lag)
+                    pitch_ref, pitch_rate_ref, pitch_acc_ref = plan.step(k, pitch)
+                else:
+                    pitch_ref, pitch_rate_ref, pitch_acc_ref = command_filter(
+                        pitch_ref, pitch_rate_ref, pitch, tau_ref, dt_ctl
+                    )
                 if track is None:
                     roll_cmd = bank_command(lat_window, config.log_per_beat, red.gravity)
                     yaw_cmd = yaw_rate = 0.0
@@ -260,7 +278,13 @@ def fly(
                     offset = np.zeros(len(names))
                     # the body's pitch predicted SP_LEAD ahead (the estimate lags)
                     lead = float(rates[1]) * SP_LEAD * TWO_PI
-                    sp = cmd.params[sp_index] + pitch - (body_pitch + lead)
+                    # the table's pitch as its target (cmd.params), not the schedule's
+                    # smoothed output: the offset is smoothed by the same filters as the
+                    # stroke plane's target, so the world stroke plane follows the table's
+                    # as the posed body's does (the smoothed output, smoothed again, lagged
+                    # the table by a wingbeat: take-off 0.072, landing 0.102)
+                    p_table = cmd.params[names.index("pitch")] if "pitch" in names else pitch
+                    sp = cmd.params[sp_index] + p_table - (body_pitch + lead)
                     offset[sp_index] = float(np.clip(sp, *sp_bounds)) - cmd.params[sp_index]
                 right, left, shoulder, tail = att.update(
                     cmd.params,
