@@ -11,20 +11,21 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
 
 from birdsim.errors import BirdsimError, limits_text, magnitude_ok
-from birdsim.flight.attitude import FIT_BEATS, AttitudeLoop
+from birdsim.flight.attitude import FIT_BEATS, JAC_DV, AttitudeLoop, measured_jacobian
 from birdsim.flight.attitude_commands import bank_command, body_rates, command_filter
+from birdsim.flight.bank import lateral_acceleration, lateral_fit, turn_attitude
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.demand_schedule import DemandSchedule, RefState
 from birdsim.flight.flight_arrays import attitude_estimate, flight_arrays
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
 from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
-from birdsim.flight.track import TrackFrame, is_three_d
+from birdsim.flight.track import HOLD_SPEED, TrackFrame, is_three_d
 from birdsim.flight.trim import sample_reference, trim_start
 from birdsim.flight.wingbeat import WingbeatSchedule
 from birdsim.physics.bird import Bird
@@ -51,6 +52,10 @@ BANK_LEAD = 1.0
 BANK_BEATS = 0.5
 #: The integral only runs while the estimated position error is below this (semispans).
 INTEGRAL_BAND = 0.1
+COORDINATE = True
+FF_LEAD = 0.75
+CROSS = False
+TURN_AXIS_BEATS = (2.0, 3.0, 2.0)
 
 
 @dataclass
@@ -135,13 +140,23 @@ def fly(
             )
         track = TrackFrame(reference, beats * TWO_PI, red.gravity)
     path = reference if track is None else track
+    lateral_corr = [0.0]  # turning: the lateral loop's sideways acceleration (to the left)
 
     def command(t: float, est: Any, integral: np.ndarray, pitch: float) -> Any:
         w = wind_at(gusts, t / TWO_PI, speed)
         if demands_only:
             fx, fz, v = reference.demands(t)
             return ctl.lookup_table_force(fx, fz, v - float(w[0]))
-        return ctl.command(path.state(t), est, integral, pitch, (float(w[0]), float(w[2])))
+        if track is None:
+            return ctl.command(path.state(t), est, integral, pitch, (float(w[0]), float(w[2])))
+        # turning: the force in the banked plane carries the weight, the path's vertical
+        # acceleration and the commanded sideways one (the plan's and the lateral loop's)
+        ts = track.state(t)
+        a_left = ts.a_lat + lateral_corr[0]
+        az = math.hypot(ts.az_up + red.gravity, a_left) - red.gravity
+        c, s = math.cos(ts.heading), math.sin(ts.heading)
+        w_along = c * float(w[0]) + s * float(w[1])
+        return ctl.command(replace(ts, az=az), est, integral, pitch, (w_along, float(w[2])))
 
     ref0 = path.state(0.0)
     pitch0 = 0.0
@@ -157,6 +172,8 @@ def fly(
         k: []
         for k in (*per_sample, "params", "pitch_command", "tail", "inputs", "attitude_saturated")
     }
+    if track is not None:  # the turn's commanded bank and heading (world, rad)
+        rows["bank_command"], rows["heading_command"] = [], []
     record: list = []
     free = config.attitude == "free"
     with FreeBird(model, bird, cmd.params, config=config, aero=aero, gravity=gravity) as fb:
@@ -190,6 +207,8 @@ def fly(
         omega0, d_pitch0 = getattr(fb, "start_rotation", (None, 0.0))
         fb.start(pos0, vel0, pres, pitch=float(pres.pitch[0]) - d_pitch0, omega_body=omega0)
         att = AttitudeLoop(fb, enabled=free and attitude_loop)
+        if track is not None:  # turning: the attitude loop's time constants of a turn
+            att = AttitudeLoop(fb, enabled=free and attitude_loop, beats=TURN_AXIS_BEATS)
         if free and trim and hasattr(fb, "start_moment"):
             att.preset_integral(fb.start_moment, cmd.params, float(pres.pitch[0]), float(ref0.vx))
         compensate = free and stroke_compensation and "stroke_plane" in names
@@ -201,6 +220,7 @@ def fly(
             if compensate
             else None
         )
+        cross_rates = CrossRates()
         roll_ref = roll_rate_ref = roll_acc_ref = 0.0  # turning's bank command (filtered)
         att_window: list[tuple[np.ndarray, np.ndarray]] = []
         lat_window: list[tuple[float, float]] = []
@@ -234,22 +254,20 @@ def fly(
                 pitch_ref, pitch_rate_ref, pitch_acc_ref = command_filter(
                     pitch_ref, pitch_rate_ref, pitch, tau_ref, dt_ctl
                 )
+                turn_cmd = None
                 if track is None:
                     roll_cmd = bank_command(lat_window, config.log_per_beat, red.gravity)
                     yaw_cmd = yaw_rate = 0.0
-                else:  # turning: the centripetal acceleration fed forward, heading followed
-                    ts = track.state(t)
-                    ahead = track.state(t + BANK_LEAD * TWO_PI)  # against the roll loop's lag
-                    target = bank_command(
-                        lat_window, config.log_per_beat, red.gravity + ahead.az, ahead.a_lat
+                else:  # turning: banked about the heading (birdsim.flight.bank)
+                    turn_cmd, lat_accel, (roll_ref, roll_rate_ref) = _turn_command(
+                        track, t, lat_window, config.log_per_beat, red.gravity, wind,
+                        (roll_ref, roll_rate_ref), dt_ctl, (pitch_ref, pitch_rate_ref, pitch_acc_ref),
                     )
-                    roll_ref, roll_rate_ref, roll_acc_ref = command_filter(
-                        roll_ref, roll_rate_ref, target, BANK_BEATS * TWO_PI, dt_ctl
-                    )
-                    roll_cmd = roll_ref
-                    yaw_cmd, yaw_rate = -ts.heading, -ts.heading_rate  # seed yaw: z down
+                    roll_cmd, yaw_cmd = turn_cmd.roll, turn_cmd.yaw
+                    lateral_corr[0] = lat_accel - track.state(t).a_lat
+                zyx_pitch = pitch_ref if turn_cmd is None else turn_cmd.pitch
                 err, rates = attitude_estimate(
-                    att_window, fb.d, config.log_per_beat, TWO_PI, pitch_ref, roll_cmd, yaw_cmd
+                    att_window, fb.d, config.log_per_beat, TWO_PI, zyx_pitch, roll_cmd, yaw_cmd
                 )
                 body_pitch = pitch_ref - float(err[1])  # the wingbeat-mean pitch
                 if compensate:
@@ -262,6 +280,21 @@ def fly(
                     lead = float(rates[1]) * SP_LEAD * TWO_PI
                     sp = cmd.params[sp_index] + pitch - (body_pitch + lead)
                     offset[sp_index] = float(np.clip(sp, *sp_bounds)) - cmd.params[sp_index]
+                if turn_cmd is None:
+                    rate_cmd = body_rates(pitch_ref, roll_cmd, pitch_rate_ref, yaw_rate)
+                    rate_cmd = rate_cmd + np.array([roll_rate_ref, 0.0, 0.0])
+                    acc_cmd = np.array([roll_acc_ref, pitch_acc_ref, 0.0])
+                    turn_rates = body_rates(pitch_ref, roll_cmd, 0.0, yaw_rate)
+                else:
+                    rate_cmd, acc_cmd = turn_cmd.rate, turn_cmd.acc
+                    turn_rates = turn_cmd.rate  # the damping of the commanded rates in M_0
+                    if CROSS:
+                        cross = cross_rates.get(fb, params=cmd.params, pitch=body_pitch,
+                                                speed=v_est - float(wind[0]), rates=rate_cmd)
+                        # the roll moment of the yaw rate flown (and the yaw moment of the
+                        # roll rate) beyond the commanded ones, cancelled
+                        extra = cross @ (rates - rate_cmd)
+                        acc_cmd = acc_cmd - extra / att.inertia
                 right, left, shoulder, tail = att.update(
                     cmd.params,
                     pitch_ref,
@@ -269,10 +302,9 @@ def fly(
                     err,
                     rates,
                     dt_ctl,
-                    rate_cmd=body_rates(pitch_ref, roll_cmd, pitch_rate_ref, yaw_rate)
-                    + np.array([roll_rate_ref, 0.0, 0.0]),
-                    acc_cmd=np.array([roll_acc_ref, pitch_acc_ref, 0.0]),
-                    turn_rates=body_rates(pitch_ref, roll_cmd, 0.0, yaw_rate),
+                    rate_cmd=rate_cmd,
+                    acc_cmd=acc_cmd,
+                    turn_rates=turn_rates,
                     jac_params=None if offset is None else cmd.params + offset,
                     jac_pitch=body_pitch,
                 )
@@ -326,6 +358,9 @@ def fly(
             rows["tail"].extend([(tc.elevation, tc.spread, tc.roll)] * n_new)
             rows["inputs"].extend([att.u.copy()] * n_new)
             rows["attitude_saturated"].extend([att.saturated] * n_new)
+            if track is not None:
+                rows["bank_command"].extend([turn_cmd.bank] * n_new)
+                rows["heading_command"].extend([turn_cmd.heading] * n_new)
             if progress is not None:
                 progress((k + 1) / per_beat_ctl)
         projection = fb.projection_max
@@ -341,6 +376,64 @@ def fly(
     result.meta["attitude"] = config.attitude
     result.meta["attitude_loop"] = bool(free and attitude_loop)
     return result
+
+
+class CrossRates:
+    """The cross derivatives of the wingbeat-mean moment with respect to the body rates
+    (seed body axes): the roll moment of the yaw rate (the outer wing's faster air) and
+    the yaw moment of the roll rate, measured in MuJoCo by one-sided steps of the rates
+    (``attitude.measured_jacobian``'s M_0), re-measured when the airspeed moves by
+    ``JAC_DV``."""
+
+    STEP = 0.01
+
+    def __init__(self) -> None:
+        self._at: float | None = None
+        self._d = np.zeros((3, 3))
+
+    def get(self, fb, *, params, pitch, speed, rates) -> np.ndarray:
+        if self._at is None or abs(self._at - speed) > JAC_DV:
+            base = np.asarray(rates, dtype=float)
+            m0, _ = measured_jacobian(fb, params, pitch, max(speed, 0.0), base)
+            d = np.zeros((3, 3))
+            for j in (0, 2):
+                om = base.copy()
+                om[j] += self.STEP
+                mj, _ = measured_jacobian(fb, params, pitch, max(speed, 0.0), om)
+                d[:, j] = (mj - m0) / self.STEP
+            self._d = np.array([[0.0, 0.0, d[0, 2]], [0.0, 0.0, 0.0], [d[2, 0], 0.0, 0.0]])
+            self._at = speed
+        return self._d
+
+
+def _turn_command(track, t, lat_window, per_beat, gravity, wind, corr, dt, pitch):
+    """The turning attitude command: the planned bank and heading fed forward, the
+    lateral loop's correction of the bank (filtered), the heading turned onto the
+    bird's own air velocity (coordinated: no sideslip).  Returns (TurnAttitude, the
+    commanded sideways acceleration (to the left), the filter's state)."""
+    heading, bank_ff = track.bank_plan(t)
+    st = track.state(t)
+    y, vy = lateral_fit(lat_window, per_beat)
+    a_left = st.a_lat + lateral_acceleration(y, vy)
+    up = gravity + st.az_up
+    target = math.atan2(-a_left, up) - math.atan2(-st.a_lat, up)
+    value, rate, _ = command_filter(corr[0], corr[1], target, BANK_BEATS * TWO_PI, dt)
+    c, s = math.cos(heading[0]), math.sin(heading[0])
+    v_air_left = vy - (-s * float(wind[0]) + c * float(wind[1]))
+    v_air_along = max(st.vx - (c * float(wind[0]) + s * float(wind[1])), HOLD_SPEED)
+    slip = math.atan2(v_air_left, v_air_along) if st.vx > HOLD_SPEED and COORDINATE else 0.0
+    cmd = turn_attitude(
+        (heading[0] + slip, heading[1], heading[2]),
+        (bank_ff[0] + value, bank_ff[1] + rate, bank_ff[2]),
+        pitch,
+    )
+    if FF_LEAD > 0.0:  # the rates and accelerations fed forward from the plan ahead
+        h2, b2 = track.bank_plan(t + FF_LEAD * TWO_PI)
+        ahead = turn_attitude(
+            (h2[0] + slip, h2[1], h2[2]), (b2[0] + value, b2[1] + rate, b2[2]), pitch
+        )
+        cmd = replace(cmd, rate=ahead.rate, acc=ahead.acc)
+    return cmd, a_left, (value, rate)
 
 
 def _identity_if(flag: bool) -> Any:

@@ -46,8 +46,8 @@ SLOW_RADIUS = 3.0
 #: Radius of the cruise-speed circle and s-turn (semispans).
 CIRCLE_RADIUS = 25.0
 #: Wingbeats of each turn-rate ramp (slow turns, cruise turns).
-RAMP_BEATS = 1.5
-CRUISE_RAMP_BEATS = 2.0
+RAMP_BEATS = 3.0
+CRUISE_RAMP_BEATS = 4.0
 #: Straight flight before the first and after the last turn (wingbeats).
 STRAIGHT_BEATS = 2.0
 
