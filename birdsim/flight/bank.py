@@ -173,12 +173,14 @@ def lateral_fit(window: list, per_beat: int) -> tuple[float, float]:
 
 #: The lateral path loop of a turn: a critically damped pair of LATERAL_BEATS wingbeats
 #: per time constant (the roll loop inside it has 2).
-LATERAL_BEATS = 4.0
+LATERAL_BEATS = 10.0
 
 
-def lateral_acceleration(y: float, vy: float, omega: float = 1.0) -> float:
-    """The sideways acceleration (to the left) that brings a side offset ``y`` and its
-    rate ``vy`` (to the left) back to the path: ``-(w^2 y + 2 w vy)``, ``w = omega / (2
-    pi LATERAL_BEATS)``."""
+def lateral_acceleration(y: float, vy: float, integral: float = 0.0, omega: float = 1.0) -> float:
+    """The sideways acceleration (to the left) that brings a side offset ``y``, its rate
+    ``vy`` (to the left) and its time integral back to the path: a triple pole at ``-w``,
+    ``w = omega / (2 pi LATERAL_BEATS)`` (the path loop's structure: the integral trims
+    a steady bias of the bank flown, a few degrees, that a PD loop would leave as an
+    offset of ``bias / w^2``)."""
     w = omega / (2.0 * math.pi * LATERAL_BEATS)
-    return -(w * w * y + 2.0 * w * vy)
+    return -(3.0 * w * w * y + 3.0 * w * vy + w**3 * integral)

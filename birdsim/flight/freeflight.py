@@ -17,16 +17,16 @@ from typing import Any
 import numpy as np
 
 from birdsim.errors import BirdsimError, limits_text, magnitude_ok
-from birdsim.flight.attitude import FIT_BEATS, JAC_DV, AttitudeLoop, measured_jacobian
+from birdsim.flight.attitude import FIT_BEATS, AttitudeLoop
 from birdsim.flight.attitude_commands import bank_command, body_rates, command_filter
-from birdsim.flight.bank import lateral_acceleration, lateral_fit, turn_attitude
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.demand_schedule import DemandSchedule, RefState
 from birdsim.flight.flight_arrays import attitude_estimate, flight_arrays
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
 from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
-from birdsim.flight.track import HOLD_SPEED, TrackFrame, is_three_d
+from birdsim.flight.track import TrackFrame, is_three_d
 from birdsim.flight.trim import sample_reference, trim_start
+from birdsim.flight.turning import TURN_AXIS_BEATS, turn_command
 from birdsim.flight.wingbeat import WingbeatSchedule
 from birdsim.physics.bird import Bird
 from birdsim.physics.units import reduced_bird, scales
@@ -46,16 +46,8 @@ SP_MARGIN = 0.8
 #: smoothing: measured over 0, 3/16, 3/8 and 0.6, 3/8 flew take-off best (path RMS
 #: 0.0804, 0.0739, 0.0726, 0.0751) with cruise unchanged (docs/flight.md).
 SP_LEAD = 0.375
-#: Turning: the bank is asked for the path's centripetal acceleration BANK_LEAD wingbeats
-#: ahead (the roll loop's lag) through a second-order filter of BANK_BEATS.
-BANK_LEAD = 1.0
-BANK_BEATS = 0.5
 #: The integral only runs while the estimated position error is below this (semispans).
 INTEGRAL_BAND = 0.1
-COORDINATE = True
-FF_LEAD = 0.75
-CROSS = False
-TURN_AXIS_BEATS = (2.0, 3.0, 2.0)
 
 
 @dataclass
@@ -220,7 +212,7 @@ def fly(
             if compensate
             else None
         )
-        cross_rates = CrossRates()
+        lat_int = [0.0]
         roll_ref = roll_rate_ref = roll_acc_ref = 0.0  # turning's bank command (filtered)
         att_window: list[tuple[np.ndarray, np.ndarray]] = []
         lat_window: list[tuple[float, float]] = []
@@ -259,9 +251,16 @@ def fly(
                     roll_cmd = bank_command(lat_window, config.log_per_beat, red.gravity)
                     yaw_cmd = yaw_rate = 0.0
                 else:  # turning: banked about the heading (birdsim.flight.bank)
-                    turn_cmd, lat_accel, (roll_ref, roll_rate_ref) = _turn_command(
-                        track, t, lat_window, config.log_per_beat, red.gravity, wind,
-                        (roll_ref, roll_rate_ref), dt_ctl, (pitch_ref, pitch_rate_ref, pitch_acc_ref),
+                    turn_cmd, lat_accel, (roll_ref, roll_rate_ref) = turn_command(
+                        track,
+                        t,
+                        lat_window,
+                        config.log_per_beat,
+                        red.gravity,
+                        (roll_ref, roll_rate_ref),
+                        dt_ctl,
+                        (pitch_ref, pitch_rate_ref, pitch_acc_ref),
+                        lat_int,
                     )
                     roll_cmd, yaw_cmd = turn_cmd.roll, turn_cmd.yaw
                     lateral_corr[0] = lat_accel - track.state(t).a_lat
@@ -288,13 +287,6 @@ def fly(
                 else:
                     rate_cmd, acc_cmd = turn_cmd.rate, turn_cmd.acc
                     turn_rates = turn_cmd.rate  # the damping of the commanded rates in M_0
-                    if CROSS:
-                        cross = cross_rates.get(fb, params=cmd.params, pitch=body_pitch,
-                                                speed=v_est - float(wind[0]), rates=rate_cmd)
-                        # the roll moment of the yaw rate flown (and the yaw moment of the
-                        # roll rate) beyond the commanded ones, cancelled
-                        extra = cross @ (rates - rate_cmd)
-                        acc_cmd = acc_cmd - extra / att.inertia
                 right, left, shoulder, tail = att.update(
                     cmd.params,
                     pitch_ref,
@@ -376,64 +368,6 @@ def fly(
     result.meta["attitude"] = config.attitude
     result.meta["attitude_loop"] = bool(free and attitude_loop)
     return result
-
-
-class CrossRates:
-    """The cross derivatives of the wingbeat-mean moment with respect to the body rates
-    (seed body axes): the roll moment of the yaw rate (the outer wing's faster air) and
-    the yaw moment of the roll rate, measured in MuJoCo by one-sided steps of the rates
-    (``attitude.measured_jacobian``'s M_0), re-measured when the airspeed moves by
-    ``JAC_DV``."""
-
-    STEP = 0.01
-
-    def __init__(self) -> None:
-        self._at: float | None = None
-        self._d = np.zeros((3, 3))
-
-    def get(self, fb, *, params, pitch, speed, rates) -> np.ndarray:
-        if self._at is None or abs(self._at - speed) > JAC_DV:
-            base = np.asarray(rates, dtype=float)
-            m0, _ = measured_jacobian(fb, params, pitch, max(speed, 0.0), base)
-            d = np.zeros((3, 3))
-            for j in (0, 2):
-                om = base.copy()
-                om[j] += self.STEP
-                mj, _ = measured_jacobian(fb, params, pitch, max(speed, 0.0), om)
-                d[:, j] = (mj - m0) / self.STEP
-            self._d = np.array([[0.0, 0.0, d[0, 2]], [0.0, 0.0, 0.0], [d[2, 0], 0.0, 0.0]])
-            self._at = speed
-        return self._d
-
-
-def _turn_command(track, t, lat_window, per_beat, gravity, wind, corr, dt, pitch):
-    """The turning attitude command: the planned bank and heading fed forward, the
-    lateral loop's correction of the bank (filtered), the heading turned onto the
-    bird's own air velocity (coordinated: no sideslip).  Returns (TurnAttitude, the
-    commanded sideways acceleration (to the left), the filter's state)."""
-    heading, bank_ff = track.bank_plan(t)
-    st = track.state(t)
-    y, vy = lateral_fit(lat_window, per_beat)
-    a_left = st.a_lat + lateral_acceleration(y, vy)
-    up = gravity + st.az_up
-    target = math.atan2(-a_left, up) - math.atan2(-st.a_lat, up)
-    value, rate, _ = command_filter(corr[0], corr[1], target, BANK_BEATS * TWO_PI, dt)
-    c, s = math.cos(heading[0]), math.sin(heading[0])
-    v_air_left = vy - (-s * float(wind[0]) + c * float(wind[1]))
-    v_air_along = max(st.vx - (c * float(wind[0]) + s * float(wind[1])), HOLD_SPEED)
-    slip = math.atan2(v_air_left, v_air_along) if st.vx > HOLD_SPEED and COORDINATE else 0.0
-    cmd = turn_attitude(
-        (heading[0] + slip, heading[1], heading[2]),
-        (bank_ff[0] + value, bank_ff[1] + rate, bank_ff[2]),
-        pitch,
-    )
-    if FF_LEAD > 0.0:  # the rates and accelerations fed forward from the plan ahead
-        h2, b2 = track.bank_plan(t + FF_LEAD * TWO_PI)
-        ahead = turn_attitude(
-            (h2[0] + slip, h2[1], h2[2]), (b2[0] + value, b2[1] + rate, b2[2]), pitch
-        )
-        cmd = replace(cmd, rate=ahead.rate, acc=ahead.acc)
-    return cmd, a_left, (value, rate)
 
 
 def _identity_if(flag: bool) -> Any:
