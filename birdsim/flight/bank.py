@@ -13,7 +13,8 @@ bank about the (horizontal) heading, then pitch about the banked body's y axis.
 Rolling instead about the body's own x axis (the Z-Y-X roll) does something else when
 the body is steep: at the slow turn's body pitch of 57 degrees the force's sideways
 part is only ``cos(pitch) sin(roll)`` of it and the air meets the body from the side
-(a sideslip of ``asin(sin(pitch) sin(roll))``, 40 degrees at a 48-degree roll): the
+(``asin(sin(pitch) sin(roll))`` = 39 degrees out of the symmetry plane at a 48-degree
+roll, a sideslip of ``atan(tan(pitch) sin(roll))`` = 49 degrees): the
 table's wingbeat no longer gives the table's force, and the first bank-to-turn
 controller (a Z-Y-X roll command) drifted outside every turn (docs/flight.md).
 
