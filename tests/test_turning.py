@@ -169,3 +169,28 @@ def test_circle_is_coordinated_and_closes():
     assert turn["steady_bank_deg"] == pytest.approx(turn["steady_coordinated_bank_deg"], abs=1.0)
     assert turn["steady_bank_error_max_deg"] < 4.0
     assert turn["steady_sideslip_max_deg"] < 5.0
+
+
+def test_fly_chooses_the_free_attitude_for_a_turning_path(capsys):
+    """``birdsim fly`` flies a turning path free and says so in one stderr line; it keeps
+    the posed default for a straight path and refuses ``--attitude posed`` for a turn in
+    one line; other commands refuse a turning preset in one line."""
+    from birdsim.commands.fly import _attitude_for
+    from birdsim.errors import BirdsimError
+    from birdsim.flight.path_file import get_flight
+    from birdsim.flight.presets import PATH_PRESETS
+
+    circle = get_flight("circle", turning=True)
+    assert _attitude_for(PATH_PRESETS["cruise"], None, "cruise") == "posed"
+    assert _attitude_for(PATH_PRESETS["cruise"], "free", "cruise") == "free"
+    assert _attitude_for(circle, None, "circle") == "free"
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "--attitude free" in err, err
+    assert _attitude_for(circle, "free", "circle") == "free"
+    assert capsys.readouterr().err == ""
+    with pytest.raises(BirdsimError) as e:
+        _attitude_for(circle, "posed", "circle")
+    assert "\n" not in str(e.value) and "allowed" in str(e.value)
+    with pytest.raises(BirdsimError) as e:
+        get_flight("circle")
+    assert "\n" not in str(e.value) and "turns out of the vertical plane" in str(e.value)
