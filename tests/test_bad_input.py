@@ -243,7 +243,7 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("fly/path-key-unknown", ["fly", "{w}/path_bank.toml", "--quiet"], "keyframe 1: key 'bank' is unknown; allowed: t, x, y, V, heading"),
     ("fly/path-3d-through-perch", ["fly", "{w}/path_perch3d.toml", "--quiet"], "through the perch (within 0.55 of x = 6, y = 0"),
     ("fly/path-3d-below-floor", ["fly", "{w}/path_low3d.toml", "--quiet"], "keyframe 2 (t=4) is below the floor clearance"),
-    ("fly/path-turning-not-yet", ["fly", "{w}/path_turn.toml", "--quiet"], "keyframe 2 gives heading, a path that turns out of the vertical plane"),
+    ("fly/path-turning-posed", ["fly", "{w}/path_turn.toml", "--quiet", "--attitude", "posed"], "--attitude posed cannot fly"),
     ("render/path-turning-not-yet", ["render", "{w}/path_turn.toml", "--table", "{w}/table.npz"], "keyframe 2 gives heading, a path that turns out of the vertical plane"),
     ("fly/bird-missing", ["fly", "cruise", "--quiet", "--bird", "{w}/nope.toml"], "--bird '{w}/nope.toml' does not exist"),
     ("render/bird-missing", [*RENDER, "--bird", "{w}/nope.toml"], "--bird '{w}/nope.toml' does not exist"),

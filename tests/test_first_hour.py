@@ -18,6 +18,7 @@ from birdsim.cli import build_parser, main
 from birdsim.commands import tables as tables_command
 from birdsim.flight.manoeuvre import PRESETS
 from birdsim.flight.presets import PATH_PRESETS
+from birdsim.flight.turn_presets import TURN_PRESETS
 from birdsim.tables.grid import Grid
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -69,7 +70,7 @@ def test_readme_keeps_its_first_lines() -> None:
 def test_readme_paragraph_names_only_presets_models_and_commands_that_exist() -> None:
     paragraph = _paragraph()
     spans = re.findall(r"`([^`]+)`", paragraph)
-    presets = set(PRESETS) | set(PATH_PRESETS)
+    presets = set(PRESETS) | set(PATH_PRESETS) | set(TURN_PRESETS)
     named = {"preset": set(), "model": set(), "command": set()}
     for span in spans:
         if span.startswith("birdsim "):

@@ -318,21 +318,23 @@ def test_bad_3d_path_files_are_one_line(tmp_path, change, words):
 
 
 def test_the_cli_refuses_a_3d_path_in_one_line_and_writes_nothing(tmp_path, capsys):
-    # bank-to-turn flight is not there yet: fly / render refuse a turning path rather than
-    # fly it in the x-z plane (exit 2, one line naming the keyframe and the key)
+    # render cannot show a turn yet, and a posed body cannot bank: both refuse a turning
+    # path rather than fly it in the x-z plane (exit 2, one line naming what is allowed);
+    # `birdsim fly` without --attitude flies it free (tests/test_turning.py)
     from birdsim.cli import main
     from birdsim.flight.path_file import get_flight
 
     f = tmp_path / "bend.toml"
     f.write_text(TURN_FILE)
     out = tmp_path / "log.npz"
-    for argv in (
-        ["fly", str(f), "--out", str(out)],
-        ["render", str(f), "--out", str(tmp_path / "a.mp4")],
+    for argv, words in (
+        (["fly", str(f), "--attitude", "posed", "--out", str(out)], "cannot bank"),
+        (["render", str(f), "--out", str(tmp_path / "a.mp4")], "keyframe 2 gives heading"),
+        (["render", "circle", "--out", str(tmp_path / "a.mp4")], "turns out of the vertical"),
     ):
         rc = main(argv)
         err = capsys.readouterr().err.strip()
         assert rc == 2 and len(err.splitlines()) == 1, err
-        assert "keyframe 2 gives heading" in err and "allowed" in err
+        assert words in err and "allowed" in err, err
     assert sorted(x.name for x in tmp_path.iterdir()) == ["bend.toml"]
     assert get_flight(str(f), turning=True).is_3d  # the controller's way in

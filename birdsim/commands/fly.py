@@ -58,8 +58,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--attitude",
         choices=("posed", "free"),
-        default="posed",
-        help="posed: the body's pitch prescribed (default); free: all six DOF free, held by the attitude loop (experimental: docs/flight.md)",
+        default=None,
+        help="posed: the body's pitch prescribed (default for a path in the vertical plane); free: all six DOF free, held by the attitude loop (experimental: docs/flight.md; the default for a turning path, which a posed body cannot fly)",
     )
     p.add_argument(
         "--open-loop",
@@ -97,6 +97,30 @@ def parse_seconds(raw: str | None) -> float | None:
     return v
 
 
+def _attitude_for(flight: object, attitude: str | None, name: str) -> str:
+    """The attitude to fly: the one asked for, else free for a path that turns out of
+    the vertical plane (said on stderr in one line) and posed for any other.
+
+    Raises:
+        BirdsimError: ``--attitude posed`` with a turning path (a posed body cannot bank).
+    """
+    turning = bool(getattr(flight, "is_3d", False))
+    if not turning:
+        return attitude or "posed"
+    if attitude == "posed":
+        raise BirdsimError(
+            f"--attitude posed cannot fly {name!r}, a path that turns out of the vertical "
+            "plane (a posed body cannot bank); allowed: --attitude free (the default for it)"
+        )
+    if attitude is None:
+        print(
+            f"birdsim fly: {name} turns out of the vertical plane: flying it with "
+            "--attitude free (bank to turn)",
+            file=sys.stderr,
+        )
+    return "free"
+
+
 def run(args: argparse.Namespace) -> int:
     from birdsim.flight.freeflight import DemandSchedule, fly, parse_gust
     from birdsim.flight.manoeuvre import MAX_BEATS, Manoeuvre
@@ -104,7 +128,8 @@ def run(args: argparse.Namespace) -> int:
     from birdsim.flight.simulate import SimConfig
     from birdsim.physics.kinematics import get_model
 
-    flight = get_flight(args.manoeuvre)
+    flight = get_flight(args.manoeuvre, turning=True)
+    attitude = _attitude_for(flight, args.attitude, args.manoeuvre)
     model = get_model(args.model).name
     gusts = [parse_gust(g) for g in args.gust]
     seconds = parse_seconds(args.seconds)
@@ -150,7 +175,7 @@ def run(args: argparse.Namespace) -> int:
             gusts=gusts,
             open_loop=args.open_loop,
             progress=progress,
-            config=SimConfig(attitude=args.attitude),
+            config=SimConfig(attitude=attitude),
         )
     finally:
         bar.close()
@@ -166,6 +191,11 @@ def run(args: argparse.Namespace) -> int:
 
     report_saturation(arrays, command="fly", bird_arg=args.bird, model=model, strict=args.strict)
     info = with_units(info, bird)
+    from birdsim.flight.turn_summary import turn_figures
+
+    turn = turn_figures(arrays)
+    if turn is not None:
+        info["turn"] = turn
     if out is not None:
         save_log(arrays, out, args.force)
         info["log"] = str(out)

@@ -110,6 +110,8 @@ def log_arrays(result: FlightResult, manoeuvre: str = "") -> dict[str, np.ndarra
         "force_y": a["force_y"] * sc.force,
         "attitude_saturated": a["attitude_saturated"].astype(bool),
         **{k: a[k] for k in a if k.startswith("u_")},
+        # a turning flight's commanded bank and heading (rad)
+        **{k: a[k] for k in ("bank_command", "heading_command") if k in a},
         "attitude": np.array(result.meta.get("attitude", "posed")),
         "mass": np.array(result.bird.mass),
         "gravity": np.array(result.bird.gravity),

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -27,6 +27,7 @@ from birdsim.flight.pitch_plan import PitchPlan, feedforward_pitch
 from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
 from birdsim.flight.track import TrackFrame, is_three_d
 from birdsim.flight.trim import sample_reference, trim_start
+from birdsim.flight.turning import TURN_AXIS_BEATS, turn_command
 from birdsim.flight.wingbeat import INPUT_SMOOTHING_BEATS, WingbeatSchedule
 from birdsim.physics.bird import Bird
 from birdsim.physics.units import reduced_bird, scales
@@ -50,12 +51,9 @@ SP_LEAD = 2.0 * INPUT_SMOOTHING_BEATS
 #: from the feed-forward's table pitch PLAN_PER_BEAT times a wingbeat.
 PITCH_PLAN = True
 PLAN_PER_BEAT = 2
-#: Turning: the bank is asked for the path's centripetal acceleration BANK_LEAD wingbeats
-#: ahead (the roll loop's lag) through a second-order filter of BANK_BEATS.
-BANK_LEAD = 1.0
-BANK_BEATS = 0.5
 #: The integral only runs while the estimated position error is below this (semispans).
 INTEGRAL_BAND = 0.1
+MAG_LEAD = 0.0  # (measured 0.5, 0.75 wingbeats: circle RMS 0.29, 0.32; kept 0)
 
 
 @dataclass
@@ -140,13 +138,24 @@ def fly(
             )
         track = TrackFrame(reference, beats * TWO_PI, red.gravity)
     path = reference if track is None else track
+    lateral_corr = [0.0]  # turning: the lateral loop's sideways acceleration (to the left)
 
     def command(t: float, est: Any, integral: np.ndarray, pitch: float) -> Any:
         w = wind_at(gusts, t / TWO_PI, speed)
         if demands_only:
             fx, fz, v = reference.demands(t)
             return ctl.lookup_table_force(fx, fz, v - float(w[0]))
-        return ctl.command(path.state(t), est, integral, pitch, (float(w[0]), float(w[2])))
+        if track is None:
+            return ctl.command(path.state(t), est, integral, pitch, (float(w[0]), float(w[2])))
+        # turning: the force in the banked plane carries the weight, the path's vertical
+        # acceleration and the commanded sideways one (the plan's and the lateral loop's)
+        ts = track.state(t)
+        ahead = track.state(t + MAG_LEAD * TWO_PI) if MAG_LEAD > 0 else ts
+        a_left = ahead.a_lat + lateral_corr[0]
+        az = math.hypot(ahead.az_up + red.gravity, a_left) - red.gravity
+        c, s = math.cos(ts.heading), math.sin(ts.heading)
+        w_along = c * float(w[0]) + s * float(w[1])
+        return ctl.command(replace(ts, az=az), est, integral, pitch, (w_along, float(w[2])))
 
     ref0 = path.state(0.0)
     pitch0 = 0.0
@@ -162,6 +171,8 @@ def fly(
         k: []
         for k in (*per_sample, "params", "pitch_command", "tail", "inputs", "attitude_saturated")
     }
+    if track is not None:  # the turn's commanded bank and heading (world, rad)
+        rows["bank_command"], rows["heading_command"] = [], []
     record: list = []
     free = config.attitude == "free"
     with FreeBird(model, bird, cmd.params, config=config, aero=aero, gravity=gravity) as fb:
@@ -195,6 +206,8 @@ def fly(
         omega0, d_pitch0 = getattr(fb, "start_rotation", (None, 0.0))
         fb.start(pos0, vel0, pres, pitch=float(pres.pitch[0]) - d_pitch0, omega_body=omega0)
         att = AttitudeLoop(fb, enabled=free and attitude_loop)
+        if track is not None:  # turning: the attitude loop's time constants of a turn
+            att = AttitudeLoop(fb, enabled=free and attitude_loop, beats=TURN_AXIS_BEATS)
         if free and trim and hasattr(fb, "start_moment"):
             att.preset_integral(fb.start_moment, cmd.params, float(pres.pitch[0]), float(ref0.vx))
         compensate = free and stroke_compensation and "stroke_plane" in names
@@ -216,6 +229,7 @@ def fly(
                 float(fb.schedule.output[names.index("pitch")]),
                 stride=max(1, per_beat_ctl // PLAN_PER_BEAT),
             )
+        lat_int = [0.0]
         roll_ref = roll_rate_ref = roll_acc_ref = 0.0  # turning's bank command (filtered)
         att_window: list[tuple[np.ndarray, np.ndarray]] = []
         lat_window: list[tuple[float, float]] = []
@@ -252,22 +266,27 @@ def fly(
                     pitch_ref, pitch_rate_ref, pitch_acc_ref = command_filter(
                         pitch_ref, pitch_rate_ref, pitch, tau_ref, dt_ctl
                     )
+                turn_cmd = None
                 if track is None:
                     roll_cmd = bank_command(lat_window, config.log_per_beat, red.gravity)
                     yaw_cmd = yaw_rate = 0.0
-                else:  # turning: the centripetal acceleration fed forward, heading followed
-                    ts = track.state(t)
-                    ahead = track.state(t + BANK_LEAD * TWO_PI)  # against the roll loop's lag
-                    target = bank_command(
-                        lat_window, config.log_per_beat, red.gravity + ahead.az, ahead.a_lat
+                else:  # turning: banked about the heading (birdsim.flight.bank)
+                    turn_cmd, lat_accel, (roll_ref, roll_rate_ref) = turn_command(
+                        track,
+                        t,
+                        lat_window,
+                        config.log_per_beat,
+                        red.gravity,
+                        (roll_ref, roll_rate_ref),
+                        dt_ctl,
+                        (pitch_ref, pitch_rate_ref, pitch_acc_ref),
+                        lat_int,
                     )
-                    roll_ref, roll_rate_ref, roll_acc_ref = command_filter(
-                        roll_ref, roll_rate_ref, target, BANK_BEATS * TWO_PI, dt_ctl
-                    )
-                    roll_cmd = roll_ref
-                    yaw_cmd, yaw_rate = -ts.heading, -ts.heading_rate  # seed yaw: z down
+                    roll_cmd, yaw_cmd = turn_cmd.roll, turn_cmd.yaw
+                    lateral_corr[0] = lat_accel - track.state(t).a_lat
+                zyx_pitch = pitch_ref if turn_cmd is None else turn_cmd.pitch
                 err, rates = attitude_estimate(
-                    att_window, fb.d, config.log_per_beat, TWO_PI, pitch_ref, roll_cmd, yaw_cmd
+                    att_window, fb.d, config.log_per_beat, TWO_PI, zyx_pitch, roll_cmd, yaw_cmd
                 )
                 body_pitch = pitch_ref - float(err[1])  # the wingbeat-mean pitch
                 if compensate:
@@ -286,6 +305,14 @@ def fly(
                     p_table = cmd.params[names.index("pitch")] if "pitch" in names else pitch
                     sp = cmd.params[sp_index] + p_table - (body_pitch + lead)
                     offset[sp_index] = float(np.clip(sp, *sp_bounds)) - cmd.params[sp_index]
+                if turn_cmd is None:
+                    rate_cmd = body_rates(pitch_ref, roll_cmd, pitch_rate_ref, yaw_rate)
+                    rate_cmd = rate_cmd + np.array([roll_rate_ref, 0.0, 0.0])
+                    acc_cmd = np.array([roll_acc_ref, pitch_acc_ref, 0.0])
+                    turn_rates = body_rates(pitch_ref, roll_cmd, 0.0, yaw_rate)
+                else:
+                    rate_cmd, acc_cmd = turn_cmd.rate, turn_cmd.acc
+                    turn_rates = turn_cmd.rate  # the damping of the commanded rates in M_0
                 right, left, shoulder, tail = att.update(
                     cmd.params,
                     pitch_ref,
@@ -293,10 +320,9 @@ def fly(
                     err,
                     rates,
                     dt_ctl,
-                    rate_cmd=body_rates(pitch_ref, roll_cmd, pitch_rate_ref, yaw_rate)
-                    + np.array([roll_rate_ref, 0.0, 0.0]),
-                    acc_cmd=np.array([roll_acc_ref, pitch_acc_ref, 0.0]),
-                    turn_rates=body_rates(pitch_ref, roll_cmd, 0.0, yaw_rate),
+                    rate_cmd=rate_cmd,
+                    acc_cmd=acc_cmd,
+                    turn_rates=turn_rates,
                     jac_params=None if offset is None else cmd.params + offset,
                     jac_pitch=body_pitch,
                 )
@@ -350,6 +376,9 @@ def fly(
             rows["tail"].extend([(tc.elevation, tc.spread, tc.roll)] * n_new)
             rows["inputs"].extend([att.u.copy()] * n_new)
             rows["attitude_saturated"].extend([att.saturated] * n_new)
+            if track is not None:
+                rows["bank_command"].extend([turn_cmd.bank] * n_new)
+                rows["heading_command"].extend([turn_cmd.heading] * n_new)
             if progress is not None:
                 progress((k + 1) / per_beat_ctl)
         projection = fb.projection_max

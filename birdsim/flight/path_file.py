@@ -58,6 +58,16 @@ def get_flight(name_or_path: str, *, turning: bool = False) -> FlightPath | Mano
     """
     if name_or_path in PATH_PRESETS:
         return PATH_PRESETS[name_or_path]
+    from birdsim.flight.turn_presets import TURN_PRESETS
+
+    if name_or_path in TURN_PRESETS:
+        if not turning:
+            raise ManoeuvreError(
+                f"manoeuvre {name_or_path!r} turns out of the vertical plane, which this "
+                f"command cannot fly yet; allowed: {', '.join(PATH_PRESETS)} or a .toml file "
+                "(birdsim fly flies the turning presets)"
+            )
+        return TURN_PRESETS[name_or_path]
     p = Path(name_or_path)
     if p.suffix.lower() == ".toml" or p.exists():
         flight = load_flight(p)
@@ -69,8 +79,9 @@ def get_flight(name_or_path: str, *, turning: bool = False) -> FlightPath | Mano
                 "heading, turn_rate, y0 all 0 (bank-to-turn flight: issue 23)"
             )
         return flight
+    names = (*PATH_PRESETS, *(TURN_PRESETS if turning else ()))
     raise ManoeuvreError(
-        f"manoeuvre {name_or_path!r} is unknown; allowed: {', '.join(PATH_PRESETS)} or a .toml file"
+        f"manoeuvre {name_or_path!r} is unknown; allowed: {', '.join(names)} or a .toml file"
     )
 
 

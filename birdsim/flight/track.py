@@ -44,7 +44,8 @@ class TrackState:
     """The path at one time in its track frame: ``x`` the distance along the track,
     ``vx``/``ax`` along the heading, ``z``/``vz`` up, ``az`` the vertical acceleration the
     banked force carries (see the module), ``a_lat`` the centripetal acceleration (to the
-    left), ``heading``/``heading_rate`` psi and its rate (rad, counter-clockwise about z)."""
+    left), ``heading``/``heading_rate`` psi and its rate (rad, counter-clockwise about z),
+    ``az_up`` the path's own vertical acceleration."""
 
     x: float
     z: float
@@ -55,6 +56,7 @@ class TrackState:
     a_lat: float
     heading: float
     heading_rate: float
+    az_up: float = 0.0
 
 
 class TrackFrame:
@@ -107,7 +109,34 @@ class TrackFrame:
             "a_lat": a_lat,
             "heading": psi,
             "heading_rate": np.interp(t, self._t, self._psi_rate),
+            "az_up": az,
         }
+
+    def bank_plan(self, t: float, dt: float = TWO_PI / GRID_PER_BEAT) -> tuple[tuple, tuple]:
+        """The planned heading and bank at ``t``, each (value, rate, acceleration) by
+        central differences over ``dt``: the heading psi (world, counter-clockwise) and
+        the bank (seed: right wing down > 0) that tilts the force carrying the path's
+        vertical acceleration and weight by the path's centripetal acceleration,
+        ``atan2(-a_lat, az_up + g)`` (``az_up`` the path's own, not the banked force's)."""
+        ts = np.array([t - dt, t, t + dt])
+        s = self.reference.sample(ts)
+        psi = np.interp(ts, self._t, self._psi)
+        vx, vy = np.asarray(s["vx"], dtype=float), np.asarray(s["vy"], dtype=float)
+        if np.all(np.hypot(vx, vy) > HOLD_SPEED):  # the path's own heading, not the grid's
+            direct = np.arctan2(vy, vx)
+            psi = direct + TWO_PI * np.round((psi - direct) / TWO_PI)
+        c, sn = np.cos(psi), np.sin(psi)
+        a_lat = -sn * np.asarray(s["ax"], dtype=float) + c * np.asarray(s["ay"], dtype=float)
+        phi = np.arctan2(-a_lat, np.asarray(s["az"], dtype=float) + self.gravity)
+
+        def diff(v: np.ndarray) -> tuple[float, float, float]:
+            return (
+                float(v[1]),
+                float((v[2] - v[0]) / (2 * dt)),
+                float((v[2] - 2 * v[1] + v[0]) / dt**2),
+            )
+
+        return diff(psi), diff(phi)
 
     def state(self, t: float) -> TrackState:
         s = self.sample(np.array([float(t)]))

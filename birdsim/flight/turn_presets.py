@@ -1,9 +1,9 @@
-"""The turning presets as paths (issue 23 item 3): data only, not yet flown.
+"""The turning presets as paths (issue 23 item 3), flown by ``birdsim fly`` (attitude free).
 
 Speed-and-heading paths (:class:`birdsim.flight.path.FlightPath`, speed form) in reduced
 units, like the straight presets of :mod:`birdsim.flight.presets` and kept apart from them
-(the ``birdsim fly`` preset list and the straight presets' figures are untouched): the
-bank-to-turn controller registers them once it flies them.
+(the straight presets' lists and figures are untouched); ``birdsim fly`` finds them by
+name and flies them with the attitude free (:mod:`birdsim.flight.turning`).
 
 Every turn is a *coordinated-turn template*: the heading ramps from a turn rate of 0 to
 ``omega_t = V / R`` over :data:`RAMP_BEATS` wingbeats (a smoothstep turn rate: the
@@ -45,9 +45,10 @@ SLOW_SPEED = 0.2
 SLOW_RADIUS = 3.0
 #: Radius of the cruise-speed circle and s-turn (semispans).
 CIRCLE_RADIUS = 25.0
-#: Wingbeats of each turn-rate ramp (slow turns, cruise turns).
-RAMP_BEATS = 1.5
-CRUISE_RAMP_BEATS = 2.0
+#: Wingbeats of each turn-rate ramp (slow turns, cruise turns): long enough for the free
+#: body's roll (1.5 and 2 asked more roll rate than its inputs give; docs/flight.md).
+RAMP_BEATS = 3.0
+CRUISE_RAMP_BEATS = 4.0
 #: Straight flight before the first and after the last turn (wingbeats).
 STRAIGHT_BEATS = 2.0
 
@@ -190,7 +191,8 @@ def _presets() -> dict[str, FlightPath]:
 #: The u-turn's keyhole angle theta [rad] and outbound straight [wingbeats].
 U_TURN_SOLUTION: tuple[float, float] = _solve_u_turn()
 U_TURN_THETA = U_TURN_SOLUTION[0]
-#: The turning presets by name (not in ``PATH_PRESETS``: not yet flown).
+#: The turning presets by name (not in ``PATH_PRESETS``: the straight presets' lists and
+#: figures stay as they were; ``path_file.get_flight(name, turning=True)`` finds them).
 TURN_PRESETS: dict[str, FlightPath] = _presets()
 
 __all__ = [

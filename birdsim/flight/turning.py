@@ -1,0 +1,78 @@
+"""Turning flight's commands, one control step at a time (reduced units; the path in its
+track frame, :class:`birdsim.flight.track.TrackFrame`; the attitude of
+:mod:`birdsim.flight.bank`).
+
+* **bank**: the path's planned bank ``atan2(-a_lat, g + az)`` (its centripetal
+  acceleration tilting the force that carries the weight) with its rate and acceleration
+  fed forward, plus the lateral loop's correction (:func:`bank.lateral_acceleration`: a
+  triple pole of ``bank.LATERAL_BEATS`` on the wingbeat-mean side offset, with an
+  integral), filtered over :data:`BANK_BEATS`;
+* **heading**: the path's heading (the body's yaw follows the track; commanding the
+  bird's own air-velocity heading instead, zero sideslip by construction, fed the
+  lateral error back through the yaw and made a slow oscillation: circle RMS 0.42
+  against 0.195 semispan);
+* **rates fed forward** from the plan :data:`FF_LEAD` wingbeats ahead: the moments of
+  the attitude loop reach the body late (the inputs' smoothing, the wingbeat-mean
+  response, the one-wingbeat estimate), measured on the circle: lead 0, 0.25, 0.5, 0.75
+  and 1 wingbeat gave 16-wingbeat path RMS 5.0 (diverging), 1.5, 0.82, 0.25 and 0.24
+  semispan (docs/flight.md).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+from typing import Any
+
+import numpy as np
+
+from birdsim.flight.attitude_commands import command_filter
+from birdsim.flight.bank import TurnAttitude, lateral_acceleration, lateral_fit, turn_attitude
+
+TWO_PI = 2.0 * math.pi
+#: Time constant (wingbeats) of the filter on the lateral loop's bank correction.
+BANK_BEATS = 0.5
+#: Wingbeats ahead of now that the plan's body rates and accelerations are fed forward.
+FF_LEAD = 0.75
+#: The attitude loop's time constants in a turn (roll, pitch, yaw; wingbeats): the roll
+#: loop faster than straight flight's 2 (measured on the circle, lateral loop of 10
+#: wingbeats: roll 2 -> path RMS diverging after 20 wingbeats, 1.5 -> 0.76, 1.25 ->
+#: 0.47 / 0.195 (with the heading of the path), 1 -> diverging).
+TURN_AXIS_BEATS = (1.25, 3.0, 2.0)
+
+
+def turn_command(
+    track: Any,
+    t: float,
+    lat_window: list,
+    per_beat: int,
+    gravity: float,
+    filter_state: tuple[float, float],
+    dt: float,
+    pitch: tuple[float, float, float],
+    lat_integral: list[float],
+) -> tuple[TurnAttitude, float, tuple[float, float]]:
+    """The turning attitude command at reduced time ``t``: ``lat_window`` the last
+    wingbeat's (side offset, its rate) samples (to the left of the path), ``pitch`` the
+    body's pitch command (value, rate, acceleration), ``filter_state`` the bank
+    correction's filter (value, rate) and ``lat_integral`` (one number, updated here)
+    the integral of the side offset.  Returns the command, the commanded sideways
+    acceleration (to the left; the force in the banked plane carries it) and the
+    filter's new state."""
+    heading, bank_ff = track.bank_plan(t)
+    st = track.state(t)
+    y, vy = lateral_fit(lat_window, per_beat)
+    lat_integral[0] += dt * y
+    a_left = st.a_lat + lateral_acceleration(y, vy, lat_integral[0])
+    up = gravity + st.az_up
+    target = math.atan2(-a_left, up) - math.atan2(-st.a_lat, up)
+    value, rate, _ = command_filter(*filter_state, target, BANK_BEATS * TWO_PI, dt)
+    cmd = turn_attitude(heading, (bank_ff[0] + value, bank_ff[1] + rate, bank_ff[2]), pitch)
+    if FF_LEAD > 0.0:
+        h2, b2 = track.bank_plan(t + FF_LEAD * TWO_PI)
+        ahead = turn_attitude(h2, (b2[0] + value, b2[1] + rate, b2[2]), pitch)
+        cmd = replace(cmd, rate=np.asarray(ahead.rate), acc=np.asarray(ahead.acc))
+    return cmd, a_left, (value, rate)
+
+
+__all__ = ["BANK_BEATS", "FF_LEAD", "TURN_AXIS_BEATS", "turn_command"]
