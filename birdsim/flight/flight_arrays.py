@@ -101,6 +101,27 @@ def fit_matrix(n: int, period: float) -> np.ndarray:
     return wingbeat_fit_matrix(n, period, beats=FIT_BEATS)
 
 
+def extend_rows(
+    rows: dict, refs: dict, y_ref: Any, cmd: Any, tail: Any, att: Any, turn_cmd: Any
+) -> None:
+    """Append one control interval's references and controls to the flight's ``rows``,
+    one entry per new log sample (``refs["x"]`` has one per sample)."""
+    n_new = len(refs["x"])
+    rows["x_ref"].extend(np.asarray(refs["x"]).tolist())
+    rows["z_ref"].extend(np.asarray(refs["z"]).tolist())
+    rows["y_ref"].extend(np.asarray(y_ref).tolist())
+    rows["Fx_demand"].extend([cmd.Fx] * n_new)
+    rows["Fz_demand"].extend([cmd.Fz] * n_new)
+    rows["climb_demand"].extend([cmd.climb] * n_new)
+    rows["saturated"].extend([cmd.saturated] * n_new)
+    rows["tail"].extend([(tail.elevation, tail.spread, tail.roll)] * n_new)
+    rows["inputs"].extend([att.u.copy()] * n_new)
+    rows["attitude_saturated"].extend([att.saturated] * n_new)
+    if turn_cmd is not None:
+        rows["bank_command"].extend([turn_cmd.bank] * n_new)
+        rows["heading_command"].extend([turn_cmd.heading] * n_new)
+
+
 def flight_arrays(record: list, rows: dict, names: tuple[str, ...]) -> dict[str, np.ndarray]:
     """The flight's per-sample arrays (reduced units) from the step records."""
     t = np.array([r[0] for r in record])

@@ -21,7 +21,7 @@ from birdsim.flight.attitude import FIT_BEATS, AttitudeLoop
 from birdsim.flight.attitude_commands import bank_command, body_rates, command_filter
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.demand_schedule import DemandSchedule, RefState
-from birdsim.flight.flight_arrays import attitude_estimate, flight_arrays
+from birdsim.flight.flight_arrays import attitude_estimate, extend_rows, flight_arrays
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
 from birdsim.flight.pitch_plan import PitchPlan, feedforward_pitch
 from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
@@ -229,7 +229,7 @@ def fly(
                 float(fb.schedule.output[names.index("pitch")]),
                 stride=max(1, per_beat_ctl // PLAN_PER_BEAT),
             )
-        lat_int = [0.0]
+        lat_int, turn_cmd = [0.0], None
         roll_ref = roll_rate_ref = roll_acc_ref = 0.0  # turning's bank command (filtered)
         att_window: list[tuple[np.ndarray, np.ndarray]] = []
         lat_window: list[tuple[float, float]] = []
@@ -364,28 +364,12 @@ def fly(
             )
             del att_window[: max(0, len(att_window) - FIT_BEATS * config.log_per_beat)]
             del lat_window[: max(0, len(lat_window) - FIT_BEATS * config.log_per_beat)]
-            n_new = len(new)
-            rows["x_ref"].extend(refs["x"].tolist())
-            rows["z_ref"].extend(refs["z"].tolist())
-            rows["y_ref"].extend(y_ref.tolist())
-            rows["Fx_demand"].extend([cmd.Fx] * n_new)
-            rows["Fz_demand"].extend([cmd.Fz] * n_new)
-            rows["climb_demand"].extend([cmd.climb] * n_new)
-            rows["saturated"].extend([cmd.saturated] * n_new)
-            tc = fb.cb.tail_controls
-            rows["tail"].extend([(tc.elevation, tc.spread, tc.roll)] * n_new)
-            rows["inputs"].extend([att.u.copy()] * n_new)
-            rows["attitude_saturated"].extend([att.saturated] * n_new)
-            if track is not None:
-                rows["bank_command"].extend([turn_cmd.bank] * n_new)
-                rows["heading_command"].extend([turn_cmd.heading] * n_new)
+            extend_rows(rows, refs, y_ref, cmd, fb.cb.tail_controls, att, turn_cmd)
             if progress is not None:
                 progress((k + 1) / per_beat_ctl)
         projection = fb.projection_max
         root_applied = fb.root_applied_max
-    keep = sum(
-        1 for r in record if r[0] <= beats * TWO_PI + 1e-9
-    )  # whole control intervals were flown
+    keep = sum(1 for r in record if r[0] <= beats * TWO_PI + 1e-9)  # whole intervals flown
     record = record[:keep]
     rows = {k: v[:keep] for k, v in rows.items()}
     arrays = flight_arrays(record, rows, names)
