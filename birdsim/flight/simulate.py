@@ -44,7 +44,7 @@ import mujoco
 import numpy as np
 
 from birdsim.errors import BirdsimError
-from birdsim.flight import step_kernel
+from birdsim.flight import fast_loop, step_kernel
 from birdsim.flight.partition import Partition, _as_slice, partition
 from birdsim.flight.wingbeat import Prescription, WingbeatSchedule
 from birdsim.mujoco.callback import AeroCallback
@@ -267,8 +267,10 @@ class FreeBird:
         n = pres.qpos.shape[0]
         nf = len(part.free_dofs)
         if free_rot and step_kernel.AVAILABLE and F == slice(0, 6) and P == slice(6, m.nv):
-            # the same arithmetic compiled (birdsim.flight.step_kernel)
-            dmax, vmax = step_kernel.free_loop(self, pres, Pq, P, W, record, every, weight)
+            if fast_loop.usable(self, F, P):  # every step in compiled code (fast_loop)
+                dmax, vmax = fast_loop.run(self, pres, Pq, P, W, record, every, weight)
+            else:  # the same arithmetic compiled (birdsim.flight.step_kernel)
+                dmax, vmax = step_kernel.free_loop(self, pres, Pq, P, W, record, every, weight)
             if project and n:
                 self.projection_max = max(self.projection_max, dmax, vmax * h)
             self._check_finite()
