@@ -11,12 +11,15 @@ over 128 steps stays far below); a closed-loop flight of 10 wingbeats, the path 
 
 from __future__ import annotations
 
+import copy
 import dataclasses
 
 import numpy as np
 import pytest
+from scipy.optimize import lsq_linear
 
-from birdsim.flight import fast_loop
+from birdsim.flight import fast_loop, fast_prescription
+from birdsim.flight.bounded_lsq import bounded_lsq
 from birdsim.flight.freeflight import fly
 from birdsim.flight.gust import Gust
 from birdsim.flight.path import FlightPath, PathKeyframe
@@ -112,3 +115,42 @@ def test_unsupported_callbacks_keep_the_reference_path():
         assert not aero_kernel.supported(fb.cb)
     with FreeBird("m4", BIRD, _params("m4"), config=SimConfig(attitude="posed")) as fb:
         assert not fast_loop.usable(fb, slice(0, 3), slice(3, fb.m.nv))
+
+
+@pytest.mark.parametrize("model", ["base", "m1", "m2", "m3", "m4", "m5"])
+def test_compiled_prescription_is_the_reference(monkeypatch, model):
+    """Rows within 1e-15 (two 3-term sums of the ball joint in another order: measured
+    up to 6e-17); m5's fold keeps the reference path (no spec)."""
+    params = _params(model)
+    names = get_model(model).param_names
+    left = params.copy()
+    left[names.index("flap_amp")] -= 0.05
+    with FreeBird(model, BIRD, params, config=SimConfig(attitude="free")) as fb:
+        has_spec = fast_prescription.spec(fb.kin, fb.red) is not None
+        assert has_spec is (model != "m5")
+        out = {}
+        for compiled in (True, False):
+            monkeypatch.setattr(fast_prescription, "ENABLED", compiled)
+            sc = copy.deepcopy(fb.schedule)
+            rows = []
+            for k, (lft, sh) in enumerate(((None, (0, 0)), (left, (0, 0)), (left, (0.05, -0.03)))):
+                sc.shoulder_target = np.array(sh, dtype=float)
+                times = k * 0.4 + np.arange(16) * 0.05
+                rows.append(sc.advance(params + 0.01 * k, times, k * 0.4, 0.8, lft, None))
+            out[compiled] = rows
+    for a, b in zip(out[True], out[False]):
+        for x, y in ((a.qpos, b.qpos), (a.qvel, b.qvel), (a.qacc, b.qacc)):
+            np.testing.assert_allclose(x, y, rtol=0, atol=1e-15)
+        assert (a.params_left is None) == (b.params_left is None)
+    assert np.any(out[True][2].qvel != out[True][0].qvel)
+
+
+def test_bounded_lsq_is_lsq_linear():
+    rng = np.random.default_rng(7)
+    for scale in (0.1, 1.0, 10.0):  # inside the bounds, then more and more outside
+        a = rng.normal(size=(6, 3))
+        b = scale * rng.normal(size=6)
+        lb, ub = -np.ones(3), np.ones(3)
+        x, mask = bounded_lsq(a, b, lb, ub)
+        ref = lsq_linear(a, b, bounds=(lb, ub))
+        assert np.array_equal(x, ref.x) and np.array_equal(mask, ref.active_mask)
