@@ -23,25 +23,12 @@ import mujoco
 import numpy as np
 
 from birdsim.flight import step_kernel
+from birdsim.flight.partition import _as_slice
 from birdsim.mujoco import aero_kernel, capi
 from birdsim.physics.jit import numba
 
 #: the compiled loop is used where :func:`usable` (False: always the reference path)
 ENABLED = True
-
-
-def usable(fb, F, P) -> bool:
-    """Whether :func:`run` can step ``fb`` (a FreeBird; F, P its free and prescribed
-    DOF as slices)."""
-    return (
-        ENABLED
-        and step_kernel.AVAILABLE
-        and capi.AVAILABLE
-        and fb.part.free_rotation
-        and F == slice(0, 6)
-        and P == slice(6, fb.m.nv)
-        and aero_kernel.supported(fb.cb)
-    )
 
 
 def _run_steps(
@@ -151,11 +138,69 @@ else:  # pragma: no cover
     run_steps = None
 
 
-def run(fb, pres, Pq, P, W, record: list | None, every: int, weight: np.ndarray) -> tuple:
-    """:meth:`FreeBird.step_many` compiled: ``len(pres.qpos)`` steps, samples appended
-    to ``record`` as the reference appends them; returns (max |dx|, max |dv|) of the
-    projection."""
-    m, d, cb = fb.m, fb.d, fb.cb
+class _Plan:
+    """The compiled loop's fixed arguments for one FreeBird (views of its MjData, the
+    callback's sites), made once."""
+
+    def __init__(self, fb) -> None:
+        m, d, cb = fb.m, fb.d, fb.cb
+        part = fb.part
+        self.F, self.P, self.Pq, self.W = (
+            _as_slice(a) for a in (part.free_dofs, part.pres_dofs, part.pres_qpos, part.wing_dofs)
+        )
+        self.static = (
+            m._address, d._address, d.qpos, d.qvel, d.qfrc_applied, d.qfrc_passive,
+            d.qfrc_bias, d.xfrc_applied, fb._M, d.subtree_com[fb.torso], d.xpos[fb.torso],
+            d.xmat[fb.torso],
+        )  # fmt: skip
+        self.sites = (
+            np.ascontiguousarray(cb.site_ids), np.ascontiguousarray(cb.body_ids), d.site_xpos,
+            d.site_xmat, np.ascontiguousarray(cb.areas[:, 0]), m.opt.wind,
+        )  # fmt: skip
+        self.aero_for: tuple | None = None
+        self.aero: tuple = ()
+
+    def aero_arguments(self, cb) -> tuple:
+        key = (cb.tail_controls, cb.enabled, cb.body_drag)
+        if self.aero_for is None or any(a is not b for a, b in zip(key, self.aero_for)):
+            self.aero = aero_kernel.parameters(cb)
+            self.aero_for = key
+        return self.aero
+
+
+def _plan(fb) -> _Plan | None:
+    plan = fb.__dict__.get("_fast_plan", False)
+    if plan is False:
+        plan = _Plan(fb) if run_steps is not None else None
+        if plan is not None and not _static_ok(fb, plan):
+            plan = None
+        fb.__dict__["_fast_plan"] = plan
+    return plan
+
+
+def _static_ok(fb, plan: _Plan) -> bool:
+    return (
+        step_kernel.AVAILABLE
+        and capi.AVAILABLE
+        and fb.part.free_rotation
+        and plan.F == slice(0, 6)
+        and plan.P == slice(6, fb.m.nv)
+        and isinstance(plan.Pq, slice)
+        and isinstance(plan.W, slice)
+    )
+
+
+def step(fb, pres, wind: np.ndarray, record: list | None, every: int) -> bool:
+    """:meth:`FreeBird.step_many` compiled, when :func:`usable`: ``len(pres.qpos)``
+    steps, samples appended to ``record`` as the reference appends them.  False (nothing
+    done) where it does not apply."""
+    plan = _plan(fb) if ENABLED else None
+    if plan is None or not aero_kernel.supported(fb.cb):
+        return False
+    m, cb, h = fb.m, fb.cb, fb.h
+    m.opt.wind[:] = wind
+    weight = fb.total_mass * np.array(m.opt.gravity)
+    Pq, P = plan.Pq, plan.P
     pres_q = np.ascontiguousarray(pres.qpos[:, Pq])
     pres_v = np.ascontiguousarray(pres.qvel[:, P])
     pres_a = np.ascontiguousarray(pres.qacc[:, P])
@@ -164,39 +209,45 @@ def run(fb, pres, Pq, P, W, record: list | None, every: int, weight: np.ndarray)
     rec_q = np.empty((samples, m.nq))
     rec_v = np.empty((samples, m.nv))
     rec_out = np.empty((samples, 10))
-    fl, ints, frame = aero_kernel.parameters(cb)
+    fl, ints, frame = plan.aero_arguments(cb)
     state = np.concatenate([fb.P, fb.X, fb.L])
     stats = np.array([0.0, 0.0, fb.root_applied_max])
     installed = mujoco.get_mjcb_passive()
     mujoco.set_mjcb_passive(None)
     try:
         tail = run_steps(
-            m._address, d._address, d.qpos, d.qvel, d.qfrc_applied, d.qfrc_passive,
-            d.qfrc_bias, d.xfrc_applied, fb._M, d.subtree_com[fb.torso], d.xpos[fb.torso],
-            d.xmat[fb.torso], pres_q, pres_v, pres_a, Pq.start, P.start, W.start, W.stop,
-            cb.site_ids, cb.body_ids, d.site_xpos, d.site_xmat, cb.areas[:, 0].copy(),
-            m.opt.wind, fl, ints, frame, state, weight, fb.h, fb.total_mass,
+            *plan.static, pres_q, pres_v, pres_a, Pq.start, P.start, plan.W.start,
+            plan.W.stop, *plan.sites, fl, ints, frame, state, weight, h, fb.total_mass,
             bool(fb.config.momentum_projection), every, rec_q, rec_v, rec_out, stats,
         )  # fmt: skip
     finally:
         mujoco.set_mjcb_passive(installed)
     fb.P, fb.X, fb.L = state[:3].copy(), state[3:6].copy(), state[6:].copy()
-    t0 = fb.time
-    fb.time = t0 + 0.0
-    for _ in range(n):  # the reference's time, summed step by step
-        fb.time += fb.h
+    time = fb.time
+    times = []
+    for k in range(n):  # the reference's time, summed step by step
+        if k % every == 0:
+            times.append(time)
+        time += h
+    fb.time = time
     fb.root_applied_max = float(stats[2])
     if ints[aero_kernel.TAIL]:
         cb.tail_force_body = tail[:3].copy()
         cb.tail_alpha = float(tail[3])
     if record is not None:
-        time = t0
+        power = rec_out[:, 6].tolist()
         for j in range(samples):
             r = rec_out[j]
-            record.append((time, rec_q[j], rec_v[j], r[0:3], r[3:6], float(r[6]), r[7:10]))
-            for _ in range(every):
-                time += fb.h
-    return float(stats[0]), float(stats[1])
+            record.append((times[j], rec_q[j], rec_v[j], r[0:3], r[3:6], power[j], r[7:10]))
+    if fb.config.momentum_projection and n:
+        fb.projection_max = max(fb.projection_max, float(stats[0]), float(stats[1]) * h)
+    fb._check_finite()
+    return True
 
 
-__all__ = ["ENABLED", "run", "run_steps", "usable"]
+def usable(fb, F=None, P=None) -> bool:
+    """Whether :func:`step` steps ``fb`` (a FreeBird) in compiled code."""
+    return ENABLED and _plan(fb) is not None and aero_kernel.supported(fb.cb)
+
+
+__all__ = ["ENABLED", "run_steps", "step", "usable"]

@@ -46,9 +46,10 @@ def spec(kin: KinematicModel, bird: Bird) -> tuple | None:
     """(present (J,), index (J, 3), scale (J, 3), const (J, 3)) of each joint's amplitude,
     phase and bias: ``scale * p[index]``, or ``const`` where index is -1; None when a
     coefficient has another form or a joint is outside :data:`JOINT_ORDER`."""
-    key = (kin.name, id(bird), bird)
-    if key in _SPECS:
-        return _SPECS[key]
+    key = (kin.name, id(bird))
+    hit = _SPECS.get(key)
+    if hit is not None and hit[0] is bird:
+        return hit[1]
     names = kin.param_names
     n = len(names)
     probe = np.array([1.0, 2.0, -0.7])
@@ -86,9 +87,9 @@ def spec(kin: KinematicModel, bird: Bird) -> tuple | None:
                     ok = False
                 index[j, f], scale[j, f] = hits[0], s
         out = (present, index, scale, const) if ok else None
-    _SPECS[key] = out
     if len(_SPECS) > 64:
         _SPECS.clear()
+    _SPECS[key] = (bird, out)
     return out
 
 

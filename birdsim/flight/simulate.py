@@ -237,6 +237,8 @@ class FreeBird:
         x fwd / y right / z down, about the centre of mass: the aerodynamic moment with
         the attitude free, the hidden holding moment when posed), external force = aero
         + weight (world), mechanical power of the wing joints)."""
+        if fast_loop.step(self, pres, wind, record, every):  # every step compiled (fast_loop)
+            return
         m, d, h = self.m, self.d, self.h
         m.opt.wind[:] = wind
         M = self._M
@@ -267,10 +269,8 @@ class FreeBird:
         n = pres.qpos.shape[0]
         nf = len(part.free_dofs)
         if free_rot and step_kernel.AVAILABLE and F == slice(0, 6) and P == slice(6, m.nv):
-            if fast_loop.usable(self, F, P):  # every step in compiled code (fast_loop)
-                dmax, vmax = fast_loop.run(self, pres, Pq, P, W, record, every, weight)
-            else:  # the same arithmetic compiled (birdsim.flight.step_kernel)
-                dmax, vmax = step_kernel.free_loop(self, pres, Pq, P, W, record, every, weight)
+            # the same arithmetic compiled (birdsim.flight.step_kernel)
+            dmax, vmax = step_kernel.free_loop(self, pres, Pq, P, W, record, every, weight)
             if project and n:
                 self.projection_max = max(self.projection_max, dmax, vmax * h)
             self._check_finite()
