@@ -1,13 +1,17 @@
-"""The compiled free-flight loop (birdsim.flight.fast_loop) flies as the reference path.
+"""Issue 27's compiled free flight flies as the reference path.
 
-The reference is ``step_kernel.free_loop``: the Python loop with the Python aero callback
-(``fast_loop.ENABLED = False``).  The compiled loop does the same operations in the same
-order except two sums (the tail's ``xmat @ f``, which numpy hands to BLAS, and the wings'
-power ``applied[W] @ qvel[W]``), summed naively: round-off of an ulp.  Tolerances: one
-wingbeat from one state, every log entry within 1e-12 (an ulp of the tail force grown
-over 128 steps stays far below); a closed-loop flight of 10 wingbeats, the path within
-1e-9 semispan (issue 27's bound; measured 1.4e-14 in x) and every log array within
-1e-9 of its scale."""
+The reference: the Python step loop with the Python aero callback
+(``fast_loop.ENABLED = False``), the numpy prescription (``fast_prescription``), scipy's
+table interpolation (``fast_lookup``) and ``lsq_linear`` (``bounded_lsq``).  The compiled
+loop does the same operations in the same order except two sums (the tail's
+``xmat @ f``, which numpy hands to BLAS, and the wings' power ``applied[W] @ qvel[W]``),
+summed naively; the prescription's ball joint sums two 3-term products in another order
+than numpy's einsum and stacked matmul; the lookup and the allocation are bitwise
+scipy's.  Tolerances: one wingbeat from one state, every log entry within 1e-12 (an ulp
+of the tail force grown over 128 steps stays far below); the prescription's rows within
+1e-15 (measured 6e-17); a closed-loop flight of 10 wingbeats with a gust, every
+switch on against every switch off: the path within 1e-9 semispan (issue 27's bound;
+measured 7e-15) and every log array within 1e-9 of its scale."""
 
 from __future__ import annotations
 
@@ -19,6 +23,7 @@ import pytest
 from scipy.optimize import lsq_linear
 
 from birdsim.flight import fast_loop, fast_prescription
+from birdsim.flight import bounded_lsq as bounded_lsq_module
 from birdsim.flight.bounded_lsq import bounded_lsq
 from birdsim.flight.freeflight import fly
 from birdsim.flight.gust import Gust
@@ -28,6 +33,7 @@ from birdsim.mujoco import aero_kernel
 from birdsim.mujoco.tail import TailControls
 from birdsim.physics.bird import Bird
 from birdsim.physics.kinematics import get_model
+from birdsim.tables import fast_lookup
 from birdsim.tables.lookup import load_table
 
 BIRD = Bird.from_toml("models/seed-bird.toml")
@@ -92,7 +98,8 @@ def test_compiled_flight_follows_the_reference_flight(monkeypatch):
     gust = (Gust(4.0, 1.0, 0.1, -0.05, wy=0.05),)  # lateral too: the roll loop acts
     logs = {}
     for compiled in (True, False):
-        monkeypatch.setattr(fast_loop, "ENABLED", compiled)
+        for switch in (fast_loop, fast_prescription, fast_lookup, bounded_lsq_module):
+            monkeypatch.setattr(switch, "ENABLED", compiled)
         r = fly(path, table, BIRD, "m4", config=SimConfig(attitude="free"), gusts=gust)
         logs[compiled] = r.arrays
     a, b = logs[True], logs[False]
@@ -154,3 +161,23 @@ def test_bounded_lsq_is_lsq_linear():
         x, mask = bounded_lsq(a, b, lb, ub)
         ref = lsq_linear(a, b, bounds=(lb, ub))
         assert np.array_equal(x, ref.x) and np.array_equal(mask, ref.active_mask)
+
+
+def test_compiled_table_lookup_is_scipys():
+    """Bitwise: the same operations in scipy's order (random points, grid nodes, both
+    ends of every axis); outside the grid or NaN: None (scipy refuses or fills)."""
+    table = load_table("tables/m4.npz")
+    rgi = table._interpolator()
+    fast = fast_lookup.Interpolant(rgi.grid, rgi.values)
+    rng = np.random.default_rng(8)
+    pts = np.stack([rng.uniform(g[0], g[-1], 500) for g in rgi.grid], axis=1)
+    nodes = np.stack([rng.choice(g, 100) for g in rgi.grid], axis=1)
+    ends = np.array([[g[0] for g in rgi.grid], [g[-1] for g in rgi.grid]])
+    pts = np.concatenate([pts, nodes, ends])
+    got = fast_lookup.interpolate(fast, pts)
+    assert got is not None and np.array_equal(got, rgi(pts))
+    outside = ends[1:] + 1e-9
+    assert fast_lookup.interpolate(fast, outside) is None
+    assert fast_lookup.interpolate(fast, np.full((1, 3), np.nan)) is None
+    one = table.lookup_many(-0.1, -0.2, 0.45)  # through the table's own call
+    assert one["flap_amp"].shape == ()

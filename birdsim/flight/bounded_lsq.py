@@ -14,13 +14,16 @@ from __future__ import annotations
 import numpy as np
 from scipy.optimize import lsq_linear
 
+#: solve within the bounds directly where possible (False: always lsq_linear)
+ENABLED = True
+
 
 def bounded_lsq(
     a: np.ndarray, b: np.ndarray, lb: np.ndarray, ub: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray]:
     """``argmin |a x - b|`` with ``lb <= x <= ub``: (x, active mask as lsq_linear's:
     -1 / 1 where a lower / upper bound is active, 0 elsewhere)."""
-    if np.all(lb < ub):
+    if ENABLED and np.all(lb < ub):
         x = np.linalg.lstsq(a, b, rcond=-1)[0]
         if np.all((x >= lb) & (x <= ub)):
             return x, np.zeros(x.shape[0])

@@ -19,6 +19,9 @@ import numpy as np
 
 from birdsim.physics.jit import numba
 
+#: the compiled interpolation is used where it applies (False: always scipy)
+ENABLED = True
+
 
 def _interval(grid: np.ndarray, x: float) -> int:
     n = grid.shape[0]
@@ -93,7 +96,7 @@ def interpolate(table: Interpolant, pts: np.ndarray) -> np.ndarray | None:
     """The multilinear interpolation at ``pts`` (m, d), as scipy's
     RegularGridInterpolator computes it; None where this does not apply (the caller then
     asks scipy)."""
-    if not table.usable or pts.ndim != 2 or pts.shape[1] != len(table.grid):
+    if not ENABLED or not table.usable or pts.ndim != 2 or pts.shape[1] != len(table.grid):
         return None
     out = np.empty((pts.shape[0], table.k))
     pts = np.ascontiguousarray(pts, dtype=float)
