@@ -232,8 +232,8 @@ def _prescribe(
 
 
 if numba is not None:
-    _coef = numba.njit(cache=True, inline="always")(_coef)
-    _shifted = numba.njit(cache=True, inline="always")(_shifted)
+    _coef = numba.njit(cache=True)(_coef)
+    _shifted = numba.njit(cache=True)(_shifted)
     _side = numba.njit(cache=True)(_side)
     prescribe_kernel = numba.njit(cache=True)(_prescribe)
 else:  # pragma: no cover
