@@ -29,7 +29,21 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "manoeuvre",
         metavar="MANOEUVRE",
-        help="a preset (hover, cruise, take-off, landing) or a manoeuvre .toml file",
+        nargs="*",
+        help="a preset (hover, cruise, take-off, landing) or a manoeuvre .toml file; several: a batch (--out is then a folder)",
+    )
+    p.add_argument(
+        "--batch",
+        metavar="FILE",
+        help="a batch: a text file with one manoeuvre per line (# comments), flown as with several MANOEUVREs",
+    )
+    p.add_argument(
+        "--jobs", metavar="N", help="a batch's local worker processes (default: one per core)"
+    )
+    p.add_argument(
+        "--dask",
+        metavar="SCHEDULER",
+        help="fly a batch on a Dask cluster: tcp://HOST:PORT or local:N, as `tables build` (needs birdsim[cluster])",
     )
     p.add_argument(
         "--model",
@@ -104,10 +118,21 @@ def run(args: argparse.Namespace) -> int:
     from birdsim.flight.simulate import SimConfig
     from birdsim.physics.kinematics import get_model
 
-    flight = get_flight(args.manoeuvre)
+    sources = list(args.manoeuvre)
+    if args.batch:
+        from birdsim.flight.batch import read_batch
+
+        sources += read_batch(args.batch)
+    if not sources:
+        raise BirdsimError("no MANOEUVRE; allowed: a preset, a manoeuvre .toml file, several, or --batch FILE")
+    seconds = parse_seconds(args.seconds)
+    if len(sources) > 1 or args.batch or args.jobs is not None or args.dask is not None:
+        from birdsim.commands.fly_batch import run_many
+
+        return run_many(args, sources, seconds)
+    flight = get_flight(sources[0])
     model = get_model(args.model).name
     gusts = [parse_gust(g) for g in args.gust]
-    seconds = parse_seconds(args.seconds)
     out = Path(args.out) if args.out else None
     if out is not None:
         if out.suffix.lower() != ".npz":
