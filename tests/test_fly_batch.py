@@ -1,11 +1,12 @@
 """Batches of flights (``birdsim fly A B ...``, ``--batch``, ``--jobs``, ``--dask``;
-birdsim/flight/batch.py): every executor flies the same flights bit for bit (pools of
-one and two fresh worker processes here; (slow) a Dask local:2 cluster against the
-pool), a failed entry is one
+birdsim/flight/batch.py): every executor flies the same flights bit for bit (the two
+fresh workers of a pool here; (slow) a Dask local:2 cluster against the pool), a failed
+entry is one
 line naming it while the others are written, bad input is one line and exit 2."""
 
 from __future__ import annotations
 
+import dataclasses
 import json
 
 import numpy as np
@@ -30,8 +31,8 @@ def _text(info: dict) -> str:
     return json.dumps(finite_or_none(info), sort_keys=True, default=str)
 
 
-def _same(a: list[dict], b: list[dict]) -> None:
-    assert [r["label"] for r in a] == [r["label"] for r in b]
+def _same(a: list[dict], b: list[dict], labels: bool = True) -> None:
+    assert not labels or [r["label"] for r in a] == [r["label"] for r in b]
     for ra, rb in zip(a, b):
         assert ra["arrays"].keys() == rb["arrays"].keys()
         for k, v in ra["arrays"].items():
@@ -40,18 +41,21 @@ def _same(a: list[dict], b: list[dict]) -> None:
         assert _text(ra["info"]) == _text(rb["info"])
 
 
-def _pool(n: int) -> list[dict]:
+def _pool(n: int, jobs: list[FlightJob]) -> list[dict]:
     pool = local_executor(n)
     try:
-        return run_batch(_jobs(), pool)
+        return run_batch(jobs, pool)
     finally:
         pool.shutdown()
 
 
-def test_pools_of_one_and_two_workers_fly_the_same_flights_bitwise():
-    one, two = _pool(1), _pool(2)
-    _same(one, two)
-    assert one[2]["info"]["wingbeats"] > 0.1
+def test_the_workers_of_a_pool_fly_the_same_flights_bitwise():
+    """Each flight twice on a pool of two fresh workers (the copies land on either)."""
+    jobs = _jobs()[1:]
+    twice = jobs + [dataclasses.replace(j, index=j.index + 10) for j in jobs]
+    res = _pool(2, twice)
+    _same(res[:2], res[2:], labels=False)
+    assert res[1]["info"]["wingbeats"] > 0.1
 
 
 def test_a_failed_entry_is_one_line_and_the_others_are_written(tmp_path, capsys):
@@ -92,7 +96,7 @@ def test_dask_flies_the_local_pools_flights_bitwise():
     pytest.importorskip("distributed")
     from birdsim.tables.cluster import dask_executor
 
-    local = _pool(2)
+    local = _pool(2, _jobs())
     with dask_executor("local:2") as executor:
         remote = run_batch(_jobs(), executor)
     _same(local, remote)
