@@ -16,9 +16,7 @@ SECONDS = 50.0  # 10 wingbeats of the seed bird (period 5)
 
 
 def _jobs() -> list[FlightJob]:
-    return [
-        FlightJob(k, "cruise", "m4", attitude="free", seconds=SECONDS) for k in range(FLIGHTS)
-    ]
+    return [FlightJob(k, "cruise", "m4", attitude="free", seconds=SECONDS) for k in range(FLIGHTS)]
 
 
 def main() -> None:

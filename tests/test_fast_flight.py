@@ -22,8 +22,8 @@ import numpy as np
 import pytest
 from scipy.optimize import lsq_linear
 
-from birdsim.flight import fast_loop, fast_prescription
 from birdsim.flight import bounded_lsq as bounded_lsq_module
+from birdsim.flight import fast_loop, fast_prescription
 from birdsim.flight.bounded_lsq import bounded_lsq
 from birdsim.flight.freeflight import fly
 from birdsim.flight.gust import Gust

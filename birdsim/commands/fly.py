@@ -124,7 +124,9 @@ def run(args: argparse.Namespace) -> int:
 
         sources += read_batch(args.batch)
     if not sources:
-        raise BirdsimError("no MANOEUVRE; allowed: a preset, a manoeuvre .toml file, several, or --batch FILE")
+        raise BirdsimError(
+            "no MANOEUVRE; allowed: a preset, a manoeuvre .toml file, several, or --batch FILE"
+        )
     seconds = parse_seconds(args.seconds)
     if len(sources) > 1 or args.batch or args.jobs is not None or args.dask is not None:
         from birdsim.commands.fly_batch import run_many

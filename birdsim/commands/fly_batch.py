@@ -54,8 +54,15 @@ def run_many(args: argparse.Namespace, sources: list[str], seconds: float | None
         )
     jobs = [
         FlightJob(
-            k, src, model, args.bird, args.table, tuple(args.gust), args.attitude,
-            args.open_loop, seconds,
+            k,
+            src,
+            model,
+            args.bird,
+            args.table,
+            tuple(args.gust),
+            args.attitude,
+            args.open_loop,
+            seconds,
         )  # fmt: skip
         for k, src in enumerate(sources)
     ]

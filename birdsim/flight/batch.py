@@ -122,7 +122,9 @@ def run_job(job: FlightJob) -> dict[str, Any]:
             config=SimConfig(attitude=job.attitude),
         )
         arrays = log_arrays(result, reference.name)
-        phases = flight.regime if isinstance(flight, Manoeuvre) else getattr(reference, "regime", None)
+        phases = (
+            flight.regime if isinstance(flight, Manoeuvre) else getattr(reference, "regime", None)
+        )
         info = with_units(summary(arrays, phases=phases), bird)
     except BirdsimError as exc:
         return {"label": job.label, "error": f"entry {job.index} ({job.source}): {exc}"}
@@ -161,4 +163,12 @@ def local_executor(jobs: int) -> Executor:
     )
 
 
-__all__ = ["MAX_JOBS", "FlightJob", "check_count", "local_executor", "read_batch", "run_batch", "run_job"]
+__all__ = [
+    "MAX_JOBS",
+    "FlightJob",
+    "check_count",
+    "local_executor",
+    "read_batch",
+    "run_batch",
+    "run_job",
+]

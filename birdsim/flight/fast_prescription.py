@@ -190,7 +190,9 @@ def _side(
                 nb = np.zeros((3, 3))
                 for i in range(3):
                     for jj in range(3):
-                        nb[i, jj] = rot[i, 0] * bm[0, jj] + rot[i, 1] * bm[1, jj] + rot[i, 2] * bm[2, jj]
+                        nb[i, jj] = (
+                            rot[i, 0] * bm[0, jj] + rot[i, 1] * bm[1, jj] + rot[i, 2] * bm[2, jj]
+                        )
                 bm[:, :] = nb
         al0 = al1 = al2 = 0.0
         o0 = o1 = o2 = 0.0

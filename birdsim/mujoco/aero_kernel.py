@@ -68,7 +68,9 @@ def parameters(cb: AeroCallback) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return floats, ints, np.ascontiguousarray(tail_frame(clipped))
 
 
-def _wings(m, d, passive, site_ids, body_ids, site_xpos, site_xmat, areas, wind, fl, vel, buf, zero):
+def _wings(
+    m, d, passive, site_ids, body_ids, site_xpos, site_xmat, areas, wind, fl, vel, buf, zero
+):
     rho, cd0, cd_max, cl_max = fl[RHO], fl[CD0], fl[CD_MAX], fl[CL_MAX]
     w0, w1, w2 = wind[0], wind[1], wind[2]
     for k in range(site_ids.shape[0]):
