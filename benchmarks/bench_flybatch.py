@@ -21,10 +21,12 @@ def _jobs() -> list[FlightJob]:
 
 def main() -> None:
     try:
-        from birdsim.tables.cluster import dask_executor
+        import distributed  # noqa: F401
     except ImportError:  # pragma: no cover
-        print("dask.distributed missing: skipped")
+        print("dask.distributed missing (pip install 'birdsim[cluster]'): skipped")
         return
+    from birdsim.tables.cluster import dask_executor
+
     w0 = time.perf_counter()
     pool = local_executor(2)
     try:
