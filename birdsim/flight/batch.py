@@ -19,6 +19,7 @@ paths from the batch file's folder), ``#`` starts a comment, at most
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from concurrent.futures import Executor, ProcessPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
@@ -131,16 +132,18 @@ def run_job(job: FlightJob) -> dict[str, Any]:
     return {"label": job.label, "arrays": arrays, "info": info}
 
 
-def _pinned(job: FlightJob) -> dict[str, Any]:
+def _pinned(fn: Callable[[Any], dict[str, Any]], job: Any) -> dict[str, Any]:
     from birdsim.tables.runner import run_pinned
 
-    return run_pinned(run_job, job)  # type: ignore[arg-type]
+    return run_pinned(fn, job)  # type: ignore[arg-type]
 
 
-def run_batch(jobs: list[FlightJob], executor: Executor) -> list[dict[str, Any]]:
-    """Every job on ``executor``, results in the jobs' order (an exception a task raises
-    beyond a bad entry propagates)."""
-    futures = [executor.submit(_pinned, job) for job in jobs]
+def run_batch(
+    jobs: list[Any], executor: Executor, fn: Callable[[Any], dict[str, Any]] = run_job
+) -> list[dict[str, Any]]:
+    """``fn(job)`` (default :func:`run_job`) of every job on ``executor``, results in
+    the jobs' order (an exception a task raises beyond a bad entry propagates)."""
+    futures = [executor.submit(_pinned, fn, job) for job in jobs]
     return [f.result() for f in futures]
 
 
