@@ -202,7 +202,7 @@ def run(args: argparse.Namespace) -> int:
         if len(sources) > 1 or args.batch or args.jobs is not None or args.dask is not None:
             from birdsim.commands.render_batch import run_many
 
-            return run_many(args, sources)
+            return run_many(args, sources, run)
         args.manoeuvre = sources[0]
     # every cheap check first, so that a mistake costs nothing and writes nothing
     from birdsim.flight.manoeuvre import get_manoeuvre

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -29,6 +30,8 @@ class RenderJob:
     source: str
     label: str
     options: tuple[tuple[str, Any], ...]
+    #: the command's ``run`` (birdsim.commands.render.run; pickled by name)
+    runner: Callable[[argparse.Namespace], int]
 
 
 def run_render_job(job: RenderJob) -> dict[str, Any]:
@@ -38,8 +41,6 @@ def run_render_job(job: RenderJob) -> dict[str, Any]:
     import io
     import tempfile
 
-    from birdsim.commands.render import run
-
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp) / f"{job.label}.mp4"
         args = argparse.Namespace(**dict(job.options))
@@ -48,14 +49,17 @@ def run_render_job(job: RenderJob) -> dict[str, Any]:
         text = io.StringIO()
         try:
             with contextlib.redirect_stdout(text):
-                run(args)
+                job.runner(args)
         except BirdsimError as exc:
             return {"label": job.label, "error": f"entry {job.index} ({job.source}): {exc}"}
         lines = [ln for ln in text.getvalue().splitlines() if ln.startswith("wrote ")]
         return {"label": job.label, "video": out.read_bytes(), "line": lines[-1] if lines else ""}
 
 
-def run_many(args: argparse.Namespace, sources: list[str]) -> int:
+def run_many(
+    args: argparse.Namespace, sources: list[str], runner: Callable[[argparse.Namespace], int]
+) -> int:
+    """The batch; ``runner``: the render command's ``run`` (each entry's render)."""
     import os
 
     from birdsim.commands.common import check_writable
@@ -82,7 +86,9 @@ def run_many(args: argparse.Namespace, sources: list[str]) -> int:
         )
     options = tuple((k, v) for k, v in sorted(vars(args).items()) if k not in _BATCH_KEYS)
     labels = [FlightJob(k, src, "").label for k, src in enumerate(sources)]
-    jobs = [RenderJob(k, src, lab, options) for k, (src, lab) in enumerate(zip(sources, labels))]
+    jobs = [
+        RenderJob(k, src, lab, options, runner) for k, (src, lab) in enumerate(zip(sources, labels))
+    ]
     out.mkdir(parents=True, exist_ok=True)
     for job in jobs:
         check_writable(out / f"{job.label}.mp4", args.force)
