@@ -49,6 +49,7 @@ def _pool(n: int, jobs: list[FlightJob]) -> list[dict]:
         pool.shutdown()
 
 
+@pytest.mark.slow  # two worker processes start (~14 s at load 6); the failed-entry test runs a pool by default
 def test_the_workers_of_a_pool_fly_the_same_flights_bitwise():
     """Each flight twice on a pool of two fresh workers (the copies land on either)."""
     jobs = _jobs()[1:]

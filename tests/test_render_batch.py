@@ -19,6 +19,7 @@ except BirdsimError:
 
 @pytest.mark.skipif(BACKEND is None, reason="no headless OpenGL (libOSMesa or libEGL)")
 @pytest.mark.render
+@pytest.mark.slow  # a worker process starts and renders (~11 s at load 6)
 def test_a_render_batch_writes_every_good_entry(tmp_path, capsys):
     out = tmp_path / "videos"
     argv = ["render", "cruise", "missing.toml", "--kinematic", "--size", "64x48", "--fps", "8"]
