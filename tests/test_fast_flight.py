@@ -181,3 +181,18 @@ def test_compiled_table_lookup_is_scipys():
     assert fast_lookup.interpolate(fast, np.full((1, 3), np.nan)) is None
     one = table.lookup_many(-0.1, -0.2, 0.45)  # through the table's own call
     assert one["flap_amp"].shape == ()
+
+
+def test_one_float_demand_is_looked_up_as_an_array_demand():
+    """The scalar path (fast_lookup.scalar_point) gives the array path's numbers bit for
+    bit, inside and outside the grid (clipped), and leaves refusals to the array path."""
+    table = load_table("tables/m4.npz")
+    rng = np.random.default_rng(9)
+    for _ in range(200):
+        fx, fz, v = (float(x) for x in rng.uniform([-0.7, -0.7, -0.2], [0.7, 0.2, 1.2]))
+        a = table.lookup_many(fx, fz, v, clip=True)
+        b = table.lookup_many(np.array(fx), np.array(fz), np.array(v), clip=True)
+        assert a.keys() == b.keys()
+        assert all(np.array_equal(a[k], b[k]) and a[k].shape == () for k in a)
+    with pytest.raises(Exception, match="outside the table grid"):
+        table.lookup_many(0.9, -0.2, 0.5)

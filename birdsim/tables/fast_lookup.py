@@ -15,6 +15,8 @@ wingbeat.  Points outside the grid or not finite, fewer than three axes, or no n
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from birdsim.physics.jit import numba
@@ -105,4 +107,25 @@ def interpolate(table: Interpolant, pts: np.ndarray) -> np.ndarray | None:
     return out
 
 
-__all__ = ["Interpolant", "interpolate", "kernel"]
+def scalar_point(
+    axes: dict, axis_names: tuple, values: tuple, climb: object, clip: bool
+) -> tuple[np.ndarray, tuple] | None:
+    """:func:`birdsim.tables.demand_points.demand_points`' point for one level demand of
+    Python floats (Fx, Fz, V) on a table of those three axes, without its array calls:
+    each value clipped to its axis (``np.clip`` of a finite float is ``min(max(v, lo),
+    hi)``); None for anything else (arrays, a climb axis or a climb, a value that is not
+    finite or, unclipped, outside the grid: the caller's path checks and refuses)."""
+    if not ENABLED or len(axis_names) != 3 or type(climb) is not float or climb != 0.0:
+        return None
+    row = []
+    for name, v in zip(axis_names, values):
+        if type(v) is not float or not math.isfinite(v):
+            return None
+        lo, hi = float(axes[name][0]), float(axes[name][-1])
+        if not clip and (v < lo - 1e-12 or v > hi + 1e-12):
+            return None
+        row.append(min(max(v, lo), hi))
+    return np.array([row]), ()
+
+
+__all__ = ["Interpolant", "interpolate", "kernel", "scalar_point"]

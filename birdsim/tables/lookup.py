@@ -233,7 +233,8 @@ class LookupTable:
         shape out: every parameter plus ``achieved_Fx``, ``achieved_Fz``, ``achieved_P``
         and ``cost`` (interpolated).  Out-of-grid demands raise unless ``clip``;
         ``climb`` (positive up) other than 0 needs a table with a climb axis."""
-        pts, shape = self._points(Fx, Fz, V, clip, climb)
+        point = fast_lookup.scalar_point(self.axes, self.axis_names, (Fx, Fz, V), climb, clip)
+        pts, shape = point if point is not None else self._points(Fx, Fz, V, clip, climb)
         fast = self.__dict__.get("_fast")
         if fast is None:
             rgi = self._interpolator()
