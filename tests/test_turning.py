@@ -175,8 +175,8 @@ def test_fly_chooses_the_free_attitude_for_a_turning_path(capsys):
     """``birdsim fly`` flies a turning path free and says so in one stderr line; it keeps
     the posed default for a straight path and refuses ``--attitude posed`` for a turn in
     one line; other commands refuse a turning preset in one line."""
-    from birdsim.commands.fly import _attitude_for
     from birdsim.errors import BirdsimError
+    from birdsim.flight.path_file import attitude_for as _attitude_for
     from birdsim.flight.path_file import get_flight
     from birdsim.flight.presets import PATH_PRESETS
 

@@ -29,7 +29,21 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "manoeuvre",
         metavar="MANOEUVRE",
-        help="a preset (hover, cruise, take-off, landing) or a manoeuvre .toml file",
+        nargs="*",
+        help="a preset (hover, cruise, take-off, landing) or a manoeuvre .toml file; several: a batch (--out is then a folder)",
+    )
+    p.add_argument(
+        "--batch",
+        metavar="FILE",
+        help="a batch: a text file with one manoeuvre per line (# comments), flown as with several MANOEUVREs",
+    )
+    p.add_argument(
+        "--jobs", metavar="N", help="a batch's local worker processes (default: one per core)"
+    )
+    p.add_argument(
+        "--dask",
+        metavar="SCHEDULER",
+        help="fly a batch on a Dask cluster: tcp://HOST:PORT or local:N, as `tables build` (needs birdsim[cluster])",
     )
     p.add_argument(
         "--model",
@@ -97,42 +111,31 @@ def parse_seconds(raw: str | None) -> float | None:
     return v
 
 
-def _attitude_for(flight: object, attitude: str | None, name: str) -> str:
-    """The attitude to fly: the one asked for, else free for a path that turns out of
-    the vertical plane (said on stderr in one line) and posed for any other.
-
-    Raises:
-        BirdsimError: ``--attitude posed`` with a turning path (a posed body cannot bank).
-    """
-    turning = bool(getattr(flight, "is_3d", False))
-    if not turning:
-        return attitude or "posed"
-    if attitude == "posed":
-        raise BirdsimError(
-            f"--attitude posed cannot fly {name!r}, a path that turns out of the vertical "
-            "plane (a posed body cannot bank); allowed: --attitude free (the default for it)"
-        )
-    if attitude is None:
-        print(
-            f"birdsim fly: {name} turns out of the vertical plane: flying it with "
-            "--attitude free (bank to turn)",
-            file=sys.stderr,
-        )
-    return "free"
-
-
 def run(args: argparse.Namespace) -> int:
     from birdsim.flight.freeflight import DemandSchedule, fly, parse_gust
     from birdsim.flight.manoeuvre import MAX_BEATS, Manoeuvre
-    from birdsim.flight.path_file import get_flight
+    from birdsim.flight.path_file import attitude_for, get_flight
     from birdsim.flight.simulate import SimConfig
     from birdsim.physics.kinematics import get_model
 
-    flight = get_flight(args.manoeuvre, turning=True)
-    attitude = _attitude_for(flight, args.attitude, args.manoeuvre)
+    sources = list(args.manoeuvre)
+    if args.batch:
+        from birdsim.flight.batch import read_batch
+
+        sources += read_batch(args.batch)
+    if not sources:
+        raise BirdsimError(
+            "no MANOEUVRE; allowed: a preset, a manoeuvre .toml file, several, or --batch FILE"
+        )
+    seconds = parse_seconds(args.seconds)
+    if len(sources) > 1 or args.batch or args.jobs is not None or args.dask is not None:
+        from birdsim.commands.fly_batch import run_many
+
+        return run_many(args, sources, seconds)
+    flight = get_flight(sources[0], turning=True)
+    attitude = attitude_for(flight, args.attitude, sources[0])
     model = get_model(args.model).name
     gusts = [parse_gust(g) for g in args.gust]
-    seconds = parse_seconds(args.seconds)
     out = Path(args.out) if args.out else None
     if out is not None:
         if out.suffix.lower() != ".npz":

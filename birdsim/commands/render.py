@@ -30,7 +30,15 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "manoeuvre",
         metavar="MANOEUVRE",
-        help=f"a preset ({', '.join(PRESETS)}), a manoeuvre .toml file or a flight log LOG.npz",
+        nargs="*",
+        help=f"a preset ({', '.join(PRESETS)}), a manoeuvre .toml file or a flight log LOG.npz; several: a batch (--out is then a folder)",
+    )
+    p.add_argument(
+        "--batch", metavar="FILE", help="a batch: a text file with one manoeuvre per line"
+    )
+    p.add_argument("--jobs", metavar="N", help="a batch's local worker processes")
+    p.add_argument(
+        "--dask", metavar="SCHEDULER", help="render a batch on Dask: tcp://HOST:PORT or local:N"
     )
     p.add_argument(
         "--model",
@@ -179,6 +187,23 @@ def _beat_rate(args: argparse.Namespace, fps: int | float | None) -> float:
 
 
 def run(args: argparse.Namespace) -> int:
+    if (
+        isinstance(args.manoeuvre, list) and args.camera != "list"
+    ):  # from the command line: one source or a batch
+        sources = list(args.manoeuvre)
+        if getattr(args, "batch", None):
+            from birdsim.flight.batch import read_batch
+
+            sources += read_batch(args.batch)
+        if not sources:
+            raise BirdsimError(
+                "no MANOEUVRE; allowed: a preset, a .toml file, a LOG.npz, several, or --batch FILE"
+            )
+        if len(sources) > 1 or args.batch or args.jobs is not None or args.dask is not None:
+            from birdsim.commands.render_batch import run_many
+
+            return run_many(args, sources, run)
+        args.manoeuvre = sources[0]
     # every cheap check first, so that a mistake costs nothing and writes nothing
     from birdsim.flight.manoeuvre import get_manoeuvre
     from birdsim.physics.kinematics import get_model

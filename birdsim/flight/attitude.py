@@ -39,7 +39,6 @@ from dataclasses import dataclass
 
 import mujoco
 import numpy as np
-from scipy.optimize import lsq_linear
 
 from birdsim.flight.attitude_jacobians import (
     INPUTS,
@@ -51,6 +50,7 @@ from birdsim.flight.attitude_jacobians import (
     measured_with_rocking,
     split_inputs,
 )
+from birdsim.flight.bounded_lsq import bounded_lsq
 from birdsim.mujoco.tail import TailControls
 
 #: Wingbeats per time constant of the attitude loop.  Measured (seed bird): without the
@@ -305,10 +305,10 @@ class AttitudeLoop:
             reg = math.sqrt(LAMBDA) * max(float(np.abs(a).max()), 1e-12)
             a_aug = np.vstack([a, reg * np.eye(len(cols))])
             b_aug = np.concatenate([demand[rows], np.zeros(len(cols))])
-            res = lsq_linear(a_aug, b_aug, bounds=(lo[cols] / scale, hi[cols] / scale))
-            u[cols] = res.x * scale
-            active = active or bool(np.any(res.active_mask != 0))
-            miss += float(np.linalg.norm(a @ res.x - demand[rows]))
+            x, mask = bounded_lsq(a_aug, b_aug, lo[cols] / scale, hi[cols] / scale)
+            u[cols] = x * scale
+            active = active or bool(np.any(mask != 0))
+            miss += float(np.linalg.norm(a @ x - demand[rows]))
         self.u = u
         self.saturated = bool(active and miss > 0.1 * np.linalg.norm(demand) + 1e-12)
         return split_inputs(names, params, u)

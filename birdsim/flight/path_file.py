@@ -30,6 +30,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from birdsim.errors import BirdsimError
 from birdsim.flight.manoeuvre import MAX_BEATS, Manoeuvre, ManoeuvreError, load_manoeuvre
 from birdsim.flight.path import FlightPath, PathError, PathKeyframe
 from birdsim.flight.presets import PATH_PRESETS
@@ -201,4 +202,28 @@ def _number(arg: str, raw: Any, allowed: str = "a finite number") -> float:
     return float(raw)
 
 
-__all__ = ["get_flight", "load_flight"]
+def attitude_for(flight: object, attitude: str | None, name: str) -> str:
+    """The attitude to fly: the one asked for, else free for a path that turns out of
+    the vertical plane (said on stderr in one line) and posed for any other.
+
+    Raises:
+        BirdsimError: ``--attitude posed`` with a turning path (a posed body cannot bank).
+    """
+    turning = bool(getattr(flight, "is_3d", False))
+    if not turning:
+        return attitude or "posed"
+    if attitude == "posed":
+        raise BirdsimError(
+            f"--attitude posed cannot fly {name!r}, a path that turns out of the vertical "
+            "plane (a posed body cannot bank); allowed: --attitude free (the default for it)"
+        )
+    if attitude is None:
+        print(
+            f"birdsim fly: {name} turns out of the vertical plane: flying it with "
+            "--attitude free (bank to turn)",
+            file=sys.stderr,
+        )
+    return "free"
+
+
+__all__ = ["attitude_for", "get_flight", "load_flight"]

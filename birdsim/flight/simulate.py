@@ -44,7 +44,7 @@ import mujoco
 import numpy as np
 
 from birdsim.errors import BirdsimError
-from birdsim.flight import step_kernel
+from birdsim.flight import fast_loop, step_kernel
 from birdsim.flight.partition import Partition, _as_slice, partition
 from birdsim.flight.wingbeat import Prescription, WingbeatSchedule
 from birdsim.mujoco.callback import AeroCallback
@@ -237,6 +237,8 @@ class FreeBird:
         x fwd / y right / z down, about the centre of mass: the aerodynamic moment with
         the attitude free, the hidden holding moment when posed), external force = aero
         + weight (world), mechanical power of the wing joints)."""
+        if fast_loop.step(self, pres, wind, record, every):  # every step compiled (fast_loop)
+            return
         m, d, h = self.m, self.d, self.h
         m.opt.wind[:] = wind
         M = self._M

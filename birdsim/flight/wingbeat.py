@@ -29,6 +29,7 @@ import mujoco
 import numpy as np
 
 from birdsim.errors import BirdsimError
+from birdsim.flight import fast_prescription
 from birdsim.flight.playback import joint_derivatives
 from birdsim.mujoco.driver import set_root, wing_arrays
 from birdsim.physics.bird import Bird
@@ -221,6 +222,11 @@ class WingbeatSchedule:
         same = left is None and sw_r is None
         if not same and left is None:
             left = (p, dp, ddp)
+        rows = fast_prescription.wing_rows(
+            self.m, self.kin, self.bird, times, p, dp, ddp, left, None if sw_r is None else shoulder
+        )
+        if rows is not None:  # the same rows, compiled (birdsim.flight.fast_prescription)
+            return self._finish(*rows, p, dp, ddp, left)
         if same:
             right_joints, left_joints = self._joints(times, p, dp, ddp, sw_r), None
         else:
@@ -234,6 +240,10 @@ class WingbeatSchedule:
             right_joints = tuple({k: v[:t] for k, v in d.items()} for d in both)
             left_joints = tuple({k: v[t:] for k, v in d.items()} for d in both)
         qpos, qvel, qacc = wing_arrays(self.m, *right_joints, samples=t, left=left_joints)
+        return self._finish(qpos, qvel, qacc, p, dp, ddp, left)
+
+    def _finish(self, qpos, qvel, qacc, p, dp, ddp, left) -> Prescription:
+        """The torso's rows (posed: the table's pitch) and the Prescription."""
         k = self.pitch_index
         set_root(self.m, qpos, qvel, pitch=p[:, k], pitch_rate=dp[:, k])
         qacc[:, 3:6] = 0.0

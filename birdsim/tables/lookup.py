@@ -33,6 +33,7 @@ from scipy.interpolate import RegularGridInterpolator
 
 from birdsim.physics.bird import Bird
 from birdsim.physics.kinematics import MODELS
+from birdsim.tables import fast_lookup
 from birdsim.tables.cost import FRACTION_NAMES
 from birdsim.tables.demand_points import cells_around, check_level_climb, demand_points
 from birdsim.tables.table_error import TableError
@@ -232,8 +233,16 @@ class LookupTable:
         shape out: every parameter plus ``achieved_Fx``, ``achieved_Fz``, ``achieved_P``
         and ``cost`` (interpolated).  Out-of-grid demands raise unless ``clip``;
         ``climb`` (positive up) other than 0 needs a table with a climb axis."""
-        pts, shape = self._points(Fx, Fz, V, clip, climb)
-        vals = self._interpolator()(pts)
+        point = fast_lookup.scalar_point(self.axes, self.axis_names, (Fx, Fz, V), climb, clip)
+        pts, shape = point if point is not None else self._points(Fx, Fz, V, clip, climb)
+        fast = self.__dict__.get("_fast")
+        if fast is None:
+            rgi = self._interpolator()
+            fast = fast_lookup.Interpolant(rgi.grid, rgi.values)
+            object.__setattr__(self, "_fast", fast)
+        vals = fast_lookup.interpolate(fast, pts)  # scipy's numbers, compiled
+        if vals is None:
+            vals = self._interpolator()(pts)
         d = len(self.param_names)
         names = list(self.param_names) + [f"achieved_{n}" for n in ACHIEVED_NAMES] + ["cost"]
         return {n: vals[:, k].reshape(shape) for k, n in enumerate(names[: d + 4])}

@@ -1,0 +1,253 @@
+"""Free flight's steps between two control updates in one compiled call (attitude free).
+
+:meth:`birdsim.flight.simulate.FreeBird.step_many` with the attitude free runs, per step,
+the prescription's rows into ``qpos``/``qvel``, ``mj_step1`` (with the aero callback in
+it), ``mj_fullM``, the compiled projection and partitioned dynamics
+(:func:`birdsim.flight.step_kernel.free_step`), the log sample and ``mj_step2``; the
+reference path makes these calls from Python (``step_kernel.free_loop``).
+:func:`run_steps` makes the same calls from numba, MuJoCo's C functions through
+:mod:`birdsim.mujoco.capi`, and the aerodynamics computed after ``mj_step1``
+(:func:`birdsim.mujoco.aero_kernel.apply_aero`; the Python callback is uninstalled for
+the call and put back after it).  The formulas and their order are the reference's;
+the differences are round-off (the tail's force summed in another order, the wings'
+power summed naively instead of by BLAS): ``tests/test_fast_flight.py`` flies both.
+
+:func:`usable` says when it applies (numba and libmujoco found, the attitude free with
+the root's six DOF first, a callback :func:`birdsim.mujoco.aero_kernel.supported`
+computes); :data:`ENABLED` switches it off (the reference path then runs).
+"""
+
+from __future__ import annotations
+
+import mujoco
+import numpy as np
+
+from birdsim.flight import step_kernel
+from birdsim.flight.partition import _as_slice
+from birdsim.mujoco import aero_kernel, capi
+from birdsim.physics.jit import numba
+
+#: the compiled loop is used where :func:`usable` (False: always the reference path)
+ENABLED = True
+
+
+def _run_steps(
+    m,
+    d,
+    qpos,
+    qvel,
+    applied,
+    passive,
+    bias,
+    xfrc,
+    M,
+    com_t,
+    xpos_t,
+    xmat_t,
+    pres_q,
+    pres_v,
+    pres_a,
+    pq0,
+    pv0,
+    w0,
+    w1,
+    site_ids,
+    body_ids,
+    site_xpos,
+    site_xmat,
+    areas,
+    wind,
+    fl,
+    ints,
+    frame,
+    state,
+    weight,
+    h,
+    mass,
+    project,
+    every,
+    rec_q,
+    rec_v,
+    rec_out,
+    stats,
+):
+    """``pres_q.shape[0]`` steps.  ``rec_out`` (samples, 10): moment (seed body axes),
+    f_ext (world), power, tail force (seed body axes) per log sample; ``stats`` (3,):
+    max |dx|, max |dv|, max |root applied| (running maxima, updated).  Returns (12,):
+    the tail's last force (torso axes) and angle of attack in its first 4 entries."""
+    out = np.zeros(12)
+    tail_out = np.zeros(4)
+    nq_p = pres_q.shape[1]
+    nv_p = pres_v.shape[1]
+    nv = qvel.shape[0]
+    j = 0
+    for k in range(pres_q.shape[0]):
+        for i in range(nq_p):
+            qpos[pq0 + i] = pres_q[k, i]
+        for i in range(nv_p):
+            qvel[pv0 + i] = pres_v[k, i]
+        capi.mj_step1(m, d)
+        aero_kernel.apply_aero(
+            m, d, passive, site_ids, body_ids, site_xpos, site_xmat, areas, wind, fl, ints,
+            frame, tail_out,
+        )  # fmt: skip
+        capi.mj_fullM(m, d, M.ctypes.data)
+        step_kernel.free_step(
+            M, qpos, qvel, passive, bias, applied, com_t, xpos_t, xmat_t, pres_a[k], state,
+            weight, h, mass, project, out,
+        )  # fmt: skip
+        if out[6] > stats[0]:
+            stats[0] = out[6]
+        if out[7] > stats[1]:
+            stats[1] = out[7]
+        amax = out[8]
+        for i in range(xfrc.shape[0]):
+            for c in range(6):
+                if abs(xfrc[i, c]) > amax:
+                    amax = abs(xfrc[i, c])
+        if amax > stats[2]:
+            stats[2] = amax
+        if k % every == 0:
+            for i in range(qpos.shape[0]):
+                rec_q[j, i] = qpos[i]
+            for i in range(nv):
+                rec_v[j, i] = qvel[i]
+            power = 0.0
+            for i in range(w0, w1):
+                power += applied[i] * qvel[i]
+            rec_out[j, 0] = out[9]
+            rec_out[j, 1] = -out[10]
+            rec_out[j, 2] = -out[11]
+            rec_out[j, 3] = out[0]
+            rec_out[j, 4] = out[1]
+            rec_out[j, 5] = out[2]
+            rec_out[j, 6] = power
+            rec_out[j, 7] = tail_out[0]
+            rec_out[j, 8] = -tail_out[1]
+            rec_out[j, 9] = -tail_out[2]
+            j += 1
+        capi.mj_step2(m, d)
+    for i in range(4):
+        out[i] = tail_out[i]
+    return out
+
+
+if numba is not None and capi.AVAILABLE and step_kernel.AVAILABLE:
+    run_steps = numba.njit(cache=True)(_run_steps)
+else:  # pragma: no cover
+    run_steps = None
+
+
+class _Plan:
+    """The compiled loop's fixed arguments for one FreeBird (views of its MjData, the
+    callback's sites), made once."""
+
+    def __init__(self, fb) -> None:
+        m, d, cb = fb.m, fb.d, fb.cb
+        part = fb.part
+        self.F, self.P, self.Pq, self.W = (
+            _as_slice(a) for a in (part.free_dofs, part.pres_dofs, part.pres_qpos, part.wing_dofs)
+        )
+        self.static = (
+            m._address, d._address, d.qpos, d.qvel, d.qfrc_applied, d.qfrc_passive,
+            d.qfrc_bias, d.xfrc_applied, fb._M, d.subtree_com[fb.torso], d.xpos[fb.torso],
+            d.xmat[fb.torso],
+        )  # fmt: skip
+        self.sites = (
+            np.ascontiguousarray(cb.site_ids), np.ascontiguousarray(cb.body_ids), d.site_xpos,
+            d.site_xmat, np.ascontiguousarray(cb.areas[:, 0]), m.opt.wind,
+        )  # fmt: skip
+        self.aero_for: tuple | None = None
+        self.aero: tuple = ()
+
+    def aero_arguments(self, cb) -> tuple:
+        key = (cb.tail_controls, cb.enabled, cb.body_drag)
+        if self.aero_for is None or any(a is not b for a, b in zip(key, self.aero_for)):
+            self.aero = aero_kernel.parameters(cb)
+            self.aero_for = key
+        return self.aero
+
+
+def _plan(fb) -> _Plan | None:
+    plan = fb.__dict__.get("_fast_plan", False)
+    if plan is False:
+        plan = _Plan(fb) if run_steps is not None else None
+        if plan is not None and not _static_ok(fb, plan):
+            plan = None
+        fb.__dict__["_fast_plan"] = plan
+    return plan
+
+
+def _static_ok(fb, plan: _Plan) -> bool:
+    return (
+        step_kernel.AVAILABLE
+        and capi.AVAILABLE
+        and fb.part.free_rotation
+        and plan.F == slice(0, 6)
+        and plan.P == slice(6, fb.m.nv)
+        and isinstance(plan.Pq, slice)
+        and isinstance(plan.W, slice)
+    )
+
+
+def step(fb, pres, wind: np.ndarray, record: list | None, every: int) -> bool:
+    """:meth:`FreeBird.step_many` compiled, when :func:`usable`: ``len(pres.qpos)``
+    steps, samples appended to ``record`` as the reference appends them.  False (nothing
+    done) where it does not apply."""
+    plan = _plan(fb) if ENABLED else None
+    if plan is None or not aero_kernel.supported(fb.cb):
+        return False
+    m, cb, h = fb.m, fb.cb, fb.h
+    m.opt.wind[:] = wind
+    weight = fb.total_mass * np.array(m.opt.gravity)
+    Pq, P = plan.Pq, plan.P
+    pres_q = np.ascontiguousarray(pres.qpos[:, Pq])
+    pres_v = np.ascontiguousarray(pres.qvel[:, P])
+    pres_a = np.ascontiguousarray(pres.qacc[:, P])
+    n = pres_q.shape[0]
+    samples = (n + every - 1) // every
+    rec_q = np.empty((samples, m.nq))
+    rec_v = np.empty((samples, m.nv))
+    rec_out = np.empty((samples, 10))
+    fl, ints, frame = plan.aero_arguments(cb)
+    state = np.concatenate([fb.P, fb.X, fb.L])
+    stats = np.array([0.0, 0.0, fb.root_applied_max])
+    installed = mujoco.get_mjcb_passive()
+    mujoco.set_mjcb_passive(None)
+    try:
+        tail = run_steps(
+            *plan.static, pres_q, pres_v, pres_a, Pq.start, P.start, plan.W.start,
+            plan.W.stop, *plan.sites, fl, ints, frame, state, weight, h, fb.total_mass,
+            bool(fb.config.momentum_projection), every, rec_q, rec_v, rec_out, stats,
+        )  # fmt: skip
+    finally:
+        mujoco.set_mjcb_passive(installed)
+    fb.P, fb.X, fb.L = state[:3].copy(), state[3:6].copy(), state[6:].copy()
+    time = fb.time
+    times = []
+    for k in range(n):  # the reference's time, summed step by step
+        if k % every == 0:
+            times.append(time)
+        time += h
+    fb.time = time
+    fb.root_applied_max = float(stats[2])
+    if ints[aero_kernel.TAIL]:
+        cb.tail_force_body = tail[:3].copy()
+        cb.tail_alpha = float(tail[3])
+    if record is not None:
+        power = rec_out[:, 6].tolist()
+        for j in range(samples):
+            r = rec_out[j]
+            record.append((times[j], rec_q[j], rec_v[j], r[0:3], r[3:6], power[j], r[7:10]))
+    if fb.config.momentum_projection and n:
+        fb.projection_max = max(fb.projection_max, float(stats[0]), float(stats[1]) * h)
+    fb._check_finite()
+    return True
+
+
+def usable(fb, F=None, P=None) -> bool:
+    """Whether :func:`step` steps ``fb`` (a FreeBird) in compiled code."""
+    return ENABLED and _plan(fb) is not None and aero_kernel.supported(fb.cb)
+
+
+__all__ = ["ENABLED", "run_steps", "step", "usable"]
