@@ -40,7 +40,7 @@ from birdsim.physics.units import reduced_bird
 
 #: Static compression of the standing legs as a fraction of the leg length: sets the
 #: legs' stiffness, k = (m g / 2) / (0.1 L) per leg (natural frequency sqrt(g / 0.1 L)).
-STANDING_SAG = 0.1
+STANDING_SAG = 0.07
 #: Damping ratio of the legs' spring-damper (critical: landing absorbs without bouncing).
 LEG_DAMPING_RATIO = 1.0
 #: Time steps per wingbeat (free flight's).
@@ -71,7 +71,10 @@ class LegMuscle:
         return self.q_stand + 0.5 * self.weight / self.stiffness
 
     def spring(self, q: np.ndarray, qd: np.ndarray, q_ref: float) -> np.ndarray:
-        return self.stiffness * (q_ref - q) - self.damping * qd
+        """The spring's force; the damper is the leg joint's ``dof_damping``, which
+        MuJoCo's Euler integrates implicitly (explicit, the light leg against the
+        damper of the whole bird chattered on the perch: m_leg / c is one time step)."""
+        return self.stiffness * (q_ref - q)
 
 
 #: A leg law: (reduced time since the phase began, leg q (2,), leg qdot (2,)) -> force (2,)
@@ -102,6 +105,7 @@ class ContactBird:
         self.legs = leg_dofs(m)
         self.leg_q = np.array([m.jnt_qposadr[m.joint(f"{s}_leg").id] for s in ("r", "l")])
         self.feet = foot_geoms(m)
+        self.set_leg_damping(True)
         rot = 6
         self.free = np.concatenate([np.arange(rot), self.legs])
         self.pres = np.array([i for i in range(rot, m.nv) if i not in set(self.legs)])
@@ -123,6 +127,10 @@ class ContactBird:
 
     def __exit__(self, *exc: object) -> None:
         mujoco.set_mjcb_passive(None)
+
+    def set_leg_damping(self, on: bool) -> None:
+        """The legs' damper on (standing, landing) or relaxed (the push)."""
+        self.m.dof_damping[self.legs] = self.muscle.damping if on else 0.0
 
     # ---- state -----------------------------------------------------------------------
 

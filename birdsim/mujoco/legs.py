@@ -43,7 +43,7 @@ FOOT_RADIUS_FRACTION = 0.1
 OVER_EXTENSION = 0.3
 #: The feet's contact: solref time constant in steps of period/128 (MuJoCo's stable
 #: minimum is 2 time steps) and damping ratio 1.
-CONTACT_TIMECONST_BEATS = 4.0 / 128.0
+CONTACT_TIMECONST_BEATS = 16.0 / 128.0
 
 
 @dataclass(frozen=True)

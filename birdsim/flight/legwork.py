@@ -1,0 +1,261 @@
+"""Standing, the take-off jump and the touchdown, simulated with the feet in contact
+(issue 25; :class:`birdsim.flight.contact.ContactBird`; docs/flight.md, "Legs,
+contact, take-off and landing").  Reduced units throughout.
+
+* Standing: the legs' spring-damper carries the weight at the standing length.
+* Jump (:class:`JumpProfile`): from standing, a crouch (the spring's reference
+  lowered by a cosine blend over ``crouch_beats``), then a push: each leg's force rises
+  from half the weight to half of ``peak_over_weight`` times the weight and back as a
+  half-sine over the push time ``T = sqrt(pi d / ((r - 1) g))`` -- the time in which a
+  half-sine net force of peak ``(r - 1) m g`` moves the body by ``d``, 90 % of the legs'
+  travel from the crouch to full extension -- then the legs tuck (spring to q = 0).
+  Shape and peak: Earls (2000) J. Exp. Biol. 203:725 (starling: peak vertical force
+  about 4 x body weight, a single-peaked push).
+* Touchdown: the bird arrives at the touchdown speed with the legs at standing length
+  and the spring-damper absorbs; the wings are held still (they stopped flapping).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from birdsim.flight.contact import ContactBird, beats_to_steps
+
+TWO_PI = 2.0 * math.pi
+#: Phases logged per sample (``phase`` column): index -> name.
+PHASES = ("standing", "take-off", "flight", "landing")
+
+
+@dataclass(frozen=True)
+class JumpProfile:
+    """The legs' take-off (times in wingbeats, forces in the bird's weights)."""
+
+    settle_beats: float = 1.0
+    crouch_beats: float = 1.0
+    crouch_depth: float = 0.6  # of the standing leg coordinate
+    peak_over_weight: float = 4.0  # Earls 2000: starling about 4
+    travel_used: float = 0.9
+
+
+@dataclass
+class Record:
+    """Per sample (every step): time, qpos, qvel, foot normal force, world foot force,
+    on the feet, phase index."""
+
+    t: list = field(default_factory=list)
+    qpos: list = field(default_factory=list)
+    qvel: list = field(default_factory=list)
+    foot_normal: list = field(default_factory=list)
+    foot_force: list = field(default_factory=list)
+    on_feet: list = field(default_factory=list)
+    phase: list = field(default_factory=list)
+
+    def add(self, cb: ContactBird, phase: int) -> None:
+        self.t.append(cb.time)
+        self.qpos.append(cb.d.qpos.copy())
+        self.qvel.append(cb.d.qvel.copy())
+        self.foot_normal.append(cb.foot_normal())
+        self.foot_force.append(cb.foot_force())
+        self.on_feet.append(cb.foot_normal() > 0.0)
+        self.phase.append(phase)
+
+    def arrays(self) -> dict[str, np.ndarray]:
+        return {k: np.array(v) for k, v in self.__dict__.items()}
+
+
+@dataclass(frozen=True)
+class JumpResult:
+    record: dict[str, np.ndarray]
+    liftoff_time: float  # reduced
+    liftoff_velocity: np.ndarray  # centre of mass, world
+    leg_share: float  # leg impulse (feet + weight) along the lift-off momentum / momentum
+    peak_foot_over_weight: float
+    push_beats: float
+    root_applied_max: float
+
+
+def push_time(cb: ContactBird, prof: JumpProfile) -> float:
+    """Reduced time of the push (module docstring)."""
+    mu, g = cb.muscle, cb.red.gravity
+    q_crouch = (1.0 - prof.crouch_depth) * mu.q_stand
+    d = prof.travel_used * (cb.geom.q_max - q_crouch)
+    return math.sqrt(math.pi * d / ((prof.peak_over_weight - 1.0) * g))
+
+
+def jump(
+    cb: ContactBird, prof: JumpProfile = JumpProfile(), after_beats: float = 0.5
+) -> JumpResult:
+    """Stand, crouch and jump from where ``cb`` stands (placed with
+    ``place_standing``); stop ``after_beats`` after lift-off (the wings still held)."""
+    mu, w = cb.muscle, cb.weight
+    rec = Record()
+    stand = cb.standing_law()
+    for _ in range(beats_to_steps(prof.settle_beats)):
+        cb.step(stand, 0.0)
+        rec.add(cb, 0)
+    t_c = prof.crouch_beats * TWO_PI
+    depth = prof.crouch_depth * mu.q_stand
+    q0 = mu.q_ref_stand
+
+    def crouch(t: float, q: np.ndarray, qd: np.ndarray) -> np.ndarray:
+        blend = 0.5 * (1.0 - math.cos(math.pi * min(t / t_c, 1.0)))
+        return mu.spring(q, qd, q0 - depth * blend)
+
+    for k in range(beats_to_steps(prof.crouch_beats)):
+        cb.step(crouch, k * cb.h)
+        rec.add(cb, 1)
+    t_p = push_time(cb, prof)
+    half, extra = 0.5 * w, 0.5 * (prof.peak_over_weight - 1.0) * w
+
+    def push(t: float, q: np.ndarray, qd: np.ndarray) -> np.ndarray:
+        if t <= t_p:
+            return np.full(2, half + extra * math.sin(math.pi * t / t_p))
+        cb.set_leg_damping(True)
+        return mu.spring(q, qd, 0.0)  # tuck
+
+    _, v_start = cb.com()
+    cb.set_leg_damping(False)  # the push: the muscle's force alone
+    weight_vec = np.array([0.0, 0.0, -w])
+    impulse = np.zeros(3)
+    t_lo = None
+    k = 0
+    limit = beats_to_steps(prof.settle_beats + 4.0)
+    while k < limit:
+        cb.step(push, k * cb.h)
+        rec.add(cb, 1)
+        k += 1
+        if t_lo is None:
+            impulse += cb.h * (cb.foot_force() + weight_vec)
+            if k * cb.h > 0.25 * t_p and rec.foot_normal[-1] == 0.0:
+                t_lo = cb.time
+                _, v_lo = cb.com()
+                stop = k + beats_to_steps(after_beats)
+        elif k >= stop:
+            break
+    if t_lo is None:
+        raise RuntimeError("the bird did not leave its perch")
+    p = cb.mass * (v_lo - v_start)
+    share = float(impulse @ p / (p @ p))
+    arrays = rec.arrays()
+    arrays["phase"][arrays["t"] > t_lo] = 2
+    return JumpResult(
+        arrays,
+        t_lo,
+        v_lo,
+        share,
+        float(np.max(arrays["foot_normal"]) / w),
+        t_p / TWO_PI,
+        cb.root_applied_max,
+    )
+
+
+__all__ = ["PHASES", "JumpProfile", "JumpResult", "Record", "jump", "push_time"]
+
+
+#: Touchdown speed measured in small birds landing on a perch: about 1 m/s (Provini,
+#: Tobalske, Crandell & Abourachid 2014, J. Exp. Biol. 217:2659, zebra finch and diamond
+#: dove).  Taken as it is for the pigeon (not scaled up: a Froude scaling with the leg
+#: growing as the cube root of mass, (m / 35 g)^(1/6), gives 1.55 m/s, which the pigeon's
+#: estimated 4 cm leg stroke absorbs only at about 5 x its weight, above the take-off's
+#: 4: against the measured landing peak of about half the take-off's); the seed bird
+#: gets the same reduced speed.
+TOUCHDOWN_SPEED_SI = 1.0
+#: Descent angle of the touchdown velocity below the horizontal (rad).
+TOUCHDOWN_ANGLE = math.radians(90.0)
+#: Fraction of the standing leg coordinate the legs may give way over while braking.
+BRAKE_STROKE = 0.6
+#: Rise time of the legs' braking force from touchdown (wingbeats; 16 ms for the pigeon).
+ACTIVATION_BEATS = 0.125
+#: Wingbeats over which the standing spring returns to its reference after braking.
+SETTLE_BEATS = 0.5
+
+
+@dataclass(frozen=True)
+class TouchdownResult:
+    record: dict[str, np.ndarray]
+    touchdown_speed: float  # reduced (omega s)
+    rest_beats: float  # wingbeats from touchdown until the speed stays below 1 % of it
+    peak_foot_over_weight: float
+    final_offset: np.ndarray  # torso origin at the end minus the standing pose over the target
+    weight_carried: float  # feet's normal force / weight, mean over the last wingbeat
+    root_applied_max: float
+
+
+def touchdown_speed(speed_unit_si: float) -> float:
+    """The touchdown speed in omega s for a bird whose speed unit omega s is
+    ``speed_unit_si`` m/s (the pigeon's 16.63: 0.060; the seed bird flies the pigeon's
+    reduced value)."""
+    return TOUCHDOWN_SPEED_SI / speed_unit_si
+
+
+def touchdown(
+    cb: ContactBird, target: np.ndarray, speed: float, beats: float = 6.0
+) -> TouchdownResult:
+    """The bird arrives with its soles just touching ``target`` (world point on the
+    perch or ground), legs at standing length, moving at ``speed`` (omega s) forward
+    and down at :data:`TOUCHDOWN_ANGLE`; the legs absorb; run ``beats`` wingbeats."""
+    cb.place_standing(np.asarray(target, dtype=float))
+    d = cb.d
+    v = speed * np.array([math.cos(TOUCHDOWN_ANGLE), 0.0, -math.sin(TOUCHDOWN_ANGLE)])
+    d.qvel[:3] = v
+    d.qpos[2] += 1e-4  # the soles a hair above the surface: contact begins in the step
+    stand = cb.standing_law()
+    mu = cb.muscle
+    # the legs brake with a constant force that stops the body over BRAKE_STROKE of the
+    # standing leg (eccentric work), the damper relaxed; then they stand
+    v_down = max(-v[2], 1e-12)
+    brake = 0.5 * (cb.weight + cb.mass * v_down**2 / (2.0 * BRAKE_STROKE * mu.q_stand))
+    braking = [True]
+    settle = [0.0, 0.0]  # time the braking ended, spring reference then
+    contact = [-1.0]  # time the feet touched
+
+    def land(t: float, q: np.ndarray, qd: np.ndarray) -> np.ndarray:
+        if braking[0] and t > 0.0 and cb.com()[1][2] >= 0.0:
+            # stopped: the spring takes over from where the legs are, carrying the
+            # weight there, and its reference returns to standing over one wingbeat
+            braking[0] = False
+            settle[:] = [t, float(np.mean(q)) + 0.5 * cb.weight / mu.stiffness]
+            cb.set_leg_damping(True)
+        if braking[0]:  # before contact the leg hangs relaxed at its standing length
+            if cb.foot_normal() <= 0.0 and contact[0] < 0.0:
+                return mu.spring(q, qd, mu.q_stand)
+            if contact[0] < 0.0:
+                contact[0] = t
+            # the muscle's activation rises over ACTIVATION_BEATS (not a step)
+            rise = min(1.0, (t - contact[0]) / (ACTIVATION_BEATS * TWO_PI))
+            return np.full(2, brake * rise)
+        blend = 0.5 * (
+            1.0 - math.cos(math.pi * min((t - settle[0]) / (SETTLE_BEATS * TWO_PI), 1.0))
+        )
+        return mu.spring(q, qd, settle[1] + blend * (mu.q_ref_stand - settle[1]))
+
+    cb.set_leg_damping(False)
+    rec = Record()
+    target_pose = np.asarray(target, dtype=float) + np.array(
+        [0.0, 0.0, cb.geom.sole_below_origin(cb.muscle.q_stand)]
+    )
+    speeds = []
+    for k in range(beats_to_steps(beats)):
+        cb.step(land, k * cb.h)
+        rec.add(cb, 3 if braking[0] else 0)
+        speeds.append(float(np.linalg.norm(cb.com()[1])))
+    sp = np.array(speeds)
+    above = np.nonzero(sp >= 0.01 * speed)[0]
+    rest = (above[-1] + 1 if len(above) else 0) / STEPS
+    arrays = rec.arrays()
+    last = arrays["foot_normal"][-STEPS:]
+    return TouchdownResult(
+        arrays,
+        speed,
+        rest,
+        float(np.max(arrays["foot_normal"]) / cb.weight),
+        d.qpos[:3] - target_pose,
+        float(np.mean(last) / cb.weight),
+        cb.root_applied_max,
+    )
+
+
+STEPS = beats_to_steps(1.0)
