@@ -202,7 +202,6 @@ def touchdown(
     v = speed * np.array([math.cos(TOUCHDOWN_ANGLE), 0.0, -math.sin(TOUCHDOWN_ANGLE)])
     d.qvel[:3] = v
     d.qpos[2] += 1e-4  # the soles a hair above the surface: contact begins in the step
-    stand = cb.standing_law()
     mu = cb.muscle
     # the legs brake with a constant force that stops the body over BRAKE_STROKE of the
     # standing leg (eccentric work), the damper relaxed; then they stand

@@ -44,6 +44,8 @@ OVER_EXTENSION = 0.3
 #: The feet's contact: solref time constant in steps of period/128 (MuJoCo's stable
 #: minimum is 2 time steps) and damping ratio 1.
 CONTACT_TIMECONST_BEATS = 16.0 / 128.0
+#: The feet's contact impedance (MuJoCo solimp: dmin, dmax, width, midpoint, power).
+FOOT_SOLIMP = (0.99, 0.9999, 0.001, 0.5, 2.0)
 
 
 @dataclass(frozen=True)
@@ -118,6 +120,9 @@ def add_legs(spec: mujoco.MjSpec, torso: mujoco.MjsBody, bird: Bird, visuals: bo
         foot.condim = 6
         foot.friction = [1.0, 0.5 * g.toe_span, 0.5 * g.toe_span]
         foot.solref = [timeconst, 1.0]
+        # impedance near 1: the friction (grip) constraints barely creep under a steady
+        # moment (MuJoCo's soft friction creeps at a speed proportional to (1 - d) / d)
+        foot.solimp = list(FOOT_SOLIMP)
         foot.group = 1
         if visuals:
             _dress_leg(leg, side, g)
