@@ -30,11 +30,12 @@ def _birds():
 def test_legs_are_opt_in_and_keep_the_mass_and_the_wings():
     bird = demo_bird()
     plain, legged = build_model("m3", bird), build_model("m3", bird, legs=True)
-    assert legged.nv == plain.nv + 2 and legged.nq == plain.nq + 2
+    assert legged.nv == plain.nv + 4 and legged.nq == plain.nq + 4  # hip hinge + slide
     # the whole bird weighs the same (the legs' mass comes out of the torso)
     assert legged.body_subtreemass[1] == pytest.approx(plain.body_subtreemass[1], rel=1e-12)
     # the wings keep their DOF addresses: the legs come last
-    assert list(leg_dofs(legged)) == [plain.nv, plain.nv + 1]
+    assert list(leg_dofs(legged, "hip")) == [plain.nv, plain.nv + 2]
+    assert list(leg_dofs(legged)) == [plain.nv + 1, plain.nv + 3]
     assert len(leg_dofs(plain)) == 0
     # only the feet can touch the world
     colliding = {

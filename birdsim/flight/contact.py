@@ -43,6 +43,8 @@ from birdsim.physics.units import reduced_bird
 STANDING_SAG = 0.07
 #: Damping ratio of the legs' spring-damper (critical: landing absorbs without bouncing).
 LEG_DAMPING_RATIO = 1.0
+#: Time constant of the hips' PD muscle (critically damped), in wingbeats.
+HIP_BEATS = 0.25
 #: MuJoCo's noslip iterations (contact phases only).
 NOSLIP_ITERATIONS = 10
 #: Time steps per wingbeat (free flight's).
@@ -109,17 +111,28 @@ class ContactBird:
         self.geom = leg_geometry(red)
         self.muscle = LegMuscle.of(self.geom, self.mass, red.gravity)
         self.legs = leg_dofs(m)
+        self.hips = leg_dofs(m, "hip")
         self.leg_q = np.array([m.jnt_qposadr[m.joint(f"{s}_leg").id] for s in ("r", "l")])
+        self.hip_q = np.array([m.jnt_qposadr[m.joint(f"{s}_hip").id] for s in ("r", "l")])
         self.feet = foot_geoms(m)
+        self._M = np.zeros((m.nv, m.nv))
         self.set_leg_damping(True)
+        # the hips: a PD muscle about ``hip_ref`` (rad), the body's pitch inertia turned
+        # at HIP_BEATS (damper implicit, as the legs')
+        mujoco.mj_forward(m, self.d)
+        mujoco.mj_fullM(m, self.d, self._M)
+        w_h = 1.0 / (HIP_BEATS * TWO_PI)
+        self.hip_stiffness = 0.5 * float(self._M[4, 4]) * w_h**2  # per hip
+        m.dof_damping[self.hips] = 2.0 * 0.5 * float(self._M[4, 4]) * w_h
+        self.hip_ref = 0.0
         rot = 6
-        self.free = np.concatenate([np.arange(rot), self.legs])
-        self.pres = np.array([i for i in range(rot, m.nv) if i not in set(self.legs)])
+        self.free = np.concatenate([np.arange(rot), self.hips, self.legs])
+        own = set(self.legs) | set(self.hips)
+        self.pres = np.array([i for i in range(rot, m.nv) if i not in own])
         self.cb = AeroCallback(m, self.kin.name, red, tail=True)
         self.cb.enabled = aero
         self.time = 0.0
         self.hold_qpos = m.qpos0.copy()
-        self._M = np.zeros((m.nv, m.nv))
         #: largest |entry| of the root's applied force over every step (0.0 exactly)
         self.root_applied_max = 0.0
 
@@ -142,14 +155,21 @@ class ContactBird:
 
     def place_standing(self, foot_top: np.ndarray, pitch: float = 0.0) -> None:
         """Put the bird at rest with its soles on ``foot_top`` (world x, y, z of the
-        surface under the feet), legs at their standing length, torso at ``pitch``."""
+        surface under the feet; the feet's mean x there), legs vertical at their
+        standing length, torso at ``pitch`` (nose up, rad)."""
         d, m = self.d, self.m
         d.qpos[:] = self.hold_qpos
         d.qvel[:] = 0.0
         d.qpos[3:7] = pitch_quat(pitch)
         d.qpos[self.leg_q] = self.muscle.q_stand
+        d.qpos[self.hip_q] = pitch
+        self.hip_ref = pitch
+        d.qpos[:3] = 0.0
+        mujoco.mj_forward(m, d)
+        feet = d.geom_xpos[self.feet].mean(axis=0)
         top = np.asarray(foot_top, dtype=float)
-        d.qpos[:3] = top + np.array([0.0, 0.0, self.geom.sole_below_origin(self.muscle.q_stand)])
+        d.qpos[0] = top[0] - feet[0]
+        d.qpos[2] = top[2] + self.geom.foot_radius - feet[2]
         mujoco.mj_forward(m, d)
 
     def foot_force(self) -> np.ndarray:
@@ -193,12 +213,15 @@ class ContactBird:
         mujoco.mj_step1(m, d)
         mujoco.mj_fullM(m, d, M)
         legs = law(t_phase, d.qpos[self.leg_q], d.qvel[self.legs])
+        hips = self.hip_stiffness * (self.hip_ref - d.qpos[self.hip_q])
         f = d.qfrc_passive - d.qfrc_bias
         f[self.legs] += legs
+        f[self.hips] += hips
         a_f = np.linalg.solve(M[np.ix_(F, F)], f[F])  # a_P = 0: the wings held still
         d.qfrc_applied[:] = 0.0
         d.qfrc_applied[P] = M[np.ix_(P, F)] @ a_f - f[P]
         d.qfrc_applied[self.legs] = legs
+        d.qfrc_applied[self.hips] = hips
         self.root_applied_max = max(self.root_applied_max, float(np.abs(d.qfrc_applied[:6]).max()))
         mujoco.mj_step2(m, d)
         self.time += self.h
@@ -210,7 +233,7 @@ class ContactBird:
             m, q = self.m, []
             for j in range(m.njnt):
                 name = m.joint(j).name
-                if name == "root" or name.endswith("_leg"):
+                if name == "root" or name.endswith(("_leg", "_hip")):
                     continue
                 n = {1: 4, 2: 1, 3: 1}[int(m.jnt_type[j])]
                 q += range(int(m.jnt_qposadr[j]), int(m.jnt_qposadr[j]) + n)

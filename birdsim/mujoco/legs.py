@@ -2,8 +2,9 @@
 that grips, and the contact filter that lets only the feet touch the world.
 
 Per side (prefix ``r_`` right, at MuJoCo -y; ``l_`` left) a body ``X_leg`` hangs from the
-torso at the hip, on a slide joint ``X_leg`` along the torso's -z (positive = the leg
-extends, the foot moves away from the body).  ``q = 0`` is the leg TUCKED under the
+torso at the hip, on a hinge ``X_hip`` about the torso's y (positive swings the foot
+back: with the hip angle equal to the body's pitch the leg is vertical) and a slide
+``X_leg`` along the leg (positive = the leg extends, the foot moves away from the hip).  ``q = 0`` is the leg TUCKED under the
 body (the MJCF's qpos0, so a flight that prescribes the wings from ``qpos0`` carries its
 legs folded); standing, the sole is ``bird.leg_length`` below the hip
 (:attr:`LegGeometry.q_stand`).  Each leg body carries ``bird.leg_mass_fraction`` of
@@ -35,6 +36,8 @@ LEG_SIDES = ("r", "l")
 #: drawn torso ellipsoid, half height 0.13 s).
 HIP_DOWN = 0.06
 HIP_OUT = 0.05
+#: Hip hinge range (rad) either way.
+HIP_RANGE = 1.6
 #: Tucked length (hip to foot centre) as a fraction of the leg length.
 TUCK_FRACTION = 0.35
 #: Foot sphere radius as a fraction of the leg length.
@@ -98,6 +101,13 @@ def add_legs(spec: mujoco.MjSpec, torso: mujoco.MjsBody, bird: Bird, visuals: bo
         sy = 1.0 if side == "r" else -1.0
         hip = np.array(g.hip) * np.array([1.0, sy, 1.0])
         leg = torso.add_body(name=f"{side}_leg", pos=hip)
+        leg.add_joint(  # the hip: positive swings the foot back (the leg stays vertical
+            # in the world when the hip angle equals the body's nose-up pitch)
+            name=f"{side}_hip",
+            type=mujoco.mjtJoint.mjJNT_HINGE,
+            axis=[0.0, 1.0, 0.0],
+            range=[-HIP_RANGE, HIP_RANGE],
+        )
         leg.add_joint(
             name=f"{side}_leg",
             type=mujoco.mjtJoint.mjJNT_SLIDE,
@@ -154,11 +164,12 @@ def _dress_leg(leg: mujoco.MjsBody, side: str, g: LegGeometry) -> None:
         )
 
 
-def leg_dofs(m: mujoco.MjModel) -> np.ndarray:
-    """The legs' DOF addresses (right, left); empty for a model without legs."""
+def leg_dofs(m: mujoco.MjModel, joint: str = "leg") -> np.ndarray:
+    """The legs' slide DOF addresses (right, left), or the hips' (``joint="hip"``);
+    empty for a model without legs."""
     out = []
     for side in LEG_SIDES:
-        j = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_JOINT, f"{side}_leg")
+        j = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_JOINT, f"{side}_{joint}")
         if j >= 0:
             out.append(int(m.jnt_dofadr[j]))
     return np.array(out, dtype=int)
