@@ -103,6 +103,7 @@ class ContactBird:
         # an inverted pendulum held by its feet's grip, and the creep grew (e-folding in
         # about 2.5 wingbeats); the noslip pass removes the creep of the friction rows
         m.opt.noslip_iterations = NOSLIP_ITERATIONS
+        m.opt.cone = mujoco.mjtCone.mjCONE_ELLIPTIC
         self.m, self.d = m, mujoco.MjData(m)
         self.h = float(m.opt.timestep)
         self.torso = m.body("torso").id
