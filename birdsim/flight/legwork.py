@@ -34,7 +34,11 @@ class JumpProfile:
     """The legs' take-off (times in wingbeats, forces in the bird's weights)."""
 
     settle_beats: float = 1.0
-    crouch_beats: float = 1.0
+    #: the hips raise the body to the flight's first pitch over these wingbeats (the
+    #: feet's grip, half the toe span times the weight, bounds the torque: the seed
+    #: bird's torso needs about 4 wingbeats for 47 degrees)
+    rise_beats: float = 5.0
+    crouch_beats: float = 1.5
     crouch_depth: float = 0.6  # of the standing leg coordinate
     peak_over_weight: float = 4.0  # Earls 2000: starling about 4
     travel_used: float = 0.9
@@ -86,10 +90,15 @@ def push_time(cb: ContactBird, prof: JumpProfile) -> float:
 
 
 def jump(
-    cb: ContactBird, prof: JumpProfile = JumpProfile(), after_beats: float = 0.5
+    cb: ContactBird,
+    prof: JumpProfile = JumpProfile(),
+    after_beats: float = 0.5,
+    pitch_to: float | None = None,
 ) -> JumpResult:
     """Stand, crouch and jump from where ``cb`` stands (placed with
-    ``place_standing``); stop ``after_beats`` after lift-off (the wings still held)."""
+    ``place_standing``); stop ``after_beats`` after lift-off (the wings still held).
+    ``pitch_to``: before the crouch the hips raise the body to this pitch (rad; the
+    flight's first wingbeat's) over ``rise_beats``, the legs kept vertical."""
     mu, w = cb.muscle, cb.weight
     rec = Record()
     stand = cb.standing_law()
@@ -99,6 +108,15 @@ def jump(
     t_c = prof.crouch_beats * TWO_PI
     depth = prof.crouch_depth * mu.q_stand
     q0 = mu.q_ref_stand
+    hip0 = cb.hip_ref
+    if pitch_to is not None and pitch_to != hip0:
+        t_r = prof.rise_beats * TWO_PI
+        for k in range(beats_to_steps(prof.rise_beats)):
+            blend = 0.5 * (1.0 - math.cos(math.pi * min(k * cb.h / t_r, 1.0)))
+            cb.hip_ref = hip0 + blend * (pitch_to - hip0)
+            cb.step(stand, 0.0)
+            rec.add(cb, 0)
+        cb.hip_ref = pitch_to
 
     def crouch(t: float, q: np.ndarray, qd: np.ndarray) -> np.ndarray:
         blend = 0.5 * (1.0 - math.cos(math.pi * min(t / t_c, 1.0)))
