@@ -119,7 +119,8 @@ def test_take_off_jump_is_the_legs(name):
 @pytest.mark.parametrize("surface", ["perch", "ground"])
 def test_touchdown_comes_to_rest_on_the_target(name, surface):
     bird = _birds()[name]
-    v = touchdown_speed(scales(Bird.from_toml(PIGEON_FILE)).speed)
+    v = touchdown_speed()
+    assert v * scales(Bird.from_toml(PIGEON_FILE)).speed == pytest.approx(1.0, rel=2e-3)
     with ContactBird("m3", bird) as cb:
         top = PERCH_TOP if surface == "perch" else np.zeros(3)
         r = touchdown(cb, top, v)

@@ -154,17 +154,37 @@ class ContactBird:
 
     # ---- state -----------------------------------------------------------------------
 
+    def hip_for(self, pitch: float) -> float:
+        """The hip angle that puts the feet (legs at standing length) right under the
+        whole bird's centre of mass at body ``pitch`` (no moment on the grip)."""
+        m = self.m
+        d = mujoco.MjData(m)
+        d.qpos[:] = self.hold_qpos
+        d.qpos[3:7] = pitch_quat(pitch)
+        d.qpos[self.leg_q] = self.muscle.q_stand
+        a = pitch
+        for _ in range(6):
+            d.qpos[self.hip_q] = a
+            mujoco.mj_kinematics(m, d)
+            mujoco.mj_comPos(m, d)
+            err = float(d.geom_xpos[self.feet, 0].mean() - d.subtree_com[self.torso, 0])
+            reach = self.geom.length - self.geom.foot_radius
+            a += math.asin(max(-1.0, min(1.0, err / reach)))
+        return a
+
     def place_standing(self, foot_top: np.ndarray, pitch: float = 0.0) -> None:
         """Put the bird at rest with its soles on ``foot_top`` (world x, y, z of the
-        surface under the feet; the feet's mean x there), legs vertical at their
-        standing length, torso at ``pitch`` (nose up, rad)."""
+        surface under the feet; the feet's mean x there), legs at their standing
+        length under the centre of mass (:meth:`hip_for`), torso at ``pitch`` (nose
+        up, rad)."""
         d, m = self.d, self.m
+        hip = self.hip_for(pitch)
         d.qpos[:] = self.hold_qpos
         d.qvel[:] = 0.0
         d.qpos[3:7] = pitch_quat(pitch)
         d.qpos[self.leg_q] = self.muscle.q_stand
-        d.qpos[self.hip_q] = pitch
-        self.hip_ref = pitch
+        d.qpos[self.hip_q] = hip
+        self.hip_ref = hip
         d.qpos[:3] = 0.0
         mujoco.mj_forward(m, d)
         feet = d.geom_xpos[self.feet].mean(axis=0)

@@ -109,14 +109,15 @@ def jump(
     depth = prof.crouch_depth * mu.q_stand
     q0 = mu.q_ref_stand
     hip0 = cb.hip_ref
-    if pitch_to is not None and pitch_to != hip0:
+    if pitch_to is not None:
+        hip1 = cb.hip_for(pitch_to)
         t_r = prof.rise_beats * TWO_PI
         for k in range(beats_to_steps(prof.rise_beats)):
             blend = 0.5 * (1.0 - math.cos(math.pi * min(k * cb.h / t_r, 1.0)))
-            cb.hip_ref = hip0 + blend * (pitch_to - hip0)
+            cb.hip_ref = hip0 + blend * (hip1 - hip0)
             cb.step(stand, 0.0)
             rec.add(cb, 0)
-        cb.hip_ref = pitch_to
+        cb.hip_ref = hip1
 
     def crouch(t: float, q: np.ndarray, qd: np.ndarray) -> np.ndarray:
         blend = 0.5 * (1.0 - math.cos(math.pi * min(t / t_c, 1.0)))
@@ -181,6 +182,8 @@ __all__ = ["PHASES", "JumpProfile", "JumpResult", "Record", "jump", "push_time"]
 #: 4: against the measured landing peak of about half the take-off's); the seed bird
 #: gets the same reduced speed.
 TOUCHDOWN_SPEED_SI = 1.0
+#: The pigeon's speed unit omega s in m/s (models/pigeon.toml: 2 pi 8.02 Hz x 0.33 m).
+PIGEON_SPEED_UNIT = 16.63
 #: Descent angle of the touchdown velocity below the horizontal (rad).
 TOUCHDOWN_ANGLE = math.radians(90.0)
 #: Fraction of the standing leg coordinate the legs may give way over while braking.
@@ -194,56 +197,75 @@ SETTLE_BEATS = 0.5
 @dataclass(frozen=True)
 class TouchdownResult:
     record: dict[str, np.ndarray]
-    touchdown_speed: float  # reduced (omega s)
-    rest_beats: float  # wingbeats from touchdown until the speed stays below 1 % of it
+    touchdown_speed: float  # the centre of mass's speed at the first contact (omega s)
+    rest_beats: float  # wingbeats from the first contact until the speed stays below 1 % of
+    # the touchdown speed
     peak_foot_over_weight: float
-    final_offset: np.ndarray  # torso origin at the end minus the standing pose over the target
-    weight_carried: float  # feet's normal force / weight, mean over the last wingbeat
+    final_offset: np.ndarray  # the soles' mean point at the end minus the target (world)
+    weight_carried: float  # feet's vertical force / weight, mean over the last wingbeat
     root_applied_max: float
 
 
-def touchdown_speed(speed_unit_si: float) -> float:
-    """The touchdown speed in omega s for a bird whose speed unit omega s is
-    ``speed_unit_si`` m/s (the pigeon's 16.63: 0.060; the seed bird flies the pigeon's
-    reduced value)."""
-    return TOUCHDOWN_SPEED_SI / speed_unit_si
+def touchdown_speed(pigeon_speed_unit: float = PIGEON_SPEED_UNIT) -> float:
+    """The touchdown speed in omega s: 1 m/s over the pigeon's speed unit omega s
+    (16.63 m/s): 0.060.  Every bird lands at this reduced speed (the seed bird flies
+    the pigeon's reduced values; another bird would scale it by its own leg)."""
+    return TOUCHDOWN_SPEED_SI / pigeon_speed_unit
 
 
 def touchdown(
-    cb: ContactBird, target: np.ndarray, speed: float, beats: float = 6.0
+    cb: ContactBird,
+    target: np.ndarray,
+    speed: float | None,
+    beats: float = 6.0,
+    *,
+    pitch_to: float | None = None,
+    rise_beats: float = 5.0,
 ) -> TouchdownResult:
-    """The bird arrives with its soles just touching ``target`` (world point on the
-    perch or ground), legs at standing length, moving at ``speed`` (omega s) forward
-    and down at :data:`TOUCHDOWN_ANGLE`; the legs absorb; run ``beats`` wingbeats."""
-    cb.place_standing(np.asarray(target, dtype=float))
+    """The legs absorb a touchdown on ``target`` (world point on the perch or ground)
+    and the bird stands.  ``speed`` (omega s): place the bird with its soles just
+    touching ``target``, legs at standing length, moving at ``speed`` forward and down
+    at :data:`TOUCHDOWN_ANGLE`; None: start from ``cb``'s current state (a flight's
+    end).  ``pitch_to``: once stopped, the hips lower the body to this pitch over
+    ``rise_beats``.  Runs ``beats`` wingbeats."""
     d = cb.d
-    v = speed * np.array([math.cos(TOUCHDOWN_ANGLE), 0.0, -math.sin(TOUCHDOWN_ANGLE)])
-    d.qvel[:3] = v
-    d.qpos[2] += 1e-4  # the soles a hair above the surface: contact begins in the step
+    if speed is not None:
+        cb.place_standing(np.asarray(target, dtype=float))
+        d.qvel[:3] = speed * np.array([math.cos(TOUCHDOWN_ANGLE), 0.0, -math.sin(TOUCHDOWN_ANGLE)])
+        d.qpos[2] += 1e-4  # the soles a hair above the surface: contact begins in the step
     mu = cb.muscle
-    # the legs brake with a constant force that stops the body over BRAKE_STROKE of the
-    # standing leg (eccentric work), the damper relaxed; then they stand
-    v_down = max(-v[2], 1e-12)
-    brake = 0.5 * (cb.weight + cb.mass * v_down**2 / (2.0 * BRAKE_STROKE * mu.q_stand))
+    # at contact the legs brake with a constant force that stops the body over
+    # BRAKE_STROKE of the standing leg (eccentric work), the damper relaxed; then stand
+    brake = [0.0]
+    arrival = [0.0]  # the centre of mass's speed at the first contact
     braking = [True]
-    settle = [0.0, 0.0]  # time the braking ended, spring reference then
+    settle = [0.0, 0.0, cb.hip_ref]  # time the braking ended, spring reference, hip then
+    hip_to = None if pitch_to is None else cb.hip_for(pitch_to)
     contact = [-1.0]  # time the feet touched
 
     def land(t: float, q: np.ndarray, qd: np.ndarray) -> np.ndarray:
-        if braking[0] and t > 0.0 and cb.com()[1][2] >= 0.0:
+        if braking[0] and contact[0] >= 0.0 and cb.com()[1][2] >= 0.0:
             # stopped: the spring takes over from where the legs are, carrying the
-            # weight there, and its reference returns to standing over one wingbeat
+            # weight there, and its reference returns to standing
             braking[0] = False
-            settle[:] = [t, float(np.mean(q)) + 0.5 * cb.weight / mu.stiffness]
+            settle[:] = [t, float(np.mean(q)) + 0.5 * cb.weight / mu.stiffness, cb.hip_ref]
             cb.set_leg_damping(True)
         if braking[0]:  # before contact the leg hangs relaxed at its standing length
             if cb.foot_normal() <= 0.0 and contact[0] < 0.0:
                 return mu.spring(q, qd, mu.q_stand)
             if contact[0] < 0.0:
                 contact[0] = t
+                v = cb.com()[1]
+                arrival[0] = float(np.linalg.norm(v))
+                v_down = max(-float(v[2]), 0.0)
+                stroke = 2.0 * BRAKE_STROKE * mu.q_stand
+                brake[0] = 0.5 * (cb.weight + cb.mass * v_down**2 / stroke)
             # the muscle's activation rises over ACTIVATION_BEATS (not a step)
             rise = min(1.0, (t - contact[0]) / (ACTIVATION_BEATS * TWO_PI))
-            return np.full(2, brake * rise)
+            return np.full(2, brake[0] * rise)
+        if hip_to is not None:
+            b = min((t - settle[0]) / (rise_beats * TWO_PI), 1.0)
+            cb.hip_ref = settle[2] + 0.5 * (1.0 - math.cos(math.pi * b)) * (hip_to - settle[2])
         blend = 0.5 * (
             1.0 - math.cos(math.pi * min((t - settle[0]) / (SETTLE_BEATS * TWO_PI), 1.0))
         )
@@ -251,25 +273,26 @@ def touchdown(
 
     cb.set_leg_damping(False)
     rec = Record()
-    target_pose = np.asarray(target, dtype=float) + np.array(
-        [0.0, 0.0, cb.geom.sole_below_origin(cb.muscle.q_stand)]
-    )
     speeds = []
     for k in range(beats_to_steps(beats)):
         cb.step(land, k * cb.h)
         rec.add(cb, 3 if braking[0] else 0)
         speeds.append(float(np.linalg.norm(cb.com()[1])))
     sp = np.array(speeds)
-    above = np.nonzero(sp >= 0.01 * speed)[0]
-    rest = (above[-1] + 1 if len(above) else 0) / STEPS
     arrays = rec.arrays()
-    last = arrays["foot_normal"][-STEPS:]
+    first = int(np.argmax(arrays["foot_normal"] > 0.0))  # the touchdown's step
+    above = np.nonzero(sp[first:] >= 0.01 * arrival[0])[0]
+    rest = (above[-1] + 1 if len(above) else 0) / STEPS
+    peak = float(np.max(arrays["foot_normal"]) / cb.weight)
+    last = arrays["foot_force"][-STEPS:, 2]  # the vertical force: the bar's normal leans
+    feet = d.geom_xpos[cb.feet].mean(axis=0)
+    sole = np.array([feet[0], feet[1], feet[2] - cb.geom.foot_radius])
     return TouchdownResult(
         arrays,
-        speed,
+        arrival[0],
         rest,
-        float(np.max(arrays["foot_normal"]) / cb.weight),
-        d.qpos[:3] - target_pose,
+        peak,
+        sole - np.asarray(target, dtype=float),
         float(np.mean(last) / cb.weight),
         cb.root_applied_max,
     )

@@ -150,7 +150,7 @@ def take_off(
     model: str,
     *,
     config: SimConfig = SimConfig(),
-    profile: JumpProfile = JumpProfile(),
+    profile: JumpProfile | None = None,
     progress: Any = None,
     trim: bool = False,
 ) -> FlightResult:
@@ -168,7 +168,7 @@ def take_off(
             z = np.zeros((1, len(params0)))
             cb.hold_qpos = sched.prescribe(np.zeros(1), params0[None, :], z, z).qpos[0]
             cb.place_standing(PERCH_TOP, STAND_PITCH)
-            jr = jump(cb, profile, after_beats=0.0, pitch_to=pitch0)
+            jr = jump(cb, profile or JumpProfile(), after_beats=0.0, pitch_to=pitch0)
             lo_pos = cb.d.qpos[:3].copy()
             rows = _contact_rows(jr.record, cb, params0, every)
         path = liftoff_path(preset, lo_pos, jr.liftoff_velocity, red.gravity)
