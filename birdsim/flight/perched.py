@@ -139,7 +139,9 @@ def _join(first: dict, second: dict, t_shift: float) -> dict:
         b = np.asarray(v)
         if k == "t":
             b = b + t_shift
-        out[k] = b if a is None else np.concatenate([a, b.astype(a.dtype, copy=False)])
+        if a is not None and a.dtype.kind != "U":
+            b = b.astype(a.dtype, copy=False)
+        out[k] = b if a is None else np.concatenate([a, b])
     return out
 
 
