@@ -32,6 +32,7 @@ import numpy as np
 
 from birdsim.errors import BirdsimError
 from birdsim.mujoco.callback import AeroCallback
+from birdsim.mujoco.driver import wing_arrays
 from birdsim.mujoco.legs import LegGeometry, foot_geoms, leg_dofs, leg_geometry
 from birdsim.mujoco.model import build_model, pitch_quat
 from birdsim.physics.bird import Bird
@@ -80,6 +81,12 @@ class LegMuscle:
         damper of the whole bird chattered on the perch: m_leg / c is one time step)."""
         return self.stiffness * (q_ref - q)
 
+
+#: A prescribed wing motion: reduced time -> (qpos, qvel, qacc) full rows.
+WingPath = Callable[[float], tuple[np.ndarray, np.ndarray, np.ndarray]]
+#: The wings' rest pose while standing (core joint angles, rad): swept back along the
+#: body (sweep positive = tips back) and a little down.  m3 has no fold: a drawing choice.
+REST_WINGS = {"sweep": 1.35, "flap": 0.1}
 
 #: A leg law: (reduced time since the phase began, leg q (2,), leg qdot (2,)) -> force (2,)
 LegLaw = Callable[[float, np.ndarray, np.ndarray], np.ndarray]
@@ -134,6 +141,8 @@ class ContactBird:
         self.cb.enabled = aero
         self.time = 0.0
         self.hold_qpos = m.qpos0.copy()
+        #: a wing motion (reduced time -> full qpos, qvel, qacc rows), or None: held
+        self.wing_path: WingPath | None = None
         #: largest |entry| of the root's applied force over every step (0.0 exactly)
         self.root_applied_max = 0.0
 
@@ -225,12 +234,19 @@ class ContactBird:
     # ---- stepping --------------------------------------------------------------------
 
     def step(self, law: LegLaw, t_phase: float) -> None:
-        """One step with the wings held at ``hold_qpos`` and the legs driven by ``law``."""
+        """One step: the wings held at ``hold_qpos`` (or moved by ``wing_path``, a
+        callable of the time giving full qpos, qvel, qacc rows), the legs driven by
+        ``law``."""
         m, d, M = self.m, self.d, self._M
         F, P = self.free, self.pres
         pq = self._pres_qpos()
-        d.qpos[pq] = self.hold_qpos[pq]
-        d.qvel[P] = 0.0
+        if self.wing_path is None:
+            d.qpos[pq] = self.hold_qpos[pq]
+            d.qvel[P] = 0.0
+            a_p = np.zeros(len(P))
+        else:
+            q, v, a = self.wing_path(self.time)
+            d.qpos[pq], d.qvel[P], a_p = q[pq], v[P], a[P]
         mujoco.mj_step1(m, d)
         mujoco.mj_fullM(m, d, M)
         legs = law(t_phase, d.qpos[self.leg_q], d.qvel[self.legs])
@@ -238,9 +254,9 @@ class ContactBird:
         f = d.qfrc_passive - d.qfrc_bias
         f[self.legs] += legs
         f[self.hips] += hips
-        a_f = np.linalg.solve(M[np.ix_(F, F)], f[F])  # a_P = 0: the wings held still
+        a_f = np.linalg.solve(M[np.ix_(F, F)], f[F] - M[np.ix_(F, P)] @ a_p)
         d.qfrc_applied[:] = 0.0
-        d.qfrc_applied[P] = M[np.ix_(P, F)] @ a_f - f[P]
+        d.qfrc_applied[P] = M[np.ix_(P, F)] @ a_f + M[np.ix_(P, P)] @ a_p - f[P]
         d.qfrc_applied[self.legs] = legs
         d.qfrc_applied[self.hips] = hips
         self.root_applied_max = max(self.root_applied_max, float(np.abs(d.qfrc_applied[:6]).max()))
@@ -248,6 +264,31 @@ class ContactBird:
         self.time += self.h
         if not (np.all(np.isfinite(d.qpos)) and np.all(np.isfinite(d.qvel))):
             raise BirdsimError(f"the contact simulation diverged at t={self.time:.3f}")
+
+    def wing_blend(self, start: dict, end: dict, t0: float, duration: float) -> WingPath:
+        """A wing motion from the core joint angles ``start`` to ``end`` (dicts of
+        joint name -> angle) over ``duration`` from ``t0`` (reduced time), a cosine blend
+        (rates and accelerations exact); held at ``end`` after."""
+        m = self.m
+        names = set(start) | set(end)
+        a0 = {n: float(start.get(n, 0.0)) for n in names}
+        da = {n: float(end.get(n, 0.0)) - a0[n] for n in names}
+
+        def path(t: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+            u = min(max((t - t0) / duration, 0.0), 1.0)
+            inside = 0.0 < u < 1.0
+            s = 0.5 * (1.0 - math.cos(math.pi * u))
+            ds = 0.5 * math.pi / duration * math.sin(math.pi * u) if inside else 0.0
+            dds = 0.5 * (math.pi / duration) ** 2 * math.cos(math.pi * u) if inside else 0.0
+            q, v, a = wing_arrays(
+                m,
+                {n: a0[n] + s * da[n] for n in names},
+                {n: ds * da[n] for n in names},
+                {n: dds * da[n] for n in names},
+            )
+            return q[0], v[0], a[0]
+
+        return path
 
     def _pres_qpos(self) -> np.ndarray:
         if not hasattr(self, "_pq"):

@@ -94,11 +94,14 @@ def jump(
     prof: JumpProfile = JumpProfile(),
     after_beats: float = 0.5,
     pitch_to: float | None = None,
+    unfold: tuple[dict, dict] | None = None,
 ) -> JumpResult:
     """Stand, crouch and jump from where ``cb`` stands (placed with
     ``place_standing``); stop ``after_beats`` after lift-off (the wings still held).
     ``pitch_to``: before the crouch the hips raise the body to this pitch (rad; the
-    flight's first wingbeat's) over ``rise_beats``, the legs kept vertical."""
+    flight's first wingbeat's) over ``rise_beats``, the legs kept vertical.
+    ``unfold``: (rest, first) core joint angles of the wings: they move from the rest
+    pose to the first wingbeat's pose during the crouch and are held there for the push."""
     mu, w = cb.muscle, cb.weight
     rec = Record()
     stand = cb.standing_law()
@@ -123,9 +126,14 @@ def jump(
         blend = 0.5 * (1.0 - math.cos(math.pi * min(t / t_c, 1.0)))
         return mu.spring(q, qd, q0 - depth * blend)
 
+    if unfold is not None:
+        cb.wing_path = cb.wing_blend(unfold[0], unfold[1], cb.time, t_c)
     for k in range(beats_to_steps(prof.crouch_beats)):
         cb.step(crouch, k * cb.h)
         rec.add(cb, 1)
+    if unfold is not None:  # held at the first wingbeat's pose for the push
+        cb.hold_qpos = cb.wing_path(cb.time)[0]
+        cb.wing_path = None
     t_p = push_time(cb, prof)
     half, extra = 0.5 * w, 0.5 * (prof.peak_over_weight - 1.0) * w
 
@@ -190,6 +198,8 @@ TOUCHDOWN_ANGLE = math.radians(90.0)
 BRAKE_STROKE = 0.6
 #: Rise time of the legs' braking force from touchdown (wingbeats; 16 ms for the pigeon).
 ACTIVATION_BEATS = 0.125
+#: Wingbeats over which the wings fold to their rest pose after the touchdown.
+FOLD_BEATS = 1.0
 #: Wingbeats over which the standing spring returns to its reference after braking.
 SETTLE_BEATS = 0.5
 
@@ -221,13 +231,15 @@ def touchdown(
     *,
     pitch_to: float | None = None,
     rise_beats: float = 5.0,
+    fold: tuple[dict, dict] | None = None,
 ) -> TouchdownResult:
     """The legs absorb a touchdown on ``target`` (world point on the perch or ground)
     and the bird stands.  ``speed`` (omega s): place the bird with its soles just
     touching ``target``, legs at standing length, moving at ``speed`` forward and down
     at :data:`TOUCHDOWN_ANGLE`; None: start from ``cb``'s current state (a flight's
     end).  ``pitch_to``: once stopped, the hips lower the body to this pitch over
-    ``rise_beats``.  Runs ``beats`` wingbeats."""
+    ``rise_beats``.  ``fold``: (stopped, rest) core joint angles of the wings: from the
+    touchdown they fold to the rest pose over ``FOLD_BEATS``.  Runs ``beats`` wingbeats."""
     d = cb.d
     if speed is not None:
         cb.place_standing(np.asarray(target, dtype=float))
@@ -255,6 +267,8 @@ def touchdown(
                 return mu.spring(q, qd, mu.q_stand)
             if contact[0] < 0.0:
                 contact[0] = t
+                if fold is not None:
+                    cb.wing_path = cb.wing_blend(fold[0], fold[1], cb.time, FOLD_BEATS * TWO_PI)
                 v = cb.com()[1]
                 arrival[0] = float(np.linalg.norm(v))
                 v_down = max(-float(v[2]), 0.0)

@@ -10,7 +10,8 @@ the torso is when its legs, vertical and at their standing length, reach the per
 the flight's final pitch.  ``fly`` flies it with the legs tucked; at its end the
 contact phase starts from that state: the legs reach out (set to standing length,
 vertical, in one step: a limitation), the wings stop where they are (their velocity
-set to zero), the bird drops onto the perch, the legs brake it and the hips lower it
+set to zero; they fold back to :data:`~birdsim.flight.contact.REST_WINGS` over a
+wingbeat from the touchdown), the bird drops onto the perch, the legs brake it and the hips lower it
 to the standing pitch.  (A path that flies the descent down to the touchdown speed
 saturated the table in its last two wingbeats and arrived 0.1 semispan high.)
 """
@@ -23,13 +24,15 @@ from typing import Any
 
 import numpy as np
 
-from birdsim.flight.contact import ContactBird
+from birdsim.flight.contact import REST_WINGS, ContactBird
 from birdsim.flight.freeflight import FlightResult, fly
 from birdsim.flight.legwork import touchdown, touchdown_speed
 from birdsim.flight.path import FlightPath, PathKeyframe
 from birdsim.flight.path_checks import PERCH_X
-from birdsim.flight.perched import PERCH_TOP, STAND_PITCH, _contact_rows, _join
+from birdsim.flight.perched import PERCH_TOP, STAND_PITCH, _contact_rows, _join, first_pose
 from birdsim.flight.simulate import SimConfig
+from birdsim.flight.wingbeat import WingbeatSchedule
+from birdsim.mujoco.driver import wing_arrays
 from birdsim.physics.bird import Bird
 from birdsim.physics.units import reduced_bird
 
@@ -89,6 +92,14 @@ def land(
         q = a["qpos"][i].copy()
         pitch = float(a["pitch"][i])
         q[cb.leg_q] = cb.muscle.q_stand
+        # the wings stop at this instant's pose of the flown wingbeat (posed: the logged
+        # one exactly), then fold back once the feet touch
+        params = np.array([a[n][i] for n in result.param_names])
+        sched = WingbeatSchedule(cb.m, cb.kin, cb.red, params, smoothing=TWO_PI)
+        stopped = first_pose(sched, params, float(a["t"][i]))
+        pose = wing_arrays(cb.m, stopped)[0][0]
+        pq = cb._pres_qpos()
+        q[pq] = pose[pq]
         cb.hold_qpos = q.copy()
         q[cb.hip_q] = cb.hip_ref = cb.hip_for(pitch)
         cb.d.qpos[:] = q
@@ -101,7 +112,9 @@ def land(
         cb.d.qvel[:] = 0.0
         cb.d.qvel[:3] = v_com
         cb.time = float(a["t"][i])
-        td = touchdown(cb, PERCH_TOP, None, STAND_BEATS, pitch_to=STAND_PITCH)
+        td = touchdown(
+            cb, PERCH_TOP, None, STAND_BEATS, pitch_to=STAND_PITCH, fold=(stopped, REST_WINGS)
+        )
         rows = _contact_rows(td.record, cb, np.array([a[n][i] for n in result.param_names]), every)
     flight = {k: np.asarray(v)[: i + 1] for k, v in a.items()}
     n = len(flight["t"])

@@ -1,9 +1,10 @@
 """Take-off from and landing on a perch with legs (issue 25): the contact phases of
 :mod:`birdsim.flight.legwork` joined to free flight (:func:`birdsim.flight.freeflight.fly`).
 
-Take-off: the bird stands on the perch at :data:`STAND_PITCH` with its wings held at
-the pose of the first wingbeat, crouches while its hips raise the body to the pitch of
-that wingbeat, and jumps (:class:`~birdsim.flight.legwork.JumpProfile`).  At lift-off
+Take-off: the bird stands on the perch at :data:`STAND_PITCH` with its wings folded
+back (:data:`~birdsim.flight.contact.REST_WINGS`), its hips raise the body to the pitch
+of the first wingbeat, it crouches while its wings open to that wingbeat's first pose,
+and jumps (:class:`~birdsim.flight.legwork.JumpProfile`).  At lift-off
 (the feet's normal force zero) the flight takes over: a path from the lift-off state
 (torso position, the centre of mass's velocity as the path's slope) through a keyframe
 at the top of the jump's climb (:func:`liftoff_path`) into the preset's later keyframes,
@@ -24,7 +25,7 @@ from typing import Any
 import numpy as np
 
 from birdsim.flight.attitude import INPUTS
-from birdsim.flight.contact import STEPS_PER_BEAT, ContactBird
+from birdsim.flight.contact import REST_WINGS, STEPS_PER_BEAT, ContactBird
 from birdsim.flight.controller import Controller, gains_for
 from birdsim.flight.flight_arrays import flight_arrays
 from birdsim.flight.freeflight import FlightResult, fly
@@ -33,6 +34,7 @@ from birdsim.flight.path import FlightPath, PathKeyframe
 from birdsim.flight.path_checks import PERCH_X, PERCH_Y
 from birdsim.flight.simulate import SimConfig
 from birdsim.flight.wingbeat import WingbeatSchedule
+from birdsim.mujoco.driver import wing_arrays
 from birdsim.physics.bird import Bird
 from birdsim.physics.units import reduced_bird
 
@@ -57,6 +59,13 @@ def first_wingbeat(path: FlightPath, table: Any, red: Bird) -> tuple[np.ndarray,
         return cmd.params, 0.0
     cmd = ctl.command(ref0, None, np.zeros(2), float(cmd.params[names.index("pitch")]))
     return cmd.params, float(cmd.params[names.index("pitch")])
+
+
+def first_pose(sched: WingbeatSchedule, params: np.ndarray, t: float = 0.0) -> dict:
+    """The wings' core joint angles of the wingbeat ``params`` at reduced time ``t``."""
+    z = np.zeros((1, len(params)))
+    angles = sched._joints(np.array([t]), np.asarray(params)[None, :], z, z)[0]
+    return {k: float(np.asarray(v).reshape(-1)[0]) for k, v in angles.items()}
 
 
 def liftoff_path(
@@ -167,10 +176,16 @@ def take_off(
             sched = WingbeatSchedule(
                 cb.m, cb.kin, cb.red, params0, smoothing=config.smoothing_beats * TWO_PI
             )
-            z = np.zeros((1, len(params0)))
-            cb.hold_qpos = sched.prescribe(np.zeros(1), params0[None, :], z, z).qpos[0]
+            first = first_pose(sched, params0)
+            cb.hold_qpos = wing_arrays(cb.m, REST_WINGS)[0][0]  # standing: wings folded back
             cb.place_standing(PERCH_TOP, STAND_PITCH)
-            jr = jump(cb, profile or JumpProfile(), after_beats=0.0, pitch_to=pitch0)
+            jr = jump(
+                cb,
+                profile or JumpProfile(),
+                after_beats=0.0,
+                pitch_to=pitch0,
+                unfold=(REST_WINGS, first),
+            )
             lo_pos = cb.d.qpos[:3].copy()
             rows = _contact_rows(jr.record, cb, params0, every)
         path = liftoff_path(preset, lo_pos, jr.liftoff_velocity, red.gravity)
