@@ -185,10 +185,10 @@ __all__ = ["PHASES", "JumpProfile", "JumpResult", "Record", "jump", "push_time"]
 #: Touchdown speed measured in small birds landing on a perch: about 1 m/s (Provini,
 #: Tobalske, Crandell & Abourachid 2014, J. Exp. Biol. 217:2659, zebra finch and diamond
 #: dove).  Taken as it is for the pigeon (not scaled up: a Froude scaling with the leg
-#: growing as the cube root of mass, (m / 35 g)^(1/6), gives 1.55 m/s, which the pigeon's
-#: estimated 4 cm leg stroke absorbs only at about 5 x its weight, above the take-off's
-#: 4: against the measured landing peak of about half the take-off's); the seed bird
-#: gets the same reduced speed.
+#: growing as the cube root of mass, (m / m_ref)^(1/6) from the 50 g dove or the 15 g
+#: finch, gives 1.5-1.8 m/s, which the braking stroke of the pigeon's estimated 4 cm leg
+#: absorbs only at 5-7 x its weight, above the take-off's 4: against the measured
+#: landing peak of about half the take-off's); the seed bird gets the same reduced speed.
 TOUCHDOWN_SPEED_SI = 1.0
 #: The pigeon's speed unit omega s in m/s (models/pigeon.toml: 2 pi 8.02 Hz x 0.33 m).
 PIGEON_SPEED_UNIT = 16.63
