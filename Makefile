@@ -22,10 +22,13 @@ setup: $(STAMP)
 # the four preset manoeuvres in free flight (demo bird models/seed-bird.toml, demo model m3,
 # tables/seed-m3.npz) into renders/ (regenerated: --force); 3 wingbeats per second of video
 # keeps the demo under a minute (take-off and landing are 26 and 40 wingbeats)
+# take-off and landing with legs (issue 25): the crouch, the jump, the touchdown, standing
 DEMO_MANOEUVRES := hover cruise take-off landing
+DEMO_LEGS := take-off landing
 demo: setup
 	@for m in $(DEMO_MANOEUVRES); do \
-	  $(BIN)/birdsim render $$m --model m3 --beat-rate 3 --out renders/$$m-m3.mp4 --force || exit $$?; \
+	  legs=$$(case " $(DEMO_LEGS) " in *" $$m "*) echo --legs;; esac); \
+	  $(BIN)/birdsim render $$m --model m3 --beat-rate 3 $$legs --out renders/$$m-m3.mp4 --force || exit $$?; \
 	done
 
 test: setup

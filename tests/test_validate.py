@@ -234,8 +234,19 @@ PINNED = {
     "H07_roll_damping": (-0.318, 0.03),  # docs/moments.md: a factor 4.7 short of -1.5
     "H07_roll_damping_airplane": (-0.318, 0.03),
     "HCD09_fct": (1.0, 0),
+    # issue 25's rows: the pigeon's take-off and landing with legs (fly --legs); the wings
+    # beat only from lift-off (share about 100 %) and do not brake the last fall (ratio)
+    "P12_leg_share_finch": (100.1, 0.01),
+    "P12_leg_share_dove": (100.1, 0.01),
+    "E00_leg_share": (100.1, 0.01),
+    "E00_peak_force_starling": (4.225, 0.02),
+    "E00_peak_force_quail": (4.225, 0.02),
+    "P14_touchdown_speed": (0.962, 0.03),
+    "P14_landing_force_ratio": (0.826, 0.03),
 }
 VERDICTS = {
+    "E00_peak_force_quail": "not",
+    "P14_landing_force_ratio": "rough",
     "U05_wing_power": "rough",
     "CT11_aoa_up": "off",
     "TD96_strokeplane_trend": "opposite",
@@ -546,3 +557,19 @@ def test_turning_rows_print_not_yet_simulated_and_score_once_flown(
     assert rows["WD98_bank_in_downstroke"].verdict == "off (yes/no)"
     assert rows["HB07_heading_roll"].verdict == NOT_SIMULATED
     assert rows["R11_force_cone"].verdict == NOT_SIMULATED
+
+
+# ---- perching rows (issue 25) ---------------------------------------------------------
+
+
+def test_perch_rows_are_cited_quoted_and_from_two_sources_at_least() -> None:
+    rows = [m for m in load_measurements() if m.compare.startswith("perch_")]
+    assert {m.compare for m in rows} == {
+        "perch_leg_share",
+        "perch_takeoff_peak_force",
+        "perch_touchdown_speed",
+        "perch_landing_over_takeoff_force",
+    }
+    assert len({(m.author, m.year) for m in rows}) >= 2
+    for m in rows:
+        assert m.url and "'" in m.note, m.id  # a quoted passage of the paper

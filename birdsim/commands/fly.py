@@ -76,6 +76,11 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="posed: the body's pitch prescribed (default for a path in the vertical plane); free: all six DOF free, held by the attitude loop (experimental: docs/flight.md; the default for a turning path, which a posed body cannot fly)",
     )
     p.add_argument(
+        "--legs",
+        action="store_true",
+        help="legs and feet (issue 25): a path that starts at rest on the perch is a standing start and a jump; one that ends there, a touchdown and standing (docs/flight.md)",
+    )
+    p.add_argument(
         "--open-loop",
         action="store_true",
         help="feed-forward only (no feedback): see why feedback is needed",
@@ -109,6 +114,52 @@ def parse_seconds(raw: str | None) -> float | None:
             f"--seconds {raw!r} is invalid; allowed: a finite time > 0 in the bird's time units"
         )
     return v
+
+
+def legs_check(flight: object, name: str, args: argparse.Namespace) -> None:
+    """``--legs`` needs a path starting or ending at rest on the perch (not both), no
+    gusts, no --seconds, closed loop."""
+    from birdsim.flight.path import FlightPath
+
+    perched = isinstance(flight, FlightPath) and (flight.perch_start != flight.perch_end)
+    if not perched:
+        raise BirdsimError(
+            f"--legs with {name!r}; allowed: a path that starts or ends (not both) at rest on the perch, e.g. take-off or landing"
+        )
+    for flag, bad in (
+        ("--gust", args.gust),
+        ("--seconds", args.seconds),
+        ("--open-loop", args.open_loop),
+    ):
+        if bad:
+            raise BirdsimError(
+                f"--legs with {flag}; allowed: --legs alone (the contact phases take neither)"
+            )
+
+
+def fly_with_legs(flight, table, bird, model, attitude, progress):  # type: ignore[no-untyped-def]
+    from birdsim.flight.perch_landing import land
+    from birdsim.flight.perched import take_off
+    from birdsim.flight.simulate import SimConfig
+
+    run = take_off if flight.perch_start else land
+    return run(flight, table, bird, model, config=SimConfig(attitude=attitude), progress=progress)
+
+
+def legs_summary(legs: dict, bird: object) -> dict:
+    """The legs' figures (reduced units) with the speeds in the bird's units too."""
+    from birdsim.physics.units import scales
+
+    out = dict(legs)
+    speed = scales(bird).speed  # type: ignore[arg-type]
+    for key in ("touchdown_speed", "touchdown_speed_target"):
+        if key in out:
+            out[key + "_bird_units"] = out[key] * speed
+    if "liftoff_velocity" in out:
+        out["liftoff_speed_bird_units"] = (
+            float(sum(v * v for v in out["liftoff_velocity"]) ** 0.5) * speed
+        )
+    return out
 
 
 def run(args: argparse.Namespace) -> int:
@@ -168,18 +219,23 @@ def run(args: argparse.Namespace) -> int:
         bar.n = round(min(done, beats), 3)
         bar.refresh()
 
+    if args.legs:
+        legs_check(flight, sources[0], args)
     try:
-        result = fly(
-            reference,
-            table,
-            bird,
-            model,
-            beats=beats,
-            gusts=gusts,
-            open_loop=args.open_loop,
-            progress=progress,
-            config=SimConfig(attitude=attitude),
-        )
+        if args.legs:
+            result = fly_with_legs(flight, table, bird, model, attitude, progress)
+        else:
+            result = fly(
+                reference,
+                table,
+                bird,
+                model,
+                beats=beats,
+                gusts=gusts,
+                open_loop=args.open_loop,
+                progress=progress,
+                config=SimConfig(attitude=attitude),
+            )
     finally:
         bar.close()
     from birdsim.flight.flightlog import log_arrays, save_log, summary
@@ -199,6 +255,8 @@ def run(args: argparse.Namespace) -> int:
     turn = turn_figures(arrays)
     if turn is not None:
         info["turn"] = turn
+    if "legs" in result.meta:
+        info["legs"] = legs_summary(result.meta["legs"], bird)
     if out is not None:
         save_log(arrays, out, args.force)
         info["log"] = str(out)

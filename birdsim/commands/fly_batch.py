@@ -35,6 +35,10 @@ def run_many(args: argparse.Namespace, sources: list[str], seconds: float | None
     from birdsim.physics.kinematics import get_model
 
     check_count(len(sources))
+    if getattr(args, "legs", False):
+        raise BirdsimError(
+            f"--legs with {len(sources)} flights; allowed: --legs with one MANOEUVRE (batches fly without legs)"
+        )
     jobs_n = _jobs_arg(args.jobs)
     if args.dask is not None:
         from birdsim.tables.cluster import parse_scheduler

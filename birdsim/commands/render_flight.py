@@ -37,6 +37,11 @@ def add_flight_arguments(p: argparse.ArgumentParser) -> None:
         "--open-loop", action="store_true", help="free flight: feed-forward only (no feedback)"
     )
     p.add_argument(
+        "--legs",
+        action="store_true",
+        help="free flight with legs and feet: take-off as a jump from the perch, landing as a touchdown (see birdsim fly)",
+    )
+    p.add_argument(
         "--strict",
         action="store_true",
         help="free flight: saturated wingbeats are an error (exit 2, nothing written); else one warning line",
@@ -107,7 +112,21 @@ def fly_reference(
     from birdsim.flight.freeflight import fly
 
     bird, table = bird_and_table or flight_bird_and_table(args, model)
-    result = fly(reference, table, bird, model, beats=beats, gusts=gusts, open_loop=args.open_loop)
+    if getattr(args, "legs", False):  # issue 25: the contact phases joined to the flight
+        from birdsim.commands.fly import fly_with_legs
+        from birdsim.flight.path import FlightPath
+
+        if not (isinstance(reference, FlightPath) and reference.perch_start != reference.perch_end):
+            raise BirdsimError(
+                f"--legs with {reference.name!r}; allowed: a path that starts or ends (not both) at rest on the perch, e.g. take-off or landing"
+            )
+        if gusts or args.open_loop:
+            raise BirdsimError("--legs with --gust or --open-loop; allowed: --legs alone")
+        result = fly_with_legs(reference, table, bird, model, "posed", None)
+    else:
+        result = fly(
+            reference, table, bird, model, beats=beats, gusts=gusts, open_loop=args.open_loop
+        )
     log = log_arrays(result, reference.name)
     from birdsim.flight.saturation import report_saturation
 

@@ -65,9 +65,9 @@ def local_transforms(
 ) -> tuple[list[str], dict[str, np.ndarray], dict[str, np.ndarray], np.ndarray]:
     """Bone names, rest offsets (MuJoCo axes, bird units), per-frame local rotations
     (F, 3, 3) in MuJoCo axes, and the root position (F, 3), all from the MJCF and qpos."""
-    from birdsim.mujoco.model import build_model
+    from birdsim.mujoco.legged import build_model_for
 
-    m = build_model(frames.model, frames.bird)
+    m = build_model_for(frames.model, frames.bird, frames.qpos.shape[1])  # legs if any
     qpos = frames.qpos
     n = frames.frames
     names = ["root"]

@@ -29,9 +29,9 @@ def joint_columns(frames: FrameSequence) -> dict[str, np.ndarray]:
     """Every non-root joint of the MJCF as named columns (balls as quaternions)."""
     import mujoco
 
-    from birdsim.mujoco.model import build_model
+    from birdsim.mujoco.legged import build_model_for
 
-    m = build_model(frames.model, frames.bird)
+    m = build_model_for(frames.model, frames.bird, frames.qpos.shape[1])  # legs if any
     cols: dict[str, np.ndarray] = {}
     for j in range(m.njnt):
         kind = m.jnt_type[j]

@@ -102,7 +102,7 @@ def frames_from_log(
     import tomllib
 
     from birdsim.flight.flightstates import _quaternion_slices, resample
-    from birdsim.mujoco.model import build_model
+    from birdsim.mujoco.legged import build_model_for
     from birdsim.physics.bird import Bird
     from birdsim.physics.kinematics import get_model
     from birdsim.physics.units import reduced_bird, scales
@@ -125,7 +125,7 @@ def frames_from_log(
     n = frame_count(t1 - t0, fps, per_s)
     time = t0 + np.arange(n) * (per_s / fps)
     time = time[time <= t1 + 1e-9 * max(1.0, abs(t1))]
-    m_red = build_model(km.name, reduced_bird(bird))
+    m_red = build_model_for(km.name, reduced_bird(bird), np.asarray(log["qpos"]).shape[1])
     qpos = resample(t_log, np.asarray(log["qpos"], dtype=float), time)
     for sl in _quaternion_slices(m_red):
         qpos[:, sl] /= np.linalg.norm(qpos[:, sl], axis=1, keepdims=True)

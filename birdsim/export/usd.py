@@ -83,9 +83,9 @@ def build_stage(frames: FrameSequence, assets_dir: Path):  # -> pxr.Usd.Stage
     from mujoco.usd.exporter import USDExporter
     from pxr import Gf, Sdf, UsdGeom
 
-    from birdsim.mujoco.model import build_model
+    from birdsim.mujoco.legged import build_model_for
 
-    m = build_model(frames.model, frames.bird)
+    m = build_model_for(frames.model, frames.bird, frames.qpos.shape[1])  # legs if any
     d = mujoco.MjData(m)
     work = tempfile.mkdtemp(prefix="birdsim-usd-")
     try:

@@ -124,6 +124,10 @@ def log_arrays(result: FlightResult, manoeuvre: str = "") -> dict[str, np.ndarra
         "param_names": np.array(list(result.param_names)),
         "open_loop": np.array(result.open_loop),
     }
+    if "foot_force" in a:  # legs and contact (issue 25)
+        out["foot_force"] = a["foot_force"] * sc.force
+        out["on_perch"] = np.asarray(a["on_perch"], dtype=bool)
+        out["phase"] = np.asarray(a["phase"]).astype(str)
     return out
 
 

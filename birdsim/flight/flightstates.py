@@ -57,7 +57,7 @@ def flight_states(log: dict[str, Any], options: Any, *, title: str = "") -> Any:
     """
     import tomllib
 
-    from birdsim.mujoco.model import build_model
+    from birdsim.mujoco.legged import build_model_for
     from birdsim.render.states import StateSequence
 
     bird = log.get("bird_obj") or Bird.from_dict(tomllib.loads(str(log["bird"])))
@@ -76,7 +76,7 @@ def flight_states(log: dict[str, Any], options: Any, *, title: str = "") -> Any:
     frames = max(1, int(round(seconds * options.fps)))
     t = np.arange(frames * sub) * (options.beats_per_second / (options.fps * sub))
     t = np.minimum(t, flown)
-    m = build_model(model, red)
+    m = build_model_for(model, red, np.asarray(log["qpos"]).shape[1])  # legs if logged
     qpos = resample(t_log, np.asarray(log["qpos"], dtype=float), t)
     for sl in _quaternion_slices(m):
         q = qpos[:, sl]

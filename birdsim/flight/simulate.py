@@ -74,6 +74,8 @@ class SimConfig:
     #: "posed": the torso's orientation prescribed at the table pitch (the default until
     #: the attitude loop holds the presets: docs/flight.md, "Six degrees of freedom")
     attitude: str = "posed"
+    #: legs and feet in the model (issue 25), tucked and prescribed in flight
+    legs: bool = False
 
     def __post_init__(self) -> None:
         if self.attitude not in ("free", "posed"):
@@ -121,7 +123,7 @@ class FreeBird:
         self.bird = bird
         self.red = reduced_bird(bird)
         self.config = config
-        m = build_model(self.kin.name, self.red, scene=False)
+        m = build_model(self.kin.name, self.red, scene=False, legs=config.legs)
         m.opt.timestep = self.red.period / config.steps_per_beat
         m.opt.gravity[:] = (0.0, 0.0, -self.red.gravity if gravity else 0.0)
         m.opt.wind[:] = 0.0

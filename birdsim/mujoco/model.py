@@ -40,13 +40,10 @@ import mujoco
 import numpy as np
 
 from birdsim.errors import BirdsimError
-from birdsim.mujoco.arena import (
-    add_arena as _add_arena,
-)
-from birdsim.mujoco.arena import (
-    camera_quat as _camera_quat,
-)
+from birdsim.mujoco.arena import add_arena as _add_arena
+from birdsim.mujoco.arena import camera_quat as _camera_quat
 from birdsim.mujoco.fold import add_elbow, add_hand_joints
+from birdsim.mujoco.legs import add_legs
 from birdsim.mujoco.plumage import plumage_for
 from birdsim.mujoco.sites import (  # noqa: F401 (re-exported)
     SIDES,
@@ -295,6 +292,7 @@ def build_spec(
     scene: bool = True,
     body_pitch: float = 0.0,
     visuals: bool = True,
+    legs: bool = False,
 ) -> mujoco.MjSpec:
     """The MjSpec of the bird for kinematic ``model_name`` (base, m1..m4).
 
@@ -303,7 +301,7 @@ def build_spec(
     Every model has the same joints (nq = 7 + 2 * 8, nv = 6 + 2 * 7); a kinematic model
     only moves the ones it uses (see :mod:`birdsim.mujoco.driver`).  ``visuals`` adds
     the bird for the eye (:mod:`birdsim.mujoco.visual`: massless, contact-free geoms
-    in group 2; the dynamics are identical without them).
+    in group 2; the dynamics are identical without them).  ``legs``: legs and feet.
     """
     bird = bird or Bird()
     spec = mujoco.MjSpec()
@@ -311,6 +309,8 @@ def build_spec(
     _add_options(spec, bird)
     _add_defaults(spec)
     _add_bird(spec, model_name, bird, body_pitch, visuals)
+    if legs:  # after the wings: their DOF come last, the wings' addresses are unchanged
+        add_legs(spec, spec.body("torso"), bird, visuals)
     if scene:
         _add_arena(spec, bird)
     m = spec.compile()
@@ -325,6 +325,7 @@ def build_model(
     scene: bool = True,
     body_pitch: float = 0.0,
     visuals: bool = True,
+    legs: bool = False,  # birdsim.mujoco.legs
 ) -> mujoco.MjModel:
     """Compiled MjModel of the bird (see :func:`build_spec`).
 
@@ -339,7 +340,7 @@ def build_model(
             f"body_pitch={body_pitch!r} is invalid; allowed: a finite angle in radians"
         )
     return build_spec(
-        model_name, bird, scene=scene, body_pitch=body_pitch, visuals=visuals
+        model_name, bird, scene=scene, body_pitch=body_pitch, visuals=visuals, legs=legs
     ).compile()
 
 

@@ -87,8 +87,27 @@ class Bird:
     #: centre of mass) [mass x length^2]; empty: a solid box of the bird's mass, 1.1 x
     #: 0.26 x 0.26 semispans (the model's drawn torso)
     body_inertia: tuple[float, ...] = ()
+    # ---- legs and feet (issue 25; free flight with contact only, birdsim/mujoco/legs.py).
+    # The seed bird's are the pigeon's reduced values (models/seed-bird.toml).
+    #: leg length from the hip to the sole of the foot when standing [length]
+    leg_length: float = 0.21
+    #: mass of ONE leg and foot as a fraction of the bird's mass (taken out of the torso,
+    #: so the whole bird weighs the same)
+    leg_mass_fraction: float = 0.04
+    #: toe span of one foot, front toe tip to hind toe tip [length]: the foot's grip
+    toe_span: float = 0.155
 
     def __post_init__(self) -> None:
+        for name in ("leg_length", "toe_span"):
+            v = getattr(self, name)
+            if not (_is_number(v) and math.isfinite(v) and v > 0):
+                raise BirdConfigError(f"bird.{name}={v!r} is invalid; allowed: a finite number > 0")
+        v = self.leg_mass_fraction
+        if not (_is_number(v) and math.isfinite(v) and 0 < v <= 0.2):
+            raise BirdConfigError(
+                f"bird.leg_mass_fraction={v!r} is invalid; allowed: a number in (0, 0.2] "
+                "(one leg's share of the bird's mass)"
+            )
         for name in ("tail_length", "tail_span"):
             v = getattr(self, name)
             if not (_is_number(v) and math.isfinite(v) and v > 0):
@@ -262,7 +281,15 @@ class Bird:
 
 
 #: Bird fields that only free flight uses (the tables' wings do not depend on them).
-FLIGHT_FIELDS = ("tail_length", "tail_span", "tail_root", "body_inertia")
+FLIGHT_FIELDS = (
+    "tail_length",
+    "tail_span",
+    "tail_root",
+    "body_inertia",
+    "leg_length",
+    "leg_mass_fraction",
+    "toe_span",
+)
 
 #: m5's skeleton: (field, lower, upper, what is allowed and why).  Estimates, not
 #: measured ranges (docs/conventions.md): the elbow strictly inside the arm (a humerus and

@@ -74,6 +74,8 @@ def reduced_bird(bird: Bird) -> Bird:
         tail_length=bird.tail_length / s,
         tail_span=bird.tail_span / s,
         tail_root=bird.tail_root / s,
+        leg_length=bird.leg_length / s,
+        toe_span=bird.toe_span / s,
         body_inertia=tuple(i / (bird.rho * s**4 * c) for i in bird.body_inertia),
     )
 

@@ -59,14 +59,17 @@ class Scene:
         import mujoco
 
         from birdsim.mujoco.fan import PrimaryFan
-        from birdsim.mujoco.model import aero_sites, build_model
+        from birdsim.mujoco.legged import build_model_for
+        from birdsim.mujoco.model import aero_sites
         from birdsim.render.tail_pose import TailPoser
 
         self._mj = mujoco
         self.playback = states if isinstance(states, Playback) else None
         self.options = options
-        self.m = build_model(
-            states.model.name if isinstance(states, Playback) else states.model, states.bird
+        self.m = build_model_for(  # with legs when the states carry them
+            states.model.name if isinstance(states, Playback) else states.model,
+            states.bird,
+            -1 if isinstance(states, Playback) else int(states.qpos.shape[1]),
         )
         if isinstance(states, Playback):
             states = states_from_playback(states, max(1, int(options.trail_substeps)), m=self.m)

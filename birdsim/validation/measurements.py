@@ -79,11 +79,21 @@ COMPARE_KEYS: dict[str, str] = {
     "turn_radius": "m",
     "turn_heading_rate_follows_roll": "yes=1",
     "turn_bank_within_downstroke": "yes=1",
+    # perching (issue 25): from the take-off and landing with legs (fly --legs)
+    "perch_leg_share": "%",
+    "perch_takeoff_peak_force": "body weights",
+    "perch_touchdown_speed": "m/s",
+    "perch_landing_over_takeoff_force": "ratio",
 }
 #: Keys whose birdsim value comes from a turning flight (the turning presets of
 #: :mod:`birdsim.flight.turn_presets`), not from the level-flight sweep. Until the
 #: bank-to-turn controller flies them, these rows print "not yet simulated" (not a failure).
 TURNING_KEYS = frozenset(k for k in COMPARE_KEYS if k.startswith("turn_"))
+#: Keys whose birdsim value comes from the take-off and landing with legs
+#: (:mod:`birdsim.validation.perching`).
+PERCH_KEYS = frozenset(k for k in COMPARE_KEYS if k.startswith("perch_"))
+#: Rows scored from a flight rather than the sweep ("not yet simulated" without one).
+FLIGHT_KEYS = TURNING_KEYS | PERCH_KEYS
 #: Keys that need a speed (``speed_m_s``); trends need a window (``speed_to_m_s`` too).
 NEEDS_SPEED = {
     "power",
@@ -303,6 +313,8 @@ __all__ = [
     "Measurement",
     "MeasurementsError",
     "TURNING_KEYS",
+    "PERCH_KEYS",
+    "FLIGHT_KEYS",
     "default_path",
     "load_measurements",
 ]

@@ -10,7 +10,7 @@ from pathlib import Path
 from birdsim.errors import BirdConfigError
 from birdsim.physics.aero import POLARS, polar_from_dict
 from birdsim.physics.bird import Bird
-from birdsim.validation.measurements import Measurement, load_measurements
+from birdsim.validation.measurements import PERCH_KEYS, Measurement, load_measurements
 from birdsim.validation.scorecard import Row, score, sweep_speeds
 from birdsim.validation.tablecheck import find_table, level_flight_from_table
 from birdsim.validation.trim import TrimSweep, trim_sweep
@@ -127,7 +127,12 @@ def validate(
     finally:
         if bar is not None:
             bar.close()
-    rows, vsweeps = score(ms, sweep, bird, variants=variants)
+    flights: dict[str, float] = {}
+    if any(m.compare in PERCH_KEYS for m in ms):  # issue 25: take-off and landing with legs
+        from birdsim.validation.perching import perch_values
+
+        flights.update(perch_values(bird))
+    rows, vsweeps = score(ms, sweep, bird, variants=variants, turning=flights)
     mp = sweep.min_power()
     rng = sweep.trim_range()
     hover = any(p.trimmed for p in sweep.points if p.speed == 0.0)

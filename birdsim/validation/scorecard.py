@@ -9,7 +9,7 @@ never from fitted constants.  Verdicts (stated on every row):
 * trends: the sign of birdsim's least-squares slope over the row's speed window against
   the measured sign -> ``same sign`` / ``opposite sign`` (not a ratio score).
 * yes/no: equal -> ``agrees``, else ``off``.  ``shown`` rows are not compared.
-* turning rows (:data:`birdsim.validation.measurements.TURNING_KEYS`): their value comes
+* turning and perching rows (:data:`birdsim.validation.measurements.FLIGHT_KEYS`): their value comes
   from a turning flight (``score(..., turning=...)``); without one the row says
   :data:`NOT_SIMULATED`, which is not a failure and gets no variants.
 
@@ -28,7 +28,7 @@ import numpy as np
 from birdsim.errors import BirdsimError
 from birdsim.physics.aero import RoboflyPolar, SeedPolar
 from birdsim.physics.bird import Bird
-from birdsim.validation.measurements import TURNING_KEYS, Measurement
+from birdsim.validation.measurements import FLIGHT_KEYS, Measurement
 from birdsim.validation.trim import TrimSweep, angle_of_attack_deg, trim_sweep
 
 AGREE, ROUGH = 1.5, 2.0
@@ -70,7 +70,7 @@ class Row:
         """A birdsim value of this row (its own or a variant's) as printed."""
         m = self.measurement
         if value is None:
-            return "not yet simulated" if m.compare in TURNING_KEYS else "cannot trim"
+            return "not yet simulated" if m.compare in FLIGHT_KEYS else "cannot trim"
         if m.kind == "trend":
             return f"{value:+.3g} {_slope_unit(m.compare)}"
         if m.kind == "yesno":
@@ -99,7 +99,7 @@ def _slope_unit(key: str) -> str:
 
 def verdict_for(m: Measurement, value: float | None) -> tuple[float | None, str]:
     """(ratio, verdict text with its tolerance) of birdsim's ``value`` against ``m``."""
-    if m.compare in TURNING_KEYS and value is None:
+    if m.compare in FLIGHT_KEYS and value is None:
         return None, NOT_SIMULATED
     if m.kind == "shown":
         return None, "not scored (shown only)"
@@ -134,7 +134,7 @@ def model_value(m: Measurement, sweep: TrimSweep, bird: Bird) -> float | None:
         BirdsimError: the row's speed is not in the sweep, or an unknown compare key.
     """
     key = m.compare
-    if key in TURNING_KEYS:  # from a turning flight, not the sweep (see score)
+    if key in FLIGHT_KEYS:  # from a turning flight, not the sweep (see score)
         return None
     if key == "min_power_speed":
         mp = sweep.min_power()
@@ -215,7 +215,7 @@ def sweep_speeds(
     extra = {
         m.speed_m_s
         for m in measurements
-        if m.speed_m_s is not None and m.kind != "trend" and m.compare not in TURNING_KEYS
+        if m.speed_m_s is not None and m.kind != "trend" and m.compare not in FLIGHT_KEYS
     }
     return tuple(sorted(set(base) | {float(v) for v in extra}))
 
@@ -259,7 +259,7 @@ def score(
     """
     rows = []
     for m in measurements:
-        if m.compare in TURNING_KEYS:
+        if m.compare in FLIGHT_KEYS:
             v = (turning or {}).get(m.compare)
         else:
             v = model_value(m, sweep, bird)
@@ -268,7 +268,7 @@ def score(
     off = [
         r
         for r in rows
-        if r.verdict.startswith(("off", "opposite")) and r.measurement.compare not in TURNING_KEYS
+        if r.verdict.startswith(("off", "opposite")) and r.measurement.compare not in FLIGHT_KEYS
     ]
     vsweeps: dict[str, TrimSweep] = {}
     if variants and off:

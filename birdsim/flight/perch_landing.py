@@ -1,0 +1,161 @@
+"""Landing on a perch with legs (issue 25): free flight down to the touchdown, then the
+contact phase of :func:`birdsim.flight.legwork.touchdown` (docs/flight.md, "Legs,
+contact, take-off and landing").
+
+The path is the preset's (approach and flare) ending in a hover over the perch at the
+height from which a fall reaches the measured touchdown speed
+(:func:`~birdsim.flight.legwork.touchdown_speed`: ``v^2 / 2 g`` above the touchdown
+height, 0.15 semispans, 5 cm for the pigeon).  The touchdown height and point are where
+the torso is when its legs, vertical and at their standing length, reach the perch at
+the flight's final pitch.  ``fly`` flies it with the legs tucked; at its end the
+contact phase starts from that state: the legs reach out (set to standing length,
+vertical, in one step: a limitation), the wings stop where they are (their velocity
+set to zero; they fold back to :data:`~birdsim.flight.contact.REST_WINGS` over a
+wingbeat from the touchdown), the bird drops onto the perch, the legs brake it and the hips lower it
+to the standing pitch.  (A path that flies the descent down to the touchdown speed
+saturated the table in its last two wingbeats and arrived 0.1 semispan high.)
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+from typing import Any
+
+import numpy as np
+
+from birdsim.flight.contact import REST_WINGS, ContactBird
+from birdsim.flight.freeflight import FlightResult, fly
+from birdsim.flight.legwork import touchdown, touchdown_speed
+from birdsim.flight.path import FlightPath, PathKeyframe
+from birdsim.flight.path_checks import PERCH_X
+from birdsim.flight.perched import PERCH_TOP, STAND_PITCH, _contact_rows, _join, first_pose
+from birdsim.flight.simulate import SimConfig
+from birdsim.flight.wingbeat import WingbeatSchedule
+from birdsim.mujoco.driver import wing_arrays
+from birdsim.physics.bird import Bird
+from birdsim.physics.units import reduced_bird
+
+TWO_PI = 2.0 * math.pi
+#: Wingbeats of the contact phase after the touchdown.
+STAND_BEATS = 8.0
+
+
+def touchdown_pose(model: str, bird: Bird, pitch: float) -> tuple[float, float]:
+    """Torso x and height (semispans) when the soles touch the perch top at ``pitch``
+    with the legs vertical (the hips sit ahead of the torso origin at a pitched body)."""
+    with ContactBird(model, bird) as cb:
+        cb.place_standing(PERCH_TOP, pitch)
+        return float(cb.d.qpos[0]), float(cb.d.qpos[2])
+
+
+def landing_path(preset: FlightPath, z_hover: float, x_td: float = PERCH_X) -> FlightPath:
+    """The preset's landing ending in a hover at ``z_hover`` over the touchdown point
+    (module docstring); the approach no lower than the hover."""
+    end = preset.keyframes[-1]
+    keys = [replace(k, z=max(k.z, z_hover)) for k in preset.keyframes[:-1]]
+    keys.append(PathKeyframe(end.t, z_hover, V=0.0, regime="hover"))
+    draft = FlightPath(preset.name, end.t, False, False, tuple(keys))
+    x_end = float(draft.state(end.t * TWO_PI).x)
+    return FlightPath(
+        preset.name, end.t, False, False, tuple(keys), preset.description, x0=x_td - x_end
+    )
+
+
+def land(
+    preset: FlightPath,
+    table: Any,
+    bird: Bird,
+    model: str,
+    *,
+    config: SimConfig = SimConfig(),
+    progress: Any = None,
+) -> FlightResult:
+    """Fly ``preset`` (a path ending at rest on the perch) down to the touchdown and
+    stand: the joined log with ``foot_force``, ``on_perch``, ``phase``; figures in
+    ``meta["legs"]``."""
+    v_td = touchdown_speed()
+    drop = v_td**2 / (2.0 * reduced_bird(bird).gravity)
+    pitch_end = math.radians(78.0)
+    for _ in range(2):  # the touchdown pose depends on the pitch the flight ends at
+        x_td, z_td = touchdown_pose(model, bird, pitch_end)
+        path = landing_path(preset, z_td + drop, x_td)
+        result = fly(path, table, bird, model, config=replace(config, legs=True), progress=progress)
+        a = result.arrays
+        t_beats = a["t"] / TWO_PI
+        i = len(a["t"]) - 1
+        if abs(float(a["pitch"][i]) - pitch_end) < math.radians(1.0):
+            break
+        pitch_end = float(a["pitch"][i])
+    every = max(1, 128 // config.log_per_beat)
+    with ContactBird(model, bird) as cb:
+        q = a["qpos"][i].copy()
+        pitch = float(a["pitch"][i])
+        q[cb.leg_q] = cb.muscle.q_stand
+        # the wings stop at this instant's pose of the flown wingbeat (posed: the logged
+        # one exactly), then fold back once the feet touch
+        params = np.array([a[n][i] for n in result.param_names])
+        sched = WingbeatSchedule(cb.m, cb.kin, cb.red, params, smoothing=TWO_PI)
+        stopped = first_pose(sched, params, float(a["t"][i]))
+        pose = wing_arrays(cb.m, stopped)[0][0]
+        pq = cb._pres_qpos()
+        q[pq] = pose[pq]
+        cb.hold_qpos = q.copy()
+        q[cb.hip_q] = cb.hip_ref = cb.hip_for(pitch)
+        cb.d.qpos[:] = q
+        # the wings stop (internal forces: the whole bird keeps its linear momentum), the
+        # body's rotation with them
+        cb.d.qvel[:] = a["qvel"][i]
+        cb.d.qvel[cb.legs] = 0.0
+        cb.d.qvel[cb.hips] = 0.0
+        v_com = cb.com()[1]
+        cb.d.qvel[:] = 0.0
+        cb.d.qvel[:3] = v_com
+        cb.time = float(a["t"][i])
+        td = touchdown(
+            cb, PERCH_TOP, None, STAND_BEATS, pitch_to=STAND_PITCH, fold=(stopped, REST_WINGS)
+        )
+        rows = _contact_rows(td.record, cb, np.array([a[n][i] for n in result.param_names]), every)
+    flight = {k: np.asarray(v)[: i + 1] for k, v in a.items()}
+    n = len(flight["t"])
+    flight["foot_force"] = np.zeros(n)
+    flight["on_perch"] = np.zeros(n, dtype=bool)
+    flight["phase"] = np.array(["flight"] * n)
+    joined = _join(flight, rows, 0.0)
+    e = np.hypot(flight["x"] - flight["x_ref"], flight["z"] - flight["z_ref"])
+    skip = t_beats[: i + 1] >= 2.0
+    meta = dict(result.meta)
+    # at rest against the approach's speed (the preset's first keyframe: cruise)
+    v_app = float(preset.keyframes[0].V or 0.0) or float(np.hypot(a["vx"][0], a["vz"][0]))
+    first = int(np.argmax(rows["on_perch"]))
+    sp = np.linalg.norm(rows["qvel"][:, :3], axis=1)[first:]
+    above = np.nonzero(sp >= 0.01 * v_app)[0]
+    per_beat = config.log_per_beat
+    meta["legs"] = {
+        "approach_speed": v_app,
+        "rest_beats_vs_approach": (above[-1] + 1 if len(above) else 0) / per_beat,
+        "touchdown_beats": float(t_beats[i]),
+        "touchdown_speed": td.touchdown_speed,
+        "touchdown_speed_target": v_td,
+        "peak_foot_force_over_weight": td.peak_foot_over_weight,
+        "rest_beats": td.rest_beats,
+        "final_offset": [float(v) for v in td.final_offset],
+        "weight_carried": td.weight_carried,
+        "rms_error_to_touchdown": float(np.sqrt(np.mean(e[skip] ** 2))),
+        "touchdown_height": z_td,
+        "touchdown_pitch_deg": math.degrees(float(a["pitch"][i])),
+        "root_applied_max_contact": td.root_applied_max,
+    }
+    return FlightResult(
+        joined,
+        bird,
+        result.model,
+        result.param_names,
+        result.gains,
+        result.open_loop,
+        result.projection_max,
+        meta,
+    )
+
+
+__all__ = ["land", "landing_path", "touchdown_pose"]

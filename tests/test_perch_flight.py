@@ -1,0 +1,126 @@
+"""Take-off and landing with legs (issue 25): the contact phases joined to free flight
+(`birdsim fly take-off --legs`, `fly landing --legs`).  Seed bird in the default suite
+(a few seconds each), the pigeon marked slow."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from birdsim.commands.common import load_table_for
+from birdsim.flight.perch_landing import land
+from birdsim.flight.perched import take_off
+from birdsim.flight.presets import PATH_PRESETS, PIGEON_FILE, demo_bird
+from birdsim.physics.bird import Bird
+
+
+def _bird(name: str) -> Bird:
+    return demo_bird() if name == "seed" else Bird.from_toml(PIGEON_FILE)
+
+
+def _take_off(name: str):
+    bird = _bird(name)
+    return take_off(PATH_PRESETS["take-off"], load_table_for(bird, "m3", None), bird, "m3")
+
+
+def _land(name: str):
+    bird = _bird(name)
+    return land(PATH_PRESETS["landing"], load_table_for(bird, "m3", None), bird, "m3")
+
+
+def _check_take_off(r) -> None:
+    legs = r.meta["legs"]
+    # targets of issue 25: share >= 0.6, peak 1.5-8 weights, path RMS <= 0.1 from lift-off
+    assert legs["leg_share"] >= 0.6
+    assert 1.5 <= legs["peak_foot_force_over_weight"] <= 8.0
+    assert legs["rms_error_from_liftoff"] <= 0.1
+    assert not np.any(r.arrays["saturated"])
+    assert legs["root_applied_max_contact"] == 0.0
+    assert r.meta["root_applied_max"] == 0.0 or r.meta["attitude"] == "posed"
+    # the flight starts from the lift-off state (no trim shift)
+    assert legs["handover_shift"] < 1e-3
+    a = r.arrays
+    phases = list(dict.fromkeys(a["phase"].tolist()))
+    assert phases == ["standing", "take-off", "flight"]
+    on = a["on_perch"]
+    assert on[:64].mean() > 0.9 and not on[-1]  # (the placed feet touch from step 2)
+    # the log is one time line with the legs in every sample
+    assert np.all(np.diff(a["t"]) > 0) and a["qpos"].shape[1] == 25
+
+
+def _check_landing(r) -> None:
+    legs = r.meta["legs"]
+    # the measured touchdown speed (1 m/s for the pigeon, 0.060 omega s) within 10 %
+    assert legs["touchdown_speed"] == pytest.approx(legs["touchdown_speed_target"], rel=0.1)
+    assert legs["peak_foot_force_over_weight"] < 4.0  # below the take-off's 4.08
+    assert legs["rest_beats_vs_approach"] <= 2.0  # < 1 % of the approach speed in 2 beats
+    assert np.linalg.norm(legs["final_offset"]) < 0.05  # on the perch (semispans)
+    assert legs["weight_carried"] == pytest.approx(1.0, abs=0.05)
+    assert legs["rms_error_to_touchdown"] <= 0.1
+    assert not np.any(r.arrays["saturated"])
+    a = r.arrays
+    assert list(dict.fromkeys(a["phase"].tolist())) == ["flight", "landing", "standing"]
+    assert a["on_perch"][-1] and not a["on_perch"][0]
+    # at rest at the end: the last wingbeat's speed below 1e-3 omega s
+    assert np.max(np.linalg.norm(a["qvel"][-64:, :3], axis=1)) < 1e-3
+
+
+def test_take_off_jumps_and_flies_seed():
+    _check_take_off(_take_off("seed"))
+
+
+def test_landing_touches_down_and_stands_seed():
+    _check_landing(_land("seed"))
+
+
+@pytest.mark.slow
+def test_take_off_and_landing_pigeon():
+    _check_take_off(_take_off("pigeon"))
+    _check_landing(_land("pigeon"))
+
+
+@pytest.mark.slow
+def test_fly_legs_json_and_log(tmp_path):
+    out = tmp_path / "t.npz"
+    run = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "birdsim.cli",
+            "fly",
+            "take-off",
+            "--legs",
+            "--json",
+            "--out",
+            str(out),
+        ],
+        capture_output=True,
+        text=True,
+    )
+    assert run.returncode == 0, run.stderr
+    info = json.loads(run.stdout)
+    assert info["legs"]["leg_share"] >= 0.6
+    log = np.load(out)
+    assert {"foot_force", "on_perch", "phase"} <= set(log.files)
+    assert log["foot_force"].shape == log["t"].shape
+
+
+@pytest.mark.parametrize(
+    "args,word",
+    [(["hover", "--legs"], "--legs"), (["take-off", "--legs", "--seconds", "3"], "--seconds")],
+)
+def test_fly_legs_bad_input_one_line(args, word, tmp_path):
+    out = tmp_path / "x.npz"
+    run = subprocess.run(
+        [sys.executable, "-m", "birdsim.cli", "fly", *args, "--out", str(out)],
+        capture_output=True,
+        text=True,
+    )
+    assert run.returncode == 2
+    assert word in run.stderr and "Traceback" not in run.stderr
+    assert len(run.stderr.strip().splitlines()) == 1
+    assert not out.exists()
