@@ -73,7 +73,8 @@ tables: setup
 
 # Rebuild the demo model's flight tables (finer grid; docs/flight.md): the seed bird's and the
 # pigeon's (tables build reduces a bird to its reduced bird: forces in table units); ~2 min each
-# for m3; the pigeon's folding wing (m5, issue 24) took 25 min on the shared machine.
+# for m3; the pigeon's folding wing (m5, issue 24) took 11-25 min on the shared machine
+# (468 CPU s; with m5's flap bound pi/2, 2026-12-02).
 FLIGHT_GRID := Fx=-0.2:0.3:21,Fz=-0.4:0:17,V=0:0.8:17
 flight-tables: setup
 	$(BIN)/birdsim tables build --model m3 --bird models/seed-bird.toml --grid "$(FLIGHT_GRID)" --out tables/seed-m3.npz --force

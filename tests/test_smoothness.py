@@ -101,3 +101,13 @@ def test_shipped_tables_are_smooth_and_cost_no_more_than_before(model):
     # per cell: within the stated tolerance of the best found (the cells the pass kept
     # are at most as costly as before; 1e-6: the n = 32 search vs the n = 64 check)
     assert np.max(t.cost[ok0] - cost0[ok0]) <= tol + 1e-6
+
+
+def test_the_pigeons_m5_flight_table_is_smooth():
+    """Issue 24: the pigeon's m5 flight table within 2 % zig-zags (1.3 % as built with m5's
+    flap bound pi/2), on a grid mostly reachable (5618 of 6069 cells), so the share is not
+    taken over a handful of triples.  The seed bird's m5 table (7.4 %) is not held to it:
+    docs/tables.md says why."""
+    t = load_table(TABLES / "pigeon-m5.npz")
+    s = table_smoothness(t)
+    assert s.triples > 10000 and s.zigzag_share <= 0.02, (s.triples, s.zigzag_share, s.worst)

@@ -218,6 +218,9 @@ _M4_PARAMS = tuple(
     )
 )
 
+#: m5's bounds that differ from m4's (:mod:`birdsim.physics.m5`).
+_M5_UPPER = {"stroke_plane": _m5.STROKE_PLANE_UPPER, "flap_amp": _m5.FLAP_UPPER}
+
 MODELS: dict[str, KinematicModel] = {
     m.name: m
     for m in (
@@ -254,8 +257,8 @@ MODELS: dict[str, KinematicModel] = {
         KinematicModel(
             "m5",
             tuple(
-                ParamSpec(**{**p.__dict__, "upper": _m5.STROKE_PLANE_UPPER})
-                if p.name == "stroke_plane"
+                ParamSpec(**{**p.__dict__, "upper": _M5_UPPER[p.name]})
+                if p.name in _M5_UPPER
                 else p
                 for p in _M4_PARAMS
             )

@@ -82,6 +82,9 @@ FOLD_PARAMS: tuple[ParamSpec, ...] = (
 
 #: m5's stroke plane is bounded by the pigeon's range instead of m3's 0.35 rad.
 STROKE_PLANE_UPPER = PI / 3
+#: m5's shoulder flap is bounded as m1-m3's (pi/2), not m4's pi/4: with m4's bound the
+#: pigeon cannot carry its weight below 6 m/s (docs/validation.md, "m5").
+FLAP_UPPER = PI / 2
 
 ARM_CHAIN: tuple[ChainElement, ...] = (
     JOINTS["stroke"],
@@ -149,7 +152,11 @@ def fold_bird_error(bird: Bird) -> str | None:
 #: estimate with its reasoning.
 BOUND_SOURCES: dict[str, str] = {
     "pitch": "m4's bound [0, pi/2] (design.md); not a pigeon range",
-    "flap_amp": "m4's shoulder bound pi/4 (design.md); the wrist flap adds up to pi/4 at the tip",
+    "flap_amp": "ESTIMATE pi/2, m1-m3's bound (design.md; m4: pi/4): with pi/4 the pigeon "
+    "cannot carry its weight below 6 m/s nor hover, and its m5 free flight saturates; pigeons' "
+    "stroke amplitude is greatest in slow flight and take-off (Berg & Biewener 2010 J Exp Biol "
+    "213:1651, Summary; their numbers were not read); trimmed at 4.46 m/s m5 uses 2 x 0.99-1.03 "
+    "rad (docs/validation.md)",
     "twist_amp": "m4's bound (design.md)",
     "stroke_plane": "ESTIMATE pi/3 (m3/m4: 0.35 rad): m4's bound forced the body to 55-70 deg "
     "in slow flight to tilt the stroke plane (issue 24); Usherwood et al. 2005 (J Exp Biol "

@@ -94,6 +94,8 @@ class Row:
 
 
 def _slope_unit(key: str) -> str:
+    if key == "span_ratio_slope":  # a ratio: no degrees
+        return "per m/s"
     return "W per m/s" if key == "power_slope" else "deg per m/s"
 
 
