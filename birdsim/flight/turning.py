@@ -39,6 +39,12 @@ FF_LEAD = 0.75
 #: wingbeats: roll 2 -> path RMS diverging after 20 wingbeats, 1.5 -> 0.76, 1.25 ->
 #: 0.47 / 0.195 (with the heading of the path), 1 -> diverging).
 TURN_AXIS_BEATS = (1.25, 3.0, 2.0)
+#: Plan the body's pitch command along the turn (:class:`birdsim.flight.pitch_plan.PitchPlan`
+#: from the table's pitch for the track's banked-plane force), as straight flight does,
+#: instead of filtering the table's pitch over 3 wingbeats (lagging the turn's entry).
+#: Measured (lateral loop of 5 wingbeats): s-turn path RMS 0.174 against 0.353, circle
+#: 0.095 both, its steady bank's largest miss 4.6 against 5.9 degrees.
+TURN_PITCH_PLAN = True
 
 
 def turn_command(
@@ -75,4 +81,4 @@ def turn_command(
     return cmd, a_left, (value, rate)
 
 
-__all__ = ["BANK_BEATS", "FF_LEAD", "TURN_AXIS_BEATS", "turn_command"]
+__all__ = ["BANK_BEATS", "FF_LEAD", "TURN_AXIS_BEATS", "TURN_PITCH_PLAN", "turn_command"]
