@@ -32,6 +32,15 @@ from birdsim.flight.bank import TurnAttitude, lateral_acceleration, lateral_fit,
 TWO_PI = 2.0 * math.pi
 #: Time constant (wingbeats) of the filter on the lateral loop's bank correction.
 BANK_BEATS = 0.5
+#: Largest bank correction (rad, 14 degrees) of the lateral loop about the path's planned
+#: bank; the side offset's integral is held while it is reached.  A side gust of 30 %
+#: for a wingbeat in the circle rolls the body 16 degrees past its command with the roll
+#: inputs at their bounds; the lateral loop then asked 70 degrees of correction, the roll
+#: loop (authority-bound against the flapping's damping) lagged it by 30-50 degrees and
+#: the flight diverged.  Bounded at 0.25 rad it is back within 0.3 semispan 16 wingbeats
+#: after the gust (peak 3.1), none saturated; at 0.15: 3.4 and still 3 semispans off 16
+#: wingbeats after.  Undisturbed turns never reach it (circle, s-turn unchanged).
+BANK_CORRECTION_MAX = 0.25
 #: Wingbeats ahead of now that the plan's body rates and accelerations are fed forward.
 FF_LEAD = 0.75
 #: The attitude loop's time constants in a turn (roll, pitch, yaw; wingbeats): the roll
@@ -72,6 +81,9 @@ def turn_command(
     a_left = st.a_lat + lateral_acceleration(y, vy, lat_integral[0])
     up = gravity + st.az_up
     target = math.atan2(-a_left, up) - math.atan2(-st.a_lat, up)
+    if abs(target) > BANK_CORRECTION_MAX:  # a bank the roll loop can reach (anti-windup)
+        target = math.copysign(BANK_CORRECTION_MAX, target)
+        lat_integral[0] -= dt * y
     value, rate, _ = command_filter(*filter_state, target, BANK_BEATS * TWO_PI, dt)
     cmd = turn_attitude(heading, (bank_ff[0] + value, bank_ff[1] + rate, bank_ff[2]), pitch)
     if FF_LEAD > 0.0:
@@ -81,4 +93,11 @@ def turn_command(
     return cmd, a_left, (value, rate)
 
 
-__all__ = ["BANK_BEATS", "FF_LEAD", "TURN_AXIS_BEATS", "TURN_PITCH_PLAN", "turn_command"]
+__all__ = [
+    "BANK_BEATS",
+    "BANK_CORRECTION_MAX",
+    "FF_LEAD",
+    "TURN_AXIS_BEATS",
+    "TURN_PITCH_PLAN",
+    "turn_command",
+]
