@@ -13,9 +13,10 @@ track frame, :class:`birdsim.flight.track.TrackFrame`; the attitude of
   against 0.195 semispan);
 * **rates fed forward** from the plan :data:`FF_LEAD` wingbeats ahead: the moments of
   the attitude loop reach the body late (the inputs' smoothing, the wingbeat-mean
-  response, the one-wingbeat estimate), measured on the circle: lead 0, 0.25, 0.5, 0.75
-  and 1 wingbeat gave 16-wingbeat path RMS 5.0 (diverging), 1.5, 0.82, 0.25 and 0.24
-  semispan (docs/flight.md).
+  response, the one-wingbeat estimate), measured on the circle (first pass, before the
+  attitude gains included the flapping's damping): lead 0, 0.25, 0.5, 0.75 and 1
+  wingbeat gave 16-wingbeat path RMS 5.0 (diverging), 1.5, 0.82, 0.25 and 0.24
+  semispan; with those gains 0.5 is best (:data:`FF_LEAD`; docs/flight.md).
 """
 
 from __future__ import annotations
@@ -42,7 +43,12 @@ BANK_BEATS = 0.5
 #: wingbeats after.  Undisturbed turns never reach it (circle, s-turn unchanged).
 BANK_CORRECTION_MAX = 0.25
 #: Wingbeats ahead of now that the plan's body rates and accelerations are fed forward.
-FF_LEAD = 0.75
+#: 0.75 was chosen before the attitude loop's gains were placed for the flapping's
+#: measured damping (which is now fed forward on the commanded rates: the loop answers
+#: sooner); after that (6-wingbeat ramps, lateral loop 5), leads 0.4, 0.5, 0.6, 0.75,
+#: 0.9 gave circle path RMS 0.079, 0.083, 0.081, 0.095, 0.110 and s-turn 0.114, 0.099,
+#: 0.111, 0.174, - semispan.
+FF_LEAD = 0.5
 #: The attitude loop's time constants in a turn (roll, pitch, yaw; wingbeats): the roll
 #: loop faster than straight flight's 2 (measured on the circle, lateral loop of 10
 #: wingbeats: roll 2 -> path RMS diverging after 20 wingbeats, 1.5 -> 0.76, 1.25 ->
