@@ -139,3 +139,28 @@ def test_a_flock_log_is_refused_in_one_line_by_render(tmp_path, capsys):
     assert main(["render", str(out), "--still", str(tmp_path / "a.png")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "flock" in err[0], err
+
+
+def test_a_bird_with_its_own_path_flies_it(tmp_path):
+    """A bird's own ``path`` replaces the leader's (shifted by its offset): its
+    reference is that path's (z 9 semispans, 3 above the cruise preset's), its start
+    there, and the start-separation check sees it."""
+    own = tmp_path / "high.toml"
+    own.write_text("x0 = -15.707963267948966\n[[keyframe]]\nt = 0\nV = 0.5\nz = 9.0\n")
+    p = tmp_path / "f.toml"
+    p.write_text(
+        'path = "cruise"\n[[bird]]\noffset = [0, 0, 0]\n'
+        f'[[bird]]\npath = "{own.name}"\noffset = [0, 0, 0.5]\n'
+    )
+    flock, jobs = jobs_for(str(p), "m3", seconds=0.2 * SEED)
+    arrays = fly_flock(jobs)
+    np.testing.assert_allclose(arrays["z_ref"][1], 9.5, atol=1e-9)
+    np.testing.assert_allclose(arrays["z_ref"][0], 6.0, atol=1e-9)
+    assert abs(arrays["z"][1, 0] - 9.5) < 0.05
+    # the same start as bird 0's: refused in one line
+    p.write_text(
+        'path = "cruise"\n[[bird]]\noffset = [0, 0, 3]\n'
+        f'[[bird]]\npath = "{own.name}"\noffset = [0, 0, 0]\n'
+    )
+    with pytest.raises(Exception, match="birds 0 and 1 start 0 apart"):
+        jobs_for(str(p), "m3")

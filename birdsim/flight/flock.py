@@ -13,11 +13,15 @@ A flock file (TOML; lengths in the birds' own length unit, e.g. metres)::
     file = "../models/pigeon.toml"   # optional (default: the seed bird); relative to the file
     offset = [0.0, 0.0, 0.0]         # the bird's offset from the leader's path: x forward,
                                      # y left, z up
+    path = "my-path.toml"            # optional: the bird's own path instead of the
+                                     # leader's (then shifted by its offset)
     [[bird]]
     ...
 
 Group rule "follow the leader path with offsets": bird ``i`` flies the leader's path
-shifted by its offset (its start position is the path's start plus the offset).  The
+shifted by its offset (its start position is the path's start plus the offset); a bird
+with its own ``path`` flies that one, shifted by its offset.  Every bird flies for the
+flock's ``seconds`` (default: the leader path's length).  The
 birds of one flock share their semispan and wingbeat period (the path is written in
 reduced units, semispans and wingbeats: the same path in the world for every bird); their
 masses, inertia and tails may differ.  Bad input is one line naming the entry
@@ -50,7 +54,7 @@ MIN_START_SEPARATION = 1.0
 #: The shipped flock preset's file (``birdsim fly flock``).
 PRESET_FOLDER = Path(__file__).resolve().parent.parent / "data" / "flocks"
 FLOCK_KEYS = ("name", "path", "model", "attitude", "seconds", "bird", "description")
-BIRD_KEYS = ("file", "offset")
+BIRD_KEYS = ("file", "offset", "path")
 
 
 class FlockError(BirdsimError):
@@ -65,6 +69,8 @@ class FlockBird:
     index: int
     file: str | None
     offset: tuple[float, float, float]
+    #: the bird's own path (a preset or a path .toml), None: the leader's
+    path: str | None = None
 
 
 @dataclass(frozen=True)
@@ -176,13 +182,19 @@ def _bird_entry(arg: str, folder: Path, i: int, row: Any) -> FlockBird:
         )
     ):
         raise FlockError(f"{where}: offset={off!r}; allowed: three finite numbers [x, y, z]")
+    path = row.get("path")
+    if path is not None:
+        if not isinstance(path, str) or not path:
+            raise FlockError(f"{where}: path={path!r}; allowed: a preset name or a path .toml")
+        if path.endswith(".toml") and not Path(path).is_absolute():
+            path = str(folder / path)
     file = row.get("file")
     if file is not None:
         if not isinstance(file, str) or not file:
             raise FlockError(f"{where}: file={file!r}; allowed: a bird .toml file")
         if not Path(file).is_absolute():
             file = str(folder / file)
-    return FlockBird(i, file, (float(off[0]), float(off[1]), float(off[2])))
+    return FlockBird(i, file, (float(off[0]), float(off[1]), float(off[2])), path)
 
 
 def load_birds(flock: Flock) -> list[Bird]:
@@ -212,9 +224,25 @@ def load_birds(flock: Flock) -> list[Bird]:
     return birds
 
 
+def start_position(flock: Flock, bird: FlockBird, semispan: float) -> tuple[float, ...]:
+    """The bird's start relative to the leader path's start (the bird's length unit)."""
+    if bird.path is None:
+        return bird.offset
+    from birdsim.flight.path import FlightPath
+    from birdsim.flight.path_file import get_flight
+
+    own, lead = get_flight(bird.path, turning=True), get_flight(flock.path, turning=True)
+    if not isinstance(own, FlightPath) or not isinstance(lead, FlightPath):
+        return bird.offset
+    a, b = own.state(0.0), lead.state(0.0)
+    d = ((a.x - b.x) * semispan, (a.y - b.y) * semispan, (a.z - b.z) * semispan)
+    return tuple(o + e for o, e in zip(bird.offset, d))
+
+
 def check_starts(flock: Flock, semispan: float) -> None:
-    """Two start positions (offsets) closer than MIN_START_SEPARATION semispans: one line."""
-    offs = [b.offset for b in flock.birds]
+    """Two start positions closer than MIN_START_SEPARATION semispans: one line.  The
+    start is the offset plus the start of the bird's own path (the leader's: 0)."""
+    offs = [start_position(flock, b, semispan) for b in flock.birds]
     for i in range(len(offs)):
         for j in range(i):
             d = math.dist(offs[i], offs[j])

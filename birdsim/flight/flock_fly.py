@@ -64,21 +64,23 @@ def fly_bird(job: FlockJob) -> dict[str, Any]:
         flock = load_flock(job.source)
         bird = load_birds(flock)[job.index]
         entry = flock.birds[job.index]
-        flight = get_flight(flock.path, turning=True)
+        source = entry.path or flock.path
+        flight = get_flight(source, turning=True)
         if not isinstance(flight, FlightPath) or flight.perch_start or flight.perch_end:
             raise FlockError(
-                f"flock {flock.name!r}: path {flock.path!r}; allowed: a path (position or "
-                "speed keyframes) that neither starts nor ends on the perch"
+                f"flock {flock.name!r}: bird {job.index}: path {source!r}; allowed: a path "
+                "(position or speed keyframes) that neither starts nor ends on the perch"
             )
-        attitude = attitude_for(flight, job.attitude, flock.path)
+        attitude = attitude_for(flight, job.attitude, source)
         dx, dy, dz = (v / bird.semispan for v in entry.offset)
         try:
             path = shifted_path(flight, dx, dz)
         except PathError as exc:
             raise FlockError(f"flock {flock.name!r}: bird {job.index}: {exc}") from None
-        beats = (
-            job.seconds / bird.period if job.seconds is not None else float(path.duration_beats)
-        )
+        if job.seconds is not None:
+            beats = job.seconds / bird.period
+        else:  # every bird for the leader path's length
+            beats = float(get_flight(flock.path, turning=True).duration_beats)
         if beats > MAX_BEATS:
             raise FlockError(f"{beats:g} wingbeats; allowed: at most {MAX_BEATS:g} wingbeats")
         table = load_table_for(bird, job.model, None)
