@@ -45,6 +45,7 @@ def run_flock(args: argparse.Namespace, source: str, seconds: float | None) -> i
     n_jobs = _jobs_arg(args.jobs)
     wall0, cpu0 = time.perf_counter(), time.process_time()
     if n_jobs is None or n_jobs == 1:
+
         def progress(done: int) -> None:
             if not (args.quiet or args.json):
                 print(f"fly {flock.name}: bird {done}/{len(jobs)}", file=sys.stderr)

@@ -128,13 +128,17 @@ def load_flock(source: str) -> Flock:
     if unknown:
         raise FlockError(f"{arg}: key {unknown[0]!r} is unknown; allowed: {', '.join(FLOCK_KEYS)}")
     if not isinstance(data.get("path"), str) or not data["path"]:
-        raise FlockError(f"{arg}: path={data.get('path')!r}; allowed: a preset name or a path .toml")
+        raise FlockError(
+            f"{arg}: path={data.get('path')!r}; allowed: a preset name or a path .toml"
+        )
     path = data["path"]
     if path.endswith(".toml") and not Path(path).is_absolute():
         path = str(p.parent / path)
     rows = data.get("bird")
     if not isinstance(rows, list) or not rows:
-        raise FlockError(f"{arg}: bird must be an array of tables ([[bird]]) with at least one entry")
+        raise FlockError(
+            f"{arg}: bird must be an array of tables ([[bird]]) with at least one entry"
+        )
     if len(rows) > MAX_BIRDS:
         raise FlockError(f"{arg} has {len(rows)} birds; allowed: at most {MAX_BIRDS} birds")
     birds = tuple(_bird_entry(arg, p.parent, i, row) for i, row in enumerate(rows))

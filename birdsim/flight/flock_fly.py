@@ -43,9 +43,7 @@ class FlockJob:
 
 def shifted_path(path: Any, dx: float, dz: float) -> Any:
     """``path`` (a FlightPath, reduced units) moved by dx forward and dz up (semispans)."""
-    kfs = tuple(
-        replace(k, z=k.z + dz, x=None if k.x is None else k.x + dx) for k in path.keyframes
-    )
+    kfs = tuple(replace(k, z=k.z + dz, x=None if k.x is None else k.x + dx) for k in path.keyframes)
     return replace(path, keyframes=kfs, x0=path.x0 + dx)
 
 
@@ -211,9 +209,7 @@ def _per_bird(key: str, v: np.ndarray, arrays: dict[str, np.ndarray]) -> bool:
 def bird_log(arrays: dict[str, np.ndarray], i: int) -> dict[str, np.ndarray]:
     """Bird ``i``'s own log from a flock's (as a one-bird flight's log)."""
     skip = ("n_birds", "offset", "flock")
-    return {
-        k: (v[i] if _per_bird(k, v, arrays) else v) for k, v in arrays.items() if k not in skip
-    }
+    return {k: (v[i] if _per_bird(k, v, arrays) else v) for k, v in arrays.items() if k not in skip}
 
 
 __all__ = [
