@@ -164,3 +164,20 @@ def test_a_bird_with_its_own_path_flies_it(tmp_path):
     )
     with pytest.raises(Exception, match="birds 0 and 1 start 0 apart"):
         jobs_for(str(p), "m3")
+
+
+@pytest.mark.slow  # two worker processes start (~14 s at load 6)
+def test_a_flock_on_the_pool_flies_the_same_birds(tmp_path):
+    """`--jobs 2` (one task per bird in fresh workers) gives the in-process flock's
+    arrays to round-off (1e-9 in the bird's units: a fresh process may sum in another
+    order, birdsim/flight/batch.py)."""
+    from birdsim.flight.batch import local_executor
+
+    src = _flock(tmp_path, [(0.0, 0.0, 0.0), (-2.0, 1.5, 0.0), (-2.0, -1.5, 0.0)])
+    _, jobs = jobs_for(src, "m3", seconds=0.4 * SEED)
+    here = fly_flock(jobs)
+    with local_executor(2) as ex:
+        pool = fly_flock(jobs, ex)
+    assert here.keys() == pool.keys()
+    for k in ("x", "y", "z", "vx", "vz", "qpos", "power"):
+        np.testing.assert_allclose(pool[k], here[k], rtol=0, atol=1e-9, err_msg=k)
