@@ -201,22 +201,30 @@ def _bird_entry(arg: str, folder: Path, i: int, row: Any) -> FlockBird:
     return FlockBird(i, file, (float(off[0]), float(off[1]), float(off[2])), path)
 
 
+def load_bird(flock: Flock, index: int) -> Bird:
+    """Bird ``index`` of the flock; a file that does not parse is one line naming it."""
+    from birdsim.commands.common import default_bird_path
+
+    src = flock.birds[index].file or str(default_bird_path())
+    try:
+        return Bird.from_toml(src)
+    except BirdsimError as exc:
+        raise FlockError(f"flock {flock.name!r}: bird {index} ({src}): {exc}") from None
+    except (OSError, ValueError, TypeError, tomllib.TOMLDecodeError) as exc:
+        raise FlockError(
+            f"flock {flock.name!r}: bird {index} ({src}) does not parse: {exc}"
+        ) from None
+
+
 def load_birds(flock: Flock) -> list[Bird]:
     """Every bird of the flock; a bird file that does not parse is one line naming its
     index.  Checks the shared semispan and period and the start separations."""
-    from birdsim.commands.common import default_bird_path
-
+    cache: dict[str | None, Bird] = {}  # a file shared by many birds parsed once
     birds = []
     for fb in flock.birds:
-        src = fb.file or str(default_bird_path())
-        try:
-            birds.append(Bird.from_toml(src))
-        except BirdsimError as exc:
-            raise FlockError(f"flock {flock.name!r}: bird {fb.index} ({src}): {exc}") from None
-        except (OSError, ValueError, TypeError, tomllib.TOMLDecodeError) as exc:
-            raise FlockError(
-                f"flock {flock.name!r}: bird {fb.index} ({src}) does not parse: {exc}"
-            ) from None
+        if fb.file not in cache:
+            cache[fb.file] = load_bird(flock, fb.index)
+        birds.append(cache[fb.file])
     lead = birds[0]
     for fb, b in zip(flock.birds, birds):
         if not (math.isclose(b.semispan, lead.semispan) and math.isclose(b.period, lead.period)):
@@ -266,6 +274,7 @@ __all__ = [
     "FlockError",
     "check_starts",
     "is_flock",
+    "load_bird",
     "load_birds",
     "load_flock",
     "preset_names",

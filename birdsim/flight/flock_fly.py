@@ -24,7 +24,7 @@ from typing import Any
 import numpy as np
 
 from birdsim.errors import BirdsimError
-from birdsim.flight.flock import Flock, FlockError, load_birds, load_flock
+from birdsim.flight.flock import Flock, FlockError, load_bird, load_birds, load_flock
 
 #: Log keys that are not per-sample arrays although one-dimensional.
 _NOT_SAMPLES = ("param_names",)
@@ -59,8 +59,8 @@ def fly_bird(job: FlockJob) -> dict[str, Any]:
     from birdsim.flight.simulate import SimConfig
 
     try:
-        flock = load_flock(job.source)
-        bird = load_birds(flock)[job.index]
+        flock = load_flock(job.source)  # checked as a whole by jobs_for
+        bird = load_bird(flock, job.index)
         entry = flock.birds[job.index]
         source = entry.path or flock.path
         flight = get_flight(source, turning=True)
