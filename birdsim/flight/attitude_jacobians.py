@@ -34,6 +34,28 @@ JAC_SAMPLES = 16
 JAC_STEP = 0.02
 
 
+def _hold(
+    m: mujoco.MjModel,
+    d: mujoco.MjData,
+    qpos: np.ndarray,
+    qvel: np.ndarray,
+    quat: np.ndarray,
+    speed: float,
+    omega_mj: np.ndarray,
+) -> None:
+    """Pose the model at one prescription row with the body held: at (0, 0, 6), turned by
+    ``quat``, moving at ``speed`` along world x and turning at ``omega_mj`` (MuJoCo body
+    axes); positions and velocities forward (the callback's passive forces need no more)."""
+    d.qpos[:] = qpos
+    d.qvel[:] = qvel
+    d.qpos[:3] = (0.0, 0.0, 6.0)
+    d.qpos[3:7] = quat
+    d.qvel[:3] = (speed, 0.0, 0.0)
+    d.qvel[3:6] = omega_mj
+    mujoco.mj_fwdPosition(m, d)
+    mujoco.mj_fwdVelocity(m, d)
+
+
 def measured_jacobian(
     fb, params: np.ndarray, pitch: float, speed: float, omega_body: np.ndarray | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
@@ -69,21 +91,12 @@ def measured_jacobian(
         shoulder=(sw, np.zeros_like(sw), np.zeros_like(sw)),
     )
     out = []
-    fwd_pos, fwd_vel = mujoco.mj_fwdPosition, mujoco.mj_fwdVelocity
     try:
         for i in range(k_in):
             cb.tail_controls = split[i][3]
             acc = np.zeros(3)
             for k in range(i * n, (i + 1) * n):
-                d.qpos[:] = pres.qpos[k]
-                d.qvel[:] = pres.qvel[k]
-                d.qpos[:3] = (0.0, 0.0, 6.0)
-                d.qpos[3:7] = quat
-                d.qvel[:3] = (speed, 0.0, 0.0)
-                d.qvel[3:6] = omega_mj
-                # the passive forces (the callback) need only positions and velocities
-                fwd_pos(m, d)
-                fwd_vel(m, d)
+                _hold(m, d, pres.qpos[k], pres.qvel[k], quat, speed, omega_mj)
                 acc += d.qfrc_passive[3:6]
             out.append(acc / n * np.array([1.0, -1.0, -1.0]))
     finally:
@@ -151,14 +164,7 @@ def measured_with_rocking(
             cb.tail_controls = sp[3]
             for k in range(n):
                 row = i * n + k
-                d.qpos[:] = pres.qpos[row]
-                d.qvel[:] = pres.qvel[row]
-                d.qpos[:3] = (0.0, 0.0, 6.0)
-                d.qpos[3:7] = quat
-                d.qvel[:3] = (speed, 0.0, 0.0)
-                d.qvel[3:6] = omega * c
-                mujoco.mj_fwdPosition(m, d)
-                mujoco.mj_fwdVelocity(m, d)
+                _hold(m, d, pres.qpos[row], pres.qvel[row], quat, speed, omega * c)
                 mom[i, k] = d.qfrc_passive[3:6] * c
                 vec[:] = d.qvel
                 vec[:6] = 0.0  # the wings' motion relative to the torso
@@ -233,14 +239,7 @@ def measured_rate_derivatives(
         for omega in states:
             acc = np.zeros(3)
             for k in range(n):
-                d.qpos[:] = pres.qpos[k]
-                d.qvel[:] = pres.qvel[k]
-                d.qpos[:3] = (0.0, 0.0, 6.0)
-                d.qpos[3:7] = quat
-                d.qvel[:3] = (speed, 0.0, 0.0)
-                d.qvel[3:6] = omega * c
-                mujoco.mj_fwdPosition(m, d)
-                mujoco.mj_fwdVelocity(m, d)
+                _hold(m, d, pres.qpos[k], pres.qvel[k], quat, speed, omega * c)
                 acc += d.qfrc_passive[3:6]
             out.append(acc / n * c)
     finally:
