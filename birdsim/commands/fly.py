@@ -124,7 +124,7 @@ def legs_check(flight: object, name: str, args: argparse.Namespace) -> None:
     perched = isinstance(flight, FlightPath) and (flight.perch_start != flight.perch_end)
     if not perched:
         raise BirdsimError(
-            f"--legs with {name!r}; allowed: a path that starts or ends (not both) at rest on the perch, e.g. take-off or landing"
+            f"--legs with {name!r}; allowed: a path that starts or ends (not both) at rest on a perch or the ground, e.g. take-off or landing"
         )
     for flag, bad in (
         ("--gust", args.gust),

@@ -118,7 +118,7 @@ def fly_reference(
 
         if not (isinstance(reference, FlightPath) and reference.perch_start != reference.perch_end):
             raise BirdsimError(
-                f"--legs with {reference.name!r}; allowed: a path that starts or ends (not both) at rest on the perch, e.g. take-off or landing"
+                f"--legs with {reference.name!r}; allowed: a path that starts or ends (not both) at rest on a perch or the ground, e.g. take-off or landing"
             )
         if gusts or args.open_loop:
             raise BirdsimError("--legs with --gust or --open-loop; allowed: --legs alone")
