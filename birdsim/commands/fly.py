@@ -117,14 +117,14 @@ def parse_seconds(raw: str | None) -> float | None:
 
 
 def legs_check(flight: object, name: str, args: argparse.Namespace) -> None:
-    """``--legs`` needs a path starting or ending at rest on the perch (not both), no
+    """``--legs`` needs a path starting or ending at rest on a perch or the ground, no
     gusts, no --seconds, closed loop."""
     from birdsim.flight.path import FlightPath
 
-    perched = isinstance(flight, FlightPath) and (flight.perch_start != flight.perch_end)
+    perched = isinstance(flight, FlightPath) and (flight.perch_start or flight.perch_end)
     if not perched:
         raise BirdsimError(
-            f"--legs with {name!r}; allowed: a path that starts or ends (not both) at rest on a perch or the ground, e.g. take-off or landing"
+            f"--legs with {name!r}; allowed: a path that starts or ends at rest on a perch or the ground, e.g. take-off or landing"
         )
     for flag, bad in (
         ("--gust", args.gust),

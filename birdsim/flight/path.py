@@ -112,7 +112,9 @@ class FlightPath:
     position at the first keyframe in the speed form [s] (ignored on a perch: a
     speed-form path starting or ending on a perch is placed so that it does on the
     scene's first perch; a start or end at rest on the ground keeps x0, y0);
-    ``scene``: the perches (:mod:`birdsim.mujoco.perches`; default the presets' one)."""
+    ``scene``: the perches (:mod:`birdsim.mujoco.perches`; default the presets' one);
+    ``low_end``: the last segment may come down to the ground's rest height (a landing's
+    hover over the ground before the touchdown, :mod:`birdsim.flight.perch_landing`)."""
 
     name: str
     duration_beats: float
@@ -123,6 +125,7 @@ class FlightPath:
     x0: float = 0.0
     y0: float = 0.0
     scene: Scene = DEFAULT_SCENE
+    low_end: bool = False
     _x: PPoly = field(init=False, repr=False, compare=False)
     _y: PPoly | None = field(init=False, repr=False, compare=False)
     _z: PPoly = field(init=False, repr=False, compare=False)

@@ -92,7 +92,7 @@ def check_obstacles(path: Any) -> None:
     # next to an end at rest on the ground the body comes down to it
     if supports[0] == "ground":
         floor[tb <= (ks[1].t if len(ks) > 1 else np.inf)] = GROUND_REST_Z
-    if supports[1] == "ground":
+    if supports[1] == "ground" or getattr(path, "low_end", False):
         floor[tb >= (ks[-2].t if len(ks) > 1 else -np.inf)] = GROUND_REST_Z
     low = s["z"] < floor - 1e-9
     checks = [(low, f"below the floor clearance z >= {FLOOR_CLEARANCE:g} semispans")]

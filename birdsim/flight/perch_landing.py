@@ -28,7 +28,7 @@ from birdsim.flight.contact import REST_WINGS, ContactBird
 from birdsim.flight.freeflight import FlightResult, fly
 from birdsim.flight.legwork import touchdown, touchdown_speed
 from birdsim.flight.path import FlightPath, PathKeyframe
-from birdsim.flight.path_checks import PERCH_X
+from birdsim.flight.path_checks import PERCH_X, rest_supports
 from birdsim.flight.perched import (
     PERCH_TOP,
     STAND_PITCH,
@@ -61,16 +61,32 @@ def touchdown_pose(
 
 def landing_path(preset: FlightPath, z_hover: float, x_td: float = PERCH_X) -> FlightPath:
     """The preset's landing ending in a hover at ``z_hover`` over the touchdown point
-    (module docstring); the approach no lower than the hover."""
+    (module docstring); the approach from its highest keyframe on no lower than the
+    hover."""
     end = preset.keyframes[-1]
-    keys = [replace(k, z=max(k.z, z_hover)) for k in preset.keyframes[:-1]]
+    low = rest_supports(preset)[1] == "ground"
+    # the approach from its highest keyframe on no lower than the hover
+    top = int(np.argmax([k.z for k in preset.keyframes[:-1]])) if len(preset.keyframes) > 1 else 0
+    keys = [
+        k if i < top else replace(k, z=max(k.z, z_hover))
+        for i, k in enumerate(preset.keyframes[:-1])
+    ]
     if preset.form == "position":
         keys.append(PathKeyframe(end.t, z_hover, x=x_td, vx=0.0, y=end.y, vy=0.0, regime="hover"))
         return FlightPath(
-            preset.name, end.t, False, False, tuple(keys), preset.description, scene=preset.scene
+            preset.name,
+            end.t,
+            False,
+            False,
+            tuple(keys),
+            preset.description,
+            scene=preset.scene,
+            low_end=low,
         )
     keys.append(PathKeyframe(end.t, z_hover, V=0.0, regime="hover"))
-    draft = FlightPath(preset.name, end.t, False, False, tuple(keys), scene=preset.scene)
+    draft = FlightPath(
+        preset.name, end.t, False, False, tuple(keys), scene=preset.scene, low_end=low
+    )
     x_end = float(draft.state(end.t * TWO_PI).x)
     return FlightPath(
         preset.name,
@@ -81,6 +97,7 @@ def landing_path(preset: FlightPath, z_hover: float, x_td: float = PERCH_X) -> F
         preset.description,
         x0=x_td - x_end,
         scene=preset.scene,
+        low_end=low,
     )
 
 

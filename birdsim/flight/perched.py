@@ -92,7 +92,10 @@ def liftoff_path(
     rise = vz**2 / (2.0 * CLIMB_DECELERATION * gravity)
     t_apex = 2.0 * rise / vz / TWO_PI if vz > 0 else 1.0
     z_apex = float(position[2]) + rise
-    later = [k for k in preset.keyframes if k.t > t_apex and k.z > z_apex]
+    # the preset's keyframes from the first one later and higher than the apex on
+    ks = preset.keyframes
+    j = next((i for i, k in enumerate(ks) if k.t > t_apex and k.z > z_apex), len(ks))
+    later = ks[j:] if j < len(ks) else ks[-1:] if preset.perch_end else ()
     s1 = preset.state(t_apex * TWO_PI)
     if preset.form == "position":  # the lift-off's x, then the preset's x at the apex
         x_apex = max(float(s1.x), float(position[0]))
@@ -103,17 +106,23 @@ def liftoff_path(
                 x=float(position[0]),
                 vx=float(velocity[0]),
                 vz=vz,
-                y=float(position[1]) or None,
+                y=float(position[1]) if preset.is_3d else None,
                 regime="lift-off",
             ),
-            PathKeyframe(t_apex, z_apex, x=x_apex, y=float(s1.y) or None, regime="climb-out"),
+            PathKeyframe(
+                t_apex,
+                z_apex,
+                x=x_apex,
+                y=float(s1.y) if preset.is_3d else None,
+                regime="climb-out",
+            ),
             *later,
         )
         return FlightPath(
             preset.name,
             preset.duration_beats,
             False,
-            False,
+            preset.perch_end,
             keys,
             preset.description,
             scene=preset.scene,
@@ -129,7 +138,7 @@ def liftoff_path(
         preset.name,
         preset.duration_beats,
         False,
-        False,
+        preset.perch_end,
         keys,
         preset.description,
         x0=float(position[0]),
@@ -202,8 +211,9 @@ def take_off(
     progress: Any = None,
     trim: bool = False,
 ) -> FlightResult:
-    """Stand, jump and fly ``preset`` (a path starting at rest on the perch): the
-    joined log (reduced units) with ``foot_force``, ``on_perch``, ``phase``; figures in
+    """Stand, jump and fly ``preset`` (a path starting at rest on a perch or the
+    ground; one that also ends at rest lands there: :func:`~birdsim.flight.perch_landing.land`,
+    its figures in ``meta["legs"]["landing"]``): the joined log (reduced units) with ``foot_force``, ``on_perch``, ``phase``; figures in
     ``meta["legs"]``."""
     red = reduced_bird(bird)
     surface = rest_surface(preset, 0)
@@ -231,24 +241,33 @@ def take_off(
         if abs(pitch1 - pitch0) < 1e-3:
             break
         params0, pitch0 = params1, pitch1
-    result = fly(
-        path,
-        table,
-        bird,
-        model,
-        config=replace(config, legs=True),
-        progress=progress,
-        trim=trim,
-    )
-    flight = dict(result.arrays)
-    n = len(flight["t"])
-    flight["foot_force"] = np.zeros(n)
-    flight["on_perch"] = np.zeros(n, dtype=bool)
-    flight["phase"] = np.array(["flight"] * n)
+    landing: dict | None = None
+    if preset.perch_end:  # at rest at both ends: the flight ends in a touchdown
+        from birdsim.flight.perch_landing import land
+
+        result = land(path, table, bird, model, config=config, progress=progress)
+        flight = dict(result.arrays)
+        landing = dict(result.meta.get("legs", {}))
+    else:
+        result = fly(
+            path,
+            table,
+            bird,
+            model,
+            config=replace(config, legs=True),
+            progress=progress,
+            trim=trim,
+        )
+        flight = dict(result.arrays)
+        n = len(flight["t"])
+        flight["foot_force"] = np.zeros(n)
+        flight["on_perch"] = np.zeros(n, dtype=bool)
+        flight["phase"] = np.array(["flight"] * n)
     keep = rows["t"] < jr.liftoff_time - 1e-12
     rows = {k: v[keep] for k, v in rows.items()}
     joined = _join(rows, flight, jr.liftoff_time)
-    e = np.hypot(flight["x"] - flight["x_ref"], flight["z"] - flight["z_ref"])
+    fl = flight["phase"] == "flight"
+    e = np.hypot(flight["x"] - flight["x_ref"], flight["z"] - flight["z_ref"])[fl]
     start = flight["qpos"][0, :3]
     meta = dict(result.meta)
     meta["legs"] = {
@@ -263,6 +282,8 @@ def take_off(
         "first_pitch_deg": math.degrees(pitch0),
         "root_applied_max_contact": jr.root_applied_max,
     }
+    if landing is not None:
+        meta["legs"]["landing"] = landing
     return FlightResult(
         joined,
         bird,

@@ -119,7 +119,7 @@ def check_scene(scene: Scene, where: str = "scene") -> None:
     for i, a in enumerate(scene.perches, 1):
         for j, b in enumerate(scene.perches[i:], i + 1):
             gap = math.hypot(a.x - b.x, max(0.0, abs(a.y - b.y) - 2.0 * BAR_HALF_LENGTH))
-            if gap < PERCH_GAP:
+            if gap < PERCH_GAP - 1e-9:
                 raise SceneError(
                     f"{where}: perch {j} at x={b.x:g}, y={b.y:g} is inside perch {i} at "
                     f"x={a.x:g}, y={a.y:g} (bars {gap:.3g} semispans apart); allowed: bars at "
