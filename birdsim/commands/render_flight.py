@@ -215,6 +215,8 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
         dataclasses.replace(options, seconds=None) if reference is not None else options,
         title=name,
     )
+    if getattr(reference, "scene", None) is not None:  # the path file's perches
+        states = dataclasses.replace(states, perches=reference.scene)
 
     if at is not None:
         from birdsim.render.renderer import write_png
