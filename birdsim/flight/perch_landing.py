@@ -153,7 +153,13 @@ def land(
         cb.d.qvel[:3] = v_com
         cb.time = float(a["t"][i])
         td = touchdown(
-            cb, surface, None, STAND_BEATS, pitch_to=STAND_PITCH, fold=(stopped, REST_WINGS)
+            cb,
+            surface,
+            None,
+            STAND_BEATS,
+            pitch_to=STAND_PITCH,
+            fold=(stopped, REST_WINGS),
+            balance=config.attitude == "free",
         )
         rows = _contact_rows(td.record, cb, np.array([a[n][i] for n in result.param_names]), every)
     flight = {k: np.asarray(v)[: i + 1] for k, v in a.items()}
