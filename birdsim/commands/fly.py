@@ -142,8 +142,10 @@ def fly_with_legs(flight, table, bird, model, attitude, progress):  # type: igno
     from birdsim.flight.perched import take_off
     from birdsim.flight.simulate import SimConfig
 
-    run = take_off if flight.perch_start else land
-    return run(flight, table, bird, model, config=SimConfig(attitude=attitude), progress=progress)
+    config = SimConfig(attitude=attitude)
+    if flight.perch_start:  # (and at rest at the end too: the flight ends in a touchdown)
+        return take_off(flight, table, bird, model, config=config, progress=progress, land=land)
+    return land(flight, table, bird, model, config=config, progress=progress)
 
 
 def legs_summary(legs: dict, bird: object) -> dict:

@@ -210,11 +210,13 @@ def take_off(
     profile: JumpProfile | None = None,
     progress: Any = None,
     trim: bool = False,
+    land: Any = None,
 ) -> FlightResult:
     """Stand, jump and fly ``preset`` (a path starting at rest on a perch or the
-    ground; one that also ends at rest lands there: :func:`~birdsim.flight.perch_landing.land`,
-    its figures in ``meta["legs"]["landing"]``): the joined log (reduced units) with ``foot_force``, ``on_perch``, ``phase``; figures in
-    ``meta["legs"]``."""
+    ground; one that also ends at rest lands there with ``land``, i.e.
+    :func:`~birdsim.flight.perch_landing.land`, its figures in
+    ``meta["legs"]["landing"]``): the joined log (reduced units) with ``foot_force``,
+    ``on_perch``, ``phase``; figures in ``meta["legs"]``."""
     red = reduced_bird(bird)
     surface = rest_surface(preset, 0)
     params0, pitch0 = first_wingbeat(preset, table, red)
@@ -243,8 +245,8 @@ def take_off(
         params0, pitch0 = params1, pitch1
     landing: dict | None = None
     if preset.perch_end:  # at rest at both ends: the flight ends in a touchdown
-        from birdsim.flight.perch_landing import land
-
+        if land is None:
+            raise ValueError(f"path {preset.name!r} ends at rest: take_off needs land=")
         result = land(path, table, bird, model, config=config, progress=progress)
         flight = dict(result.arrays)
         landing = dict(result.meta.get("legs", {}))
