@@ -30,7 +30,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         "manoeuvre",
         metavar="MANOEUVRE",
         nargs="*",
-        help="a preset (hover, cruise, take-off, landing) or a manoeuvre .toml file; several: a batch (--out is then a folder)",
+        help="a preset (hover, cruise, take-off, landing, flock) or a manoeuvre or flock .toml file; several: a batch (--out is then a folder)",
     )
     p.add_argument(
         "--batch",
@@ -181,6 +181,12 @@ def run(args: argparse.Namespace) -> int:
             "no MANOEUVRE; allowed: a preset, a manoeuvre .toml file, several, or --batch FILE"
         )
     seconds = parse_seconds(args.seconds)
+    from birdsim.flight.flock import is_flock
+
+    if len(sources) == 1 and not args.batch and is_flock(sources[0]):  # a flock (issue 27)
+        from birdsim.commands.fly_flock import run_flock
+
+        return run_flock(args, sources[0], seconds)
     if len(sources) > 1 or args.batch or args.jobs is not None or args.dask is not None:
         from birdsim.commands.fly_batch import run_many
 

@@ -85,9 +85,22 @@ RATE_CANCEL = True
 ROCKING = False
 #: Regularisation of the allocation (relative to the inputs' bounds).
 LAMBDA = 1e-4
-#: The integral's share of the moment is bounded by this many times the inertia x
-#: omega_a^2 x 0.1 rad (anti-windup).
+#: The integral's share of the moment (per unit inertia) is bounded by this many radians
+#: times omega_a^2 (anti-windup) ...
 INTEGRAL_LIMIT_RAD = 0.5
+#: ... or, with INTEGRAL_AUTHORITY, by the moment the axis's inputs deliver at their
+#: bounds (per unit inertia) where that is larger (:func:`integral_bound`).  The bias the
+#: integral holds (the flown wingbeat-mean moment minus the held body's ``M_0``) is a
+#: moment, not an angle times the inertia: in the pigeon's free cruise (pitch inertia
+#: 0.78 reduced with the wings, a quarter of the seed's; pitch loop at 3 wingbeats) the
+#: flown wingbeat-mean pitching moment sat 0.002-0.008 table units below the held body's
+#: prediction (0.001-0.005 with a five times larger inertia), above the bound's 0.0025,
+#: and the integral was at its bound in 56 % of the control steps (landing 52 %; the
+#: seed bird's presets: never).  Off: with it the pigeon's cruise improved (0.0187 ->
+#: 0.0089 m, pitch 14.9 -> 6.6 deg RMS) but its landing did not (0.068 -> 0.101 m), and
+#: the seed bird's side gust came back more slowly; measured in docs/flight.md ("The
+#: pigeon's attitude, third stage").
+INTEGRAL_AUTHORITY = False
 
 
 def euler_zyx(quat: np.ndarray) -> np.ndarray:
@@ -165,6 +178,30 @@ def damped_gains(omega_a: np.ndarray, damping: np.ndarray) -> AttitudeGains:
     return AttitudeGains(wa, 2.0 * p * wa + wa * wa, p + 2.0 * wa - c, p * wa * wa)
 
 
+def integral_bound(
+    omega_a: np.ndarray,
+    jac: np.ndarray,
+    lo: np.ndarray,
+    hi: np.ndarray,
+    inertia: np.ndarray,
+    authority: bool = INTEGRAL_AUTHORITY,
+) -> np.ndarray:
+    """Per axis (roll, pitch, yaw) bound of the attitude integral's share of the demand,
+    per unit inertia (1 / time unit^2): :data:`INTEGRAL_LIMIT_RAD` ``omega_a^2``; with
+    ``authority`` the moment the axis's own inputs (:data:`SYM_INPUTS` for pitch,
+    :data:`LAT_INPUTS` for roll and yaw) deliver at their bounds, ``sum_j |J_ij| (hi_j -
+    lo_j) / 2``, divided by ``inertia``, where that is larger."""
+    lim = INTEGRAL_LIMIT_RAD * np.asarray(omega_a, dtype=float) ** 2
+    if not authority:
+        return lim
+    half = (np.asarray(hi, dtype=float) - np.asarray(lo, dtype=float)) / 2
+    auth = np.zeros(3)
+    for rows, cols in ((SYM_ROWS, SYM_INPUTS), (LAT_ROWS, LAT_INPUTS)):
+        for r in rows:
+            auth[r] = float(np.abs(np.asarray(jac)[r, cols]) @ half[cols])
+    return np.maximum(lim, auth / np.asarray(inertia, dtype=float))
+
+
 class AttitudeLoop:
     """The inner loop for one flight (see the module docstring)."""
 
@@ -197,8 +234,16 @@ class AttitudeLoop:
             return
         m0, jac = self._measure(params, pitch, speed, None)
         self._jac = (speed, m0, jac, pitch)
-        lim = INTEGRAL_LIMIT_RAD * self.gains.omega_a**2
+        lim = self.integral_limit(self.gains.omega_a, jac, params)
         self.integral = np.clip((m0 - np.asarray(moment)) / self.inertia, -lim, lim)
+
+    def integral_limit(
+        self, omega_a: np.ndarray, jac: np.ndarray, params: np.ndarray
+    ) -> np.ndarray:
+        """Per axis bound of the integral's share (per unit inertia): :func:`integral_bound`
+        with this loop's inertia and the inputs' bounds at ``params``."""
+        lo, hi = self.bounds(params)
+        return integral_bound(omega_a, jac, lo, hi, self.inertia, INTEGRAL_AUTHORITY)
 
     def _measure(
         self, params: np.ndarray, pitch: float, speed: float, turn: np.ndarray | None
@@ -278,7 +323,7 @@ class AttitudeLoop:
         d_used = self.rate_jac if RATE_CANCEL else np.zeros((3, 3))
         damping = np.maximum(-np.diag(d_used), 0.0)
         g = damped_gains(self.gains.omega_a, damping / self.inertia)
-        lim = INTEGRAL_LIMIT_RAD * g.omega_a**2
+        lim = self.integral_limit(g.omega_a, jac, params)
         if not self.saturated:  # anti-windup: frozen while the inputs are at their bounds
             self.integral = np.clip(self.integral + dt * g.ki * err, -lim, lim)
         rate_err = (0.0 if rate_cmd is None else rate_cmd) - rates
@@ -321,6 +366,7 @@ __all__ = [
     "AttitudeLoop",
     "attitude_gains",
     "euler_zyx",
+    "integral_bound",
     "JAC_SAMPLES",
     "JAC_STEP",
     "SHOULDER_BOUND",

@@ -172,9 +172,15 @@ def lateral_fit(window: list, per_beat: int) -> tuple[float, float]:
     return float(y), float(vy)
 
 
-#: The lateral path loop of a turn: a critically damped pair of LATERAL_BEATS wingbeats
-#: per time constant (the roll loop inside it has 2).
-LATERAL_BEATS = 10.0
+#: The lateral path loop of a turn: a triple pole of LATERAL_BEATS wingbeats per time
+#: constant (the roll loop inside it has 1.25).  Measured on the circle (6-wingbeat ramps,
+#: the damping-placed attitude gains, lead 0.75): 14, 10, 7, 6, 5, 4 wingbeats gave path
+#: RMS 0.35, 0.17, 0.14, 0.10, 0.095, 0.11 semispan, the steady bank's largest miss of
+#: atan(a_c/g) 2.9, 4.0, 3.4, 3.4, 4.6, 6.4 degrees (the faster loop bends the flown path
+#: more); with the lead of 0.5: 6 -> circle 0.083 / 2.9 degrees, s-turn 0.107; 5 -> 0.083
+#: / 3.5 degrees, s-turn 0.099 (6 kept: the coordination target; the side gust's peak
+#: 2.7 against 3.3 semispans).
+LATERAL_BEATS = 6.0
 
 
 def lateral_acceleration(y: float, vy: float, integral: float = 0.0, omega: float = 1.0) -> float:

@@ -27,7 +27,7 @@ from birdsim.flight.pitch_plan import PitchPlan, feedforward_pitch
 from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
 from birdsim.flight.track import TrackFrame, is_three_d
 from birdsim.flight.trim import sample_reference, trim_start
-from birdsim.flight.turning import TURN_AXIS_BEATS, turn_command
+from birdsim.flight.turning import TURN_AXIS_BEATS, TURN_PITCH_PLAN, turn_command
 from birdsim.flight.wingbeat import INPUT_SMOOTHING_BEATS, WingbeatSchedule
 from birdsim.physics.bird import Bird
 from birdsim.physics.units import reduced_bird, scales
@@ -220,7 +220,7 @@ def fly(
             else None
         )
         plan = None
-        if compensate and track is None and PITCH_PLAN and "pitch" in names:
+        if compensate and (track is None or TURN_PITCH_PLAN) and PITCH_PLAN and "pitch" in names:
             plan = PitchPlan(
                 feedforward_pitch(ctl, path, names),
                 n_ctl,

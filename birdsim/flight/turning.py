@@ -13,9 +13,10 @@ track frame, :class:`birdsim.flight.track.TrackFrame`; the attitude of
   against 0.195 semispan);
 * **rates fed forward** from the plan :data:`FF_LEAD` wingbeats ahead: the moments of
   the attitude loop reach the body late (the inputs' smoothing, the wingbeat-mean
-  response, the one-wingbeat estimate), measured on the circle: lead 0, 0.25, 0.5, 0.75
-  and 1 wingbeat gave 16-wingbeat path RMS 5.0 (diverging), 1.5, 0.82, 0.25 and 0.24
-  semispan (docs/flight.md).
+  response, the one-wingbeat estimate), measured on the circle (first pass, before the
+  attitude gains included the flapping's damping): lead 0, 0.25, 0.5, 0.75 and 1
+  wingbeat gave 16-wingbeat path RMS 5.0 (diverging), 1.5, 0.82, 0.25 and 0.24
+  semispan; with those gains 0.5 is best (:data:`FF_LEAD`; docs/flight.md).
 """
 
 from __future__ import annotations
@@ -32,13 +33,33 @@ from birdsim.flight.bank import TurnAttitude, lateral_acceleration, lateral_fit,
 TWO_PI = 2.0 * math.pi
 #: Time constant (wingbeats) of the filter on the lateral loop's bank correction.
 BANK_BEATS = 0.5
+#: Largest bank correction (rad, 14 degrees) of the lateral loop about the path's planned
+#: bank; the side offset's integral is held while it is reached.  A side gust of 30 %
+#: for a wingbeat in the circle rolls the body 16 degrees past its command with the roll
+#: inputs at their bounds; the lateral loop then asked 70 degrees of correction, the roll
+#: loop (authority-bound against the flapping's damping) lagged it by 30-50 degrees and
+#: the flight diverged.  Bounded at 0.25 rad it is back within 0.3 semispan 16 wingbeats
+#: after the gust (peak 3.1), none saturated; at 0.15: 3.4 and still 3 semispans off 16
+#: wingbeats after.  Undisturbed turns never reach it (circle, s-turn unchanged).
+BANK_CORRECTION_MAX = 0.25
 #: Wingbeats ahead of now that the plan's body rates and accelerations are fed forward.
-FF_LEAD = 0.75
+#: 0.75 was chosen before the attitude loop's gains were placed for the flapping's
+#: measured damping (which is now fed forward on the commanded rates: the loop answers
+#: sooner); after that (6-wingbeat ramps, lateral loop 5), leads 0.4, 0.5, 0.6, 0.75,
+#: 0.9 gave circle path RMS 0.079, 0.083, 0.081, 0.095, 0.110 and s-turn 0.114, 0.099,
+#: 0.111, 0.174, - semispan.
+FF_LEAD = 0.5
 #: The attitude loop's time constants in a turn (roll, pitch, yaw; wingbeats): the roll
 #: loop faster than straight flight's 2 (measured on the circle, lateral loop of 10
 #: wingbeats: roll 2 -> path RMS diverging after 20 wingbeats, 1.5 -> 0.76, 1.25 ->
 #: 0.47 / 0.195 (with the heading of the path), 1 -> diverging).
 TURN_AXIS_BEATS = (1.25, 3.0, 2.0)
+#: Plan the body's pitch command along the turn (:class:`birdsim.flight.pitch_plan.PitchPlan`
+#: from the table's pitch for the track's banked-plane force), as straight flight does,
+#: instead of filtering the table's pitch over 3 wingbeats (lagging the turn's entry).
+#: Measured (lateral loop of 5 wingbeats): s-turn path RMS 0.174 against 0.353, circle
+#: 0.095 both, its steady bank's largest miss 4.6 against 5.9 degrees.
+TURN_PITCH_PLAN = True
 
 
 def turn_command(
@@ -66,6 +87,9 @@ def turn_command(
     a_left = st.a_lat + lateral_acceleration(y, vy, lat_integral[0])
     up = gravity + st.az_up
     target = math.atan2(-a_left, up) - math.atan2(-st.a_lat, up)
+    if abs(target) > BANK_CORRECTION_MAX:  # a bank the roll loop can reach (anti-windup)
+        target = math.copysign(BANK_CORRECTION_MAX, target)
+        lat_integral[0] -= dt * y
     value, rate, _ = command_filter(*filter_state, target, BANK_BEATS * TWO_PI, dt)
     cmd = turn_attitude(heading, (bank_ff[0] + value, bank_ff[1] + rate, bank_ff[2]), pitch)
     if FF_LEAD > 0.0:
@@ -75,4 +99,11 @@ def turn_command(
     return cmd, a_left, (value, rate)
 
 
-__all__ = ["BANK_BEATS", "FF_LEAD", "TURN_AXIS_BEATS", "turn_command"]
+__all__ = [
+    "BANK_BEATS",
+    "BANK_CORRECTION_MAX",
+    "FF_LEAD",
+    "TURN_AXIS_BEATS",
+    "TURN_PITCH_PLAN",
+    "turn_command",
+]

@@ -1,0 +1,225 @@
+"""Flying a flock (:mod:`birdsim.flight.flock`): every bird its own free flight along the
+leader's path shifted by its offset, and the flock's log with a leading bird axis.
+
+Each bird is flown by :func:`birdsim.flight.freeflight.fly` (its own MuJoCo model, its
+own controller), one after another in this process or one task per bird on the batch
+executor (:mod:`birdsim.flight.batch`, fresh worker processes).  The birds do not act on
+one another in the "follow the leader path with offsets" rule (no contacts in free
+flight, no wake interaction in the quasi-steady aerodynamics), so flying them in turn or
+in lockstep gives the same flights.
+
+Offsets: x and z shift the path itself (the bird flies from and along the shifted path);
+y is applied by translation of the flown state (``y``, ``y_ref``, ``qpos[..., 1]``): the
+free-flight loop flies paths in the x-z plane at y = 0 (a path with a side offset is a
+3-D path, flown by the turning loop with the attitude free), and nothing in free flight
+depends on y (uniform gravity and wind, contacts off), so this is exact.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+from typing import Any
+
+import numpy as np
+
+from birdsim.errors import BirdsimError
+from birdsim.flight.flock import Flock, FlockError, load_bird, load_birds, load_flock
+
+#: Log keys that are not per-sample arrays although one-dimensional.
+_NOT_SAMPLES = ("param_names",)
+
+
+@dataclass(frozen=True)
+class FlockJob:
+    """One bird of a flock (picklable: the flock file's source and numbers)."""
+
+    source: str
+    index: int
+    model: str
+    attitude: str | None = None
+    seconds: float | None = None
+
+
+def shifted_path(path: Any, dx: float, dz: float) -> Any:
+    """``path`` (a FlightPath, reduced units) moved by dx forward and dz up (semispans)."""
+    kfs = tuple(replace(k, z=k.z + dz, x=None if k.x is None else k.x + dx) for k in path.keyframes)
+    return replace(path, keyframes=kfs, x0=path.x0 + dx)
+
+
+def fly_bird(job: FlockJob) -> dict[str, Any]:
+    """Fly bird ``job.index`` of the flock: {"index", "arrays", "info"} or {"index", "error"}
+    (one line naming the bird).  Top level and picklable for every executor."""
+    from birdsim.commands.common import load_table_for
+    from birdsim.flight.flightlog import log_arrays, summary
+    from birdsim.flight.freeflight import fly
+    from birdsim.flight.manoeuvre import MAX_BEATS
+    from birdsim.flight.path import FlightPath, PathError
+    from birdsim.flight.path_file import attitude_for, get_flight
+    from birdsim.flight.simulate import SimConfig
+
+    try:
+        flock = load_flock(job.source)  # checked as a whole by jobs_for
+        bird = load_bird(flock, job.index)
+        entry = flock.birds[job.index]
+        source = entry.path or flock.path
+        flight = get_flight(source, turning=True)
+        if not isinstance(flight, FlightPath) or flight.perch_start or flight.perch_end:
+            raise FlockError(
+                f"flock {flock.name!r}: bird {job.index}: path {source!r}; allowed: a path "
+                "(position or speed keyframes) that neither starts nor ends on the perch"
+            )
+        attitude = attitude_for(flight, job.attitude, source)
+        dx, dy, dz = (v / bird.semispan for v in entry.offset)
+        try:
+            path = shifted_path(flight, dx, dz)
+        except PathError as exc:
+            raise FlockError(f"flock {flock.name!r}: bird {job.index}: {exc}") from None
+        if job.seconds is not None:
+            beats = job.seconds / bird.period
+        else:  # every bird for the leader path's length
+            beats = float(get_flight(flock.path, turning=True).duration_beats)
+        if beats > MAX_BEATS:
+            raise FlockError(f"{beats:g} wingbeats; allowed: at most {MAX_BEATS:g} wingbeats")
+        table = load_table_for(bird, job.model, None)
+        result = fly(path, table, bird, job.model, beats=beats, config=SimConfig(attitude=attitude))
+        arrays = log_arrays(result, flock.name)
+        if dy:
+            arrays["y"] = arrays["y"] + entry.offset[1]
+            arrays["y_ref"] = arrays["y_ref"] + entry.offset[1]
+            arrays["qpos"] = arrays["qpos"].copy()
+            arrays["qpos"][:, 1] += dy
+        info = summary(arrays, phases=getattr(path, "regime", None))
+    except BirdsimError as exc:
+        return {"index": job.index, "error": str(exc)}
+    return {"index": job.index, "arrays": arrays, "info": info}
+
+
+def jobs_for(
+    source: str, model: str, attitude: str | None = None, seconds: float | None = None
+) -> tuple[Flock, list[FlockJob]]:
+    """The flock (checked: its birds parse, their starts apart) and one job per bird."""
+    flock = load_flock(source)
+    load_birds(flock)
+    model = flock.model or model
+    attitude = attitude or flock.attitude
+    seconds = seconds if seconds is not None else flock.seconds
+    return flock, [FlockJob(source, b.index, model, attitude, seconds) for b in flock.birds]
+
+
+def fly_flock(jobs: list[FlockJob], executor: Any = None, progress: Any = None) -> dict:
+    """Fly every bird (in this process, or on ``executor``) and stack their logs."""
+    if executor is None:
+        results = []
+        for job in jobs:
+            results.append(fly_bird(job))
+            if progress is not None:
+                progress(len(results))
+    else:
+        from birdsim.flight.batch import run_batch
+
+        results = run_batch(jobs, executor, fly_bird)
+    for r in results:
+        if "error" in r:
+            raise FlockError(f"bird {r['index']}: {r['error']}")
+    flock = load_flock(jobs[0].source)
+    return stack_logs([r["arrays"] for r in results], flock)
+
+
+def stack_logs(logs: list[dict[str, np.ndarray]], flock: Flock) -> dict[str, np.ndarray]:
+    """One log from the birds' logs: every per-sample array with a leading bird axis
+    ((N, samples, ...)); a scalar the same for every bird kept, else one per bird (N,);
+    ``n_birds``, ``offset`` (N, 3; the bird's length unit) and ``flock`` added."""
+    n = len(logs[0]["t"])
+    if any(len(log["t"]) != n for log in logs):
+        raise FlockError(
+            f"flock {flock.name!r}: the birds' logs have {sorted({len(g['t']) for g in logs})} "
+            "samples; allowed: the same number (the same period and duration)"
+        )
+    out: dict[str, np.ndarray] = {}
+    for key, first in logs[0].items():
+        vals = [log[key] for log in logs]
+        per_sample = first.ndim >= 1 and first.shape[0] == n and key not in _NOT_SAMPLES
+        if per_sample or first.ndim == 0 and any(not np.array_equal(v, first) for v in vals):
+            out[key] = np.stack(vals)
+        else:
+            out[key] = first
+    out["bird"] = np.array([str(log["bird"]) for log in logs])
+    out["n_birds"] = np.array(len(logs))
+    out["offset"] = np.array([b.offset for b in flock.birds], dtype=float)
+    out["flock"] = np.array(flock.name)
+    return out
+
+
+def min_separation(arrays: dict[str, np.ndarray]) -> tuple[float, int, int, int]:
+    """The smallest distance between two birds' torso origins over every sample (the
+    bird's length unit), and the pair and sample where it happens."""
+    pos = np.stack([arrays["x"], arrays["y"], arrays["z"]], axis=-1)  # (N, S, 3)
+    best = (math.inf, -1, -1, -1)
+    for i in range(1, pos.shape[0]):
+        d = np.linalg.norm(pos[:i] - pos[i][None], axis=-1)  # (i, S)
+        j, k = np.unravel_index(int(np.argmin(d)), d.shape)
+        if d[j, k] < best[0]:
+            best = (float(d[j, k]), int(j), i, int(k))
+    return best
+
+
+def flock_summary(arrays: dict[str, np.ndarray], semispan: float) -> dict[str, Any]:
+    """Per-bird figures (path RMS after the first two wingbeats, in the bird's length unit
+    and in semispans; saturated samples) and the flock's smallest separation."""
+    from birdsim.flight.flightlog import summary
+
+    n = int(arrays["n_birds"])
+    birds = []
+    for i in range(n):
+        one = {k: (v[i] if _per_bird(k, v, arrays) else v) for k, v in arrays.items()}
+        s = summary(one)
+        birds.append(
+            {
+                "index": i,
+                "rms_error_after_start": s["rms_error_after_start"],
+                "rms_error_after_start_semispans": s["rms_error_after_start"] / semispan,
+                "max_error_after_start": s["max_error_after_start"],
+                "saturated_samples": s["saturated_samples"],
+            }
+        )
+    dmin, a, b, k = min_separation(arrays) if n > 1 else (math.inf, -1, -1, -1)
+    return {
+        "flock": str(arrays["flock"]),
+        "n_birds": n,
+        "samples": int(arrays["t"].shape[-1]),
+        "seconds": float(arrays["t"][0, -1]),
+        "worst_rms_error_after_start_semispans": max(
+            b_["rms_error_after_start_semispans"] for b_ in birds
+        ),
+        "saturated_samples": int(sum(b_["saturated_samples"] for b_ in birds)),
+        "min_separation": dmin if n > 1 else None,
+        "min_separation_semispans": dmin / semispan if n > 1 else None,
+        "min_separation_pair": [a, b] if n > 1 else None,
+        "min_separation_time": float(arrays["t"][0, k]) if n > 1 else None,
+        "birds": birds,
+    }
+
+
+def _per_bird(key: str, v: np.ndarray, arrays: dict[str, np.ndarray]) -> bool:
+    n = int(arrays["n_birds"])
+    return key not in ("offset",) and v.ndim >= 1 and v.shape[0] == n and key != "param_names"
+
+
+def bird_log(arrays: dict[str, np.ndarray], i: int) -> dict[str, np.ndarray]:
+    """Bird ``i``'s own log from a flock's (as a one-bird flight's log)."""
+    skip = ("n_birds", "offset", "flock")
+    return {k: (v[i] if _per_bird(k, v, arrays) else v) for k, v in arrays.items() if k not in skip}
+
+
+__all__ = [
+    "FlockJob",
+    "bird_log",
+    "flock_summary",
+    "fly_bird",
+    "fly_flock",
+    "jobs_for",
+    "min_separation",
+    "shifted_path",
+    "stack_logs",
+]
