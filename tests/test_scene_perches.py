@@ -176,3 +176,30 @@ def test_anywhere_examples_fly_unsaturated(name, rests):
     end = path.state(path.duration)
     # ends at rest on its target within 0.05 semispan (the path's own tolerance scale)
     assert math.hypot(a["x"][-1] - end.x, a["z"][-1] - end.z) < 0.05
+
+
+@pytest.mark.slow
+def test_perch_to_ground_with_legs_jumps_lands_and_stands():
+    """``fly examples/perch-to-ground.toml --legs``: the jump off the perch, the flight,
+    the touchdown on the ground and the bird standing (issue 25's targets)."""
+    from birdsim.flight.perch_landing import land
+    from birdsim.flight.perched import take_off
+
+    path = load_flight(ROOT / "examples" / "perch-to-ground.toml")
+    bird = demo_bird()
+    r = take_off(path, load_table_for(bird, "m3", None), bird, "m3", land=land)
+    legs = r.meta["legs"]
+    assert legs["leg_share"] >= 0.6 and 1.5 <= legs["peak_foot_force_over_weight"] <= 8.0
+    assert legs["rms_error_from_liftoff"] <= 0.1
+    td = legs["landing"]
+    assert td["touchdown_speed"] == pytest.approx(td["touchdown_speed_target"], rel=0.1)
+    assert td["peak_foot_force_over_weight"] < legs["peak_foot_force_over_weight"]
+    assert np.linalg.norm(td["final_offset"]) < 0.05  # on the ground at its target
+    assert td["weight_carried"] == pytest.approx(1.0, abs=0.05)
+    a = r.arrays
+    assert not np.any(a["saturated"])
+    ph = a["phase"].tolist()
+    runs = [p for i, p in enumerate(ph) if i == 0 or p != ph[i - 1]]
+    assert runs == ["standing", "take-off", "flight", "landing", "standing"]
+    assert a["on_perch"][-1]
+    assert np.max(np.linalg.norm(a["qvel"][-64:, :3], axis=1)) < 1e-3
