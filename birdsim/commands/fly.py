@@ -117,14 +117,14 @@ def parse_seconds(raw: str | None) -> float | None:
 
 
 def legs_check(flight: object, name: str, args: argparse.Namespace) -> None:
-    """``--legs`` needs a path starting or ending at rest on the perch (not both), no
+    """``--legs`` needs a path starting or ending at rest on a perch or the ground, no
     gusts, no --seconds, closed loop."""
     from birdsim.flight.path import FlightPath
 
-    perched = isinstance(flight, FlightPath) and (flight.perch_start != flight.perch_end)
+    perched = isinstance(flight, FlightPath) and (flight.perch_start or flight.perch_end)
     if not perched:
         raise BirdsimError(
-            f"--legs with {name!r}; allowed: a path that starts or ends (not both) at rest on the perch, e.g. take-off or landing"
+            f"--legs with {name!r}; allowed: a path that starts or ends at rest on a perch or the ground, e.g. take-off or landing"
         )
     for flag, bad in (
         ("--gust", args.gust),
@@ -142,8 +142,10 @@ def fly_with_legs(flight, table, bird, model, attitude, progress):  # type: igno
     from birdsim.flight.perched import take_off
     from birdsim.flight.simulate import SimConfig
 
-    run = take_off if flight.perch_start else land
-    return run(flight, table, bird, model, config=SimConfig(attitude=attitude), progress=progress)
+    config = SimConfig(attitude=attitude)
+    if flight.perch_start:  # (and at rest at the end too: the flight ends in a touchdown)
+        return take_off(flight, table, bird, model, config=config, progress=progress, land=land)
+    return land(flight, table, bird, model, config=config, progress=progress)
 
 
 def legs_summary(legs: dict, bird: object) -> dict:

@@ -116,9 +116,11 @@ def fly_reference(
         from birdsim.commands.fly import fly_with_legs
         from birdsim.flight.path import FlightPath
 
-        if not (isinstance(reference, FlightPath) and reference.perch_start != reference.perch_end):
+        if not (
+            isinstance(reference, FlightPath) and (reference.perch_start or reference.perch_end)
+        ):
             raise BirdsimError(
-                f"--legs with {reference.name!r}; allowed: a path that starts or ends (not both) at rest on the perch, e.g. take-off or landing"
+                f"--legs with {reference.name!r}; allowed: a path that starts or ends at rest on a perch or the ground, e.g. take-off or landing"
             )
         if gusts or args.open_loop:
             raise BirdsimError("--legs with --gust or --open-loop; allowed: --legs alone")
@@ -213,6 +215,8 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
         dataclasses.replace(options, seconds=None) if reference is not None else options,
         title=name,
     )
+    if getattr(reference, "scene", None) is not None:  # the path file's perches
+        states = dataclasses.replace(states, perches=reference.scene)
 
     if at is not None:
         from birdsim.render.renderer import write_png

@@ -35,6 +35,7 @@ from birdsim.mujoco.callback import AeroCallback
 from birdsim.mujoco.driver import wing_arrays
 from birdsim.mujoco.legs import LegGeometry, foot_geoms, leg_dofs, leg_geometry
 from birdsim.mujoco.model import build_model, pitch_quat
+from birdsim.mujoco.perches import Scene
 from birdsim.physics.bird import Bird
 from birdsim.physics.kinematics import get_model
 from birdsim.physics.units import reduced_bird
@@ -96,13 +97,16 @@ class ContactBird:
     """The MuJoCo bird with legs in the arena, contact on (reduced units).
 
     Use ``with ContactBird(...) as cb:`` (installs the aero callback).  ``bird`` in its
-    own units; the simulation runs its reduced bird."""
+    own units; the simulation runs its reduced bird; ``perches`` the scene (default the
+    presets' one perch)."""
 
-    def __init__(self, model_name: str, bird: Bird, *, aero: bool = True):
+    def __init__(
+        self, model_name: str, bird: Bird, *, aero: bool = True, perches: Scene | None = None
+    ):
         self.kin = get_model(model_name)
         self.bird = bird
         self.red = red = reduced_bird(bird)
-        m = build_model(self.kin.name, red, scene=True, legs=True)
+        m = build_model(self.kin.name, red, scene=True, legs=True, perches=perches)
         m.opt.timestep = red.period / STEPS_PER_BEAT
         m.opt.gravity[:] = (0.0, 0.0, -red.gravity)
         m.opt.wind[:] = 0.0
@@ -199,6 +203,7 @@ class ContactBird:
         feet = d.geom_xpos[self.feet].mean(axis=0)
         top = np.asarray(foot_top, dtype=float)
         d.qpos[0] = top[0] - feet[0]
+        d.qpos[1] = top[1] - feet[1]
         d.qpos[2] = top[2] + self.geom.foot_radius - feet[2]
         mujoco.mj_forward(m, d)
 

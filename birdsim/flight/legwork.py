@@ -223,6 +223,24 @@ def touchdown_speed(pigeon_speed_unit: float = PIGEON_SPEED_UNIT) -> float:
     return TOUCHDOWN_SPEED_SI / pigeon_speed_unit
 
 
+#: The standing bird's balance (``touchdown(..., balance=True)``): the hips turn the body
+#: so that the centre of mass comes back over the soles (the hip angle that would put the
+#: soles under it, as ``ContactBird.hip_for``, times BALANCE_GAIN), its speed damped
+#: over BALANCE_DAMPING (reduced time).
+BALANCE_GAIN = 1.0
+BALANCE_DAMPING = 3.0
+
+
+def balance_hip(cb: ContactBird) -> float:
+    """The hips' balance correction (rad): the centre of mass's offset behind the soles
+    and its speed, over the leg's reach."""
+    c, v = cb.com()
+    sole_x = float(cb.d.geom_xpos[cb.feet, 0].mean())
+    reach = cb.geom.length - cb.geom.foot_radius
+    err = (sole_x - float(c[0])) - BALANCE_DAMPING * float(v[0])
+    return BALANCE_GAIN * math.asin(max(-1.0, min(1.0, err / reach)))
+
+
 def touchdown(
     cb: ContactBird,
     target: np.ndarray,
@@ -232,6 +250,7 @@ def touchdown(
     pitch_to: float | None = None,
     rise_beats: float = 5.0,
     fold: tuple[dict, dict] | None = None,
+    balance: bool = False,
 ) -> TouchdownResult:
     """The legs absorb a touchdown on ``target`` (world point on the perch or ground)
     and the bird stands.  ``speed`` (omega s): place the bird with its soles just
@@ -239,7 +258,9 @@ def touchdown(
     at :data:`TOUCHDOWN_ANGLE`; None: start from ``cb``'s current state (a flight's
     end).  ``pitch_to``: once stopped, the hips lower the body to this pitch over
     ``rise_beats``.  ``fold``: (stopped, rest) core joint angles of the wings: from the
-    touchdown they fold to the rest pose over ``FOLD_BEATS``.  Runs ``beats`` wingbeats."""
+    touchdown they fold to the rest pose over ``FOLD_BEATS``.  ``balance``: once stopped,
+    the hips also keep the centre of mass over the soles (:func:`balance_hip`).  Runs
+    ``beats`` wingbeats."""
     d = cb.d
     if speed is not None:
         cb.place_standing(np.asarray(target, dtype=float))
@@ -277,9 +298,11 @@ def touchdown(
             # the muscle's activation rises over ACTIVATION_BEATS (not a step)
             rise = min(1.0, (t - contact[0]) / (ACTIVATION_BEATS * TWO_PI))
             return np.full(2, brake[0] * rise)
+        hip = settle[2]
         if hip_to is not None:
             b = min((t - settle[0]) / (rise_beats * TWO_PI), 1.0)
-            cb.hip_ref = settle[2] + 0.5 * (1.0 - math.cos(math.pi * b)) * (hip_to - settle[2])
+            hip = settle[2] + 0.5 * (1.0 - math.cos(math.pi * b)) * (hip_to - settle[2])
+        cb.hip_ref = hip + balance_hip(cb) if balance else hip
         blend = 0.5 * (
             1.0 - math.cos(math.pi * min((t - settle[0]) / (SETTLE_BEATS * TWO_PI), 1.0))
         )

@@ -53,6 +53,7 @@ from birdsim.flight.path_curves import (
     knot_slopes,
     quintic_hermite,
 )
+from birdsim.mujoco.perches import DEFAULT_SCENE, GROUND_REST_Z, Scene, check_scene
 
 #: Longest path (wingbeats), as for force manoeuvres.
 MAX_BEATS = 10000.0
@@ -109,7 +110,11 @@ class FlightPath:
     ``perch_start`` / ``perch_end``: it starts / ends at rest on the perch (the first /
     last keyframe must then be the perched position, checked); ``x0``, ``y0``: the
     position at the first keyframe in the speed form [s] (ignored on a perch: a
-    speed-form path starting or ending on the perch is placed so that it does)."""
+    speed-form path starting or ending on a perch is placed so that it does on the
+    scene's first perch; a start or end at rest on the ground keeps x0, y0);
+    ``scene``: the perches (:mod:`birdsim.mujoco.perches`; default the presets' one);
+    ``low_end``: the last segment may come down to the ground's rest height (a landing's
+    hover over the ground before the touchdown, :mod:`birdsim.flight.perch_landing`)."""
 
     name: str
     duration_beats: float
@@ -119,6 +124,8 @@ class FlightPath:
     description: str = ""
     x0: float = 0.0
     y0: float = 0.0
+    scene: Scene = DEFAULT_SCENE
+    low_end: bool = False
     _x: PPoly = field(init=False, repr=False, compare=False)
     _y: PPoly | None = field(init=False, repr=False, compare=False)
     _z: PPoly = field(init=False, repr=False, compare=False)
@@ -166,11 +173,16 @@ class FlightPath:
         check_obstacles(self)
 
     def _start(self, x_end: float, y_end: float) -> tuple[float, float]:
-        """The speed form's position at the first keyframe, given the end's from (0, 0)."""
-        if self.perch_start:
-            return PERCH_X, PERCH_Y
-        if self.perch_end:
-            return PERCH_X - x_end, PERCH_Y - y_end
+        """The speed form's position at the first keyframe, given the end's from (0, 0):
+        on the scene's first perch at a perched start (or end), else (x0, y0)."""
+        ks, ground = self.keyframes, GROUND_REST_Z
+        first = self.scene.perches[0] if self.scene.perches else None
+        if first is None:
+            return self.x0, self.y0
+        if self.perch_start and ks[0].z != ground:
+            return first.x, first.y
+        if self.perch_end and not self.perch_start and ks[-1].z != ground:
+            return first.x - x_end, first.y - y_end
         return self.x0, self.y0
 
     @property
@@ -242,6 +254,7 @@ class FlightPath:
 
 def _validate(p: FlightPath) -> None:
     where = f"path {p.name!r}"
+    check_scene(p.scene, where)
     if not p.keyframes:
         raise PathError(f"{where} has no keyframes; allowed: at least one [[keyframe]]")
     if not (

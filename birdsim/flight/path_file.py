@@ -13,6 +13,11 @@ radians from +x towards +y, turn rates in rad per reduced time, i.e. ``V / R``):
     perch = "start"              # "start", "end", "both" or "" (optional)
     x0 = 0.0                     # speed form only: x, y at the first keyframe (optional)
     y0 = 0.0
+    [[perches]]                  # optional, any number (default: the presets' one perch,
+    x = 6.0                      # x = 6, y = 0, height 1.5, radius 0.04); a rest end is
+    y = 0.0                      # on one of them (z = height + radius + 0.13) or on the
+    height = 1.5                 # ground (z = 0.13), found from its position
+    radius = 0.04
     [[keyframe]]                 # position form: t, x, z (optional y, default 0) ...
     t = 0
     x = 6.0
@@ -34,6 +39,7 @@ from birdsim.errors import BirdsimError
 from birdsim.flight.manoeuvre import MAX_BEATS, Manoeuvre, ManoeuvreError, load_manoeuvre
 from birdsim.flight.path import FlightPath, PathError, PathKeyframe
 from birdsim.flight.presets import PATH_PRESETS
+from birdsim.mujoco.perches import DEFAULT_SCENE, Perch, Scene, SceneError, check_scene
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -126,7 +132,7 @@ def load_flight(path: str | Path) -> FlightPath | Manoeuvre:
 
 
 def _path_from_dict(arg: str, stem: str, data: dict[str, Any]) -> FlightPath:
-    known = {"name", "description", "duration", "perch", "x0", "y0", "keyframe"}
+    known = {"name", "description", "duration", "perch", "x0", "y0", "keyframe", "perches"}
     unknown = sorted(set(data) - known)
     if unknown:
         raise ManoeuvreError(
@@ -174,6 +180,7 @@ def _path_from_dict(arg: str, stem: str, data: dict[str, Any]) -> FlightPath:
         raise ManoeuvreError(f"{arg}: perch={perch!r}; allowed: start, end, both or empty")
     x0, y0 = (_number(f"{arg}: {k}", data[k]) if k in data else 0.0 for k in ("x0", "y0"))
     description = data.get("description", "")
+    scene = _scene(arg, data.get("perches", None))
     try:
         return FlightPath(
             name,
@@ -184,10 +191,40 @@ def _path_from_dict(arg: str, stem: str, data: dict[str, Any]) -> FlightPath:
             str(description),
             x0,
             y0,
+            scene,
         )
     except PathError as exc:
         raise PathError(f"{arg}: {str(exc)}") from None
 
+
+def _scene(arg: str, rows: Any) -> Scene:
+    """The file's ``[[perches]]`` (x, optional y, height, radius; semispans), or the
+    presets' one perch when it lists none."""
+    if rows is None:
+        return DEFAULT_SCENE
+    if not isinstance(rows, list) or not all(isinstance(r, dict) for r in rows):
+        raise ManoeuvreError(f"{arg}: perches must be an array of tables ([[perches]])")
+    perches = []
+    for i, row in enumerate(rows, 1):
+        where = f"{arg}: perch {i}"
+        bad = sorted(set(row) - set(PERCH_KEYS))
+        if bad:
+            raise ManoeuvreError(
+                f"{where}: key {bad[0]!r} is unknown; allowed: {', '.join(PERCH_KEYS)}"
+            )
+        if "x" not in row:
+            raise ManoeuvreError(f"{where}: x is missing; required: x (y, height, radius optional)")
+        perches.append(Perch(**{k: _number(f"{where}: {k}", v) for k, v in row.items()}))
+    scene = Scene(tuple(perches))
+    try:
+        check_scene(scene, arg)
+    except SceneError as exc:
+        raise ManoeuvreError(str(exc)) from None
+    return scene
+
+
+#: The keys of a ``[[perches]]`` table (semispans).
+PERCH_KEYS = ("x", "y", "height", "radius")
 
 #: What a key allows, for its error line.
 _ALLOWED = {

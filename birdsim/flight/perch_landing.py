@@ -28,8 +28,15 @@ from birdsim.flight.contact import REST_WINGS, ContactBird
 from birdsim.flight.freeflight import FlightResult, fly
 from birdsim.flight.legwork import touchdown, touchdown_speed
 from birdsim.flight.path import FlightPath, PathKeyframe
-from birdsim.flight.path_checks import PERCH_X
-from birdsim.flight.perched import PERCH_TOP, STAND_PITCH, _contact_rows, _join, first_pose
+from birdsim.flight.path_checks import PERCH_X, rest_supports
+from birdsim.flight.perched import (
+    PERCH_TOP,
+    STAND_PITCH,
+    _contact_rows,
+    _join,
+    first_pose,
+    rest_surface,
+)
 from birdsim.flight.simulate import SimConfig
 from birdsim.flight.wingbeat import WingbeatSchedule
 from birdsim.mujoco.driver import wing_arrays
@@ -41,24 +48,56 @@ TWO_PI = 2.0 * math.pi
 STAND_BEATS = 8.0
 
 
-def touchdown_pose(model: str, bird: Bird, pitch: float) -> tuple[float, float]:
-    """Torso x and height (semispans) when the soles touch the perch top at ``pitch``
-    with the legs vertical (the hips sit ahead of the torso origin at a pitched body)."""
+def touchdown_pose(
+    model: str, bird: Bird, pitch: float, surface: np.ndarray = PERCH_TOP
+) -> tuple[float, float]:
+    """Torso x and height (semispans) when the soles touch ``surface`` (the perch top
+    by default) at ``pitch`` with the legs vertical (the hips sit ahead of the torso
+    origin at a pitched body)."""
     with ContactBird(model, bird) as cb:
-        cb.place_standing(PERCH_TOP, pitch)
+        cb.place_standing(surface, pitch)
         return float(cb.d.qpos[0]), float(cb.d.qpos[2])
 
 
 def landing_path(preset: FlightPath, z_hover: float, x_td: float = PERCH_X) -> FlightPath:
     """The preset's landing ending in a hover at ``z_hover`` over the touchdown point
-    (module docstring); the approach no lower than the hover."""
+    (module docstring); the approach from its highest keyframe on no lower than the
+    hover."""
     end = preset.keyframes[-1]
-    keys = [replace(k, z=max(k.z, z_hover)) for k in preset.keyframes[:-1]]
+    low = rest_supports(preset)[1] == "ground"
+    # the approach from its highest keyframe on no lower than the hover
+    top = int(np.argmax([k.z for k in preset.keyframes[:-1]])) if len(preset.keyframes) > 1 else 0
+    keys = [
+        k if i < top else replace(k, z=max(k.z, z_hover))
+        for i, k in enumerate(preset.keyframes[:-1])
+    ]
+    if preset.form == "position":
+        keys.append(PathKeyframe(end.t, z_hover, x=x_td, vx=0.0, y=end.y, vy=0.0, regime="hover"))
+        return FlightPath(
+            preset.name,
+            end.t,
+            False,
+            False,
+            tuple(keys),
+            preset.description,
+            scene=preset.scene,
+            low_end=low,
+        )
     keys.append(PathKeyframe(end.t, z_hover, V=0.0, regime="hover"))
-    draft = FlightPath(preset.name, end.t, False, False, tuple(keys))
+    draft = FlightPath(
+        preset.name, end.t, False, False, tuple(keys), scene=preset.scene, low_end=low
+    )
     x_end = float(draft.state(end.t * TWO_PI).x)
     return FlightPath(
-        preset.name, end.t, False, False, tuple(keys), preset.description, x0=x_td - x_end
+        preset.name,
+        end.t,
+        False,
+        False,
+        tuple(keys),
+        preset.description,
+        x0=x_td - x_end,
+        scene=preset.scene,
+        low_end=low,
     )
 
 
@@ -77,8 +116,9 @@ def land(
     v_td = touchdown_speed()
     drop = v_td**2 / (2.0 * reduced_bird(bird).gravity)
     pitch_end = math.radians(78.0)
+    surface = rest_surface(preset, -1)
     for _ in range(2):  # the touchdown pose depends on the pitch the flight ends at
-        x_td, z_td = touchdown_pose(model, bird, pitch_end)
+        x_td, z_td = touchdown_pose(model, bird, pitch_end, surface)
         path = landing_path(preset, z_td + drop, x_td)
         result = fly(path, table, bird, model, config=replace(config, legs=True), progress=progress)
         a = result.arrays
@@ -88,7 +128,7 @@ def land(
             break
         pitch_end = float(a["pitch"][i])
     every = max(1, 128 // config.log_per_beat)
-    with ContactBird(model, bird) as cb:
+    with ContactBird(model, bird, perches=preset.scene) as cb:
         q = a["qpos"][i].copy()
         pitch = float(a["pitch"][i])
         q[cb.leg_q] = cb.muscle.q_stand
@@ -113,7 +153,13 @@ def land(
         cb.d.qvel[:3] = v_com
         cb.time = float(a["t"][i])
         td = touchdown(
-            cb, PERCH_TOP, None, STAND_BEATS, pitch_to=STAND_PITCH, fold=(stopped, REST_WINGS)
+            cb,
+            surface,
+            None,
+            STAND_BEATS,
+            pitch_to=STAND_PITCH,
+            fold=(stopped, REST_WINGS),
+            balance=config.attitude == "free",
         )
         rows = _contact_rows(td.record, cb, np.array([a[n][i] for n in result.param_names]), every)
     flight = {k: np.asarray(v)[: i + 1] for k, v in a.items()}

@@ -31,7 +31,7 @@ from birdsim.flight.flight_arrays import flight_arrays
 from birdsim.flight.freeflight import FlightResult, fly
 from birdsim.flight.legwork import PHASES, JumpProfile, jump
 from birdsim.flight.path import FlightPath, PathKeyframe
-from birdsim.flight.path_checks import PERCH_X, PERCH_Y
+from birdsim.flight.path_checks import PERCH_X, PERCH_Y, rest_supports
 from birdsim.flight.simulate import SimConfig
 from birdsim.flight.wingbeat import WingbeatSchedule
 from birdsim.mujoco.driver import wing_arrays
@@ -46,6 +46,18 @@ PERCH_TOP = np.array([PERCH_X, PERCH_Y, 1.54])
 #: The take-off path rejoins the preset's keyframes from this wingbeat on.
 #: Deceleration of the jump's climb on the path after lift-off, in g.
 CLIMB_DECELERATION = 0.1
+
+
+def rest_surface(path: FlightPath, end: int) -> np.ndarray:
+    """The world point under the feet (semispans) where ``path`` rests at its start
+    (``end`` 0) or its end (``end`` -1): the top of its perch, or the ground under it."""
+    support = rest_supports(path)[0 if end == 0 else 1]
+    if support is None:
+        raise ValueError(
+            f"path {path.name!r} does not rest at its {'start' if end == 0 else 'end'}"
+        )
+    st = path.state(path.keyframes[end].t * TWO_PI)
+    return np.array(path.scene.surface(support, st.x, st.y))
 
 
 def first_wingbeat(path: FlightPath, table: Any, red: Bird) -> tuple[np.ndarray, float]:
@@ -80,8 +92,41 @@ def liftoff_path(
     rise = vz**2 / (2.0 * CLIMB_DECELERATION * gravity)
     t_apex = 2.0 * rise / vz / TWO_PI if vz > 0 else 1.0
     z_apex = float(position[2]) + rise
-    later = [k for k in preset.keyframes if k.t > t_apex and k.z > z_apex]
+    # the preset's keyframes from the first one later and higher than the apex on
+    ks = preset.keyframes
+    j = next((i for i, k in enumerate(ks) if k.t > t_apex and k.z > z_apex), len(ks))
+    later = ks[j:] if j < len(ks) else ks[-1:] if preset.perch_end else ()
     s1 = preset.state(t_apex * TWO_PI)
+    if preset.form == "position":  # the lift-off's x, then the preset's x at the apex
+        x_apex = max(float(s1.x), float(position[0]))
+        keys: tuple[PathKeyframe, ...] = (
+            PathKeyframe(
+                0.0,
+                float(position[2]),
+                x=float(position[0]),
+                vx=float(velocity[0]),
+                vz=vz,
+                y=float(position[1]) if preset.is_3d else None,
+                regime="lift-off",
+            ),
+            PathKeyframe(
+                t_apex,
+                z_apex,
+                x=x_apex,
+                y=float(s1.y) if preset.is_3d else None,
+                regime="climb-out",
+            ),
+            *later,
+        )
+        return FlightPath(
+            preset.name,
+            preset.duration_beats,
+            False,
+            preset.perch_end,
+            keys,
+            preset.description,
+            scene=preset.scene,
+        )
     keys = (
         PathKeyframe(
             0.0, float(position[2]), V=max(float(velocity[0]), 0.0), vz=vz, regime="lift-off"
@@ -93,10 +138,11 @@ def liftoff_path(
         preset.name,
         preset.duration_beats,
         False,
-        False,
+        preset.perch_end,
         keys,
         preset.description,
         x0=float(position[0]),
+        scene=preset.scene,
     )
 
 
@@ -164,21 +210,25 @@ def take_off(
     profile: JumpProfile | None = None,
     progress: Any = None,
     trim: bool = False,
+    land: Any = None,
 ) -> FlightResult:
-    """Stand, jump and fly ``preset`` (a path starting at rest on the perch): the
-    joined log (reduced units) with ``foot_force``, ``on_perch``, ``phase``; figures in
-    ``meta["legs"]``."""
+    """Stand, jump and fly ``preset`` (a path starting at rest on a perch or the
+    ground; one that also ends at rest lands there with ``land``, i.e.
+    :func:`~birdsim.flight.perch_landing.land`, its figures in
+    ``meta["legs"]["landing"]``): the joined log (reduced units) with ``foot_force``,
+    ``on_perch``, ``phase``; figures in ``meta["legs"]``."""
     red = reduced_bird(bird)
+    surface = rest_surface(preset, 0)
     params0, pitch0 = first_wingbeat(preset, table, red)
     every = STEPS_PER_BEAT // config.log_per_beat
     for _ in range(2):  # the path (and so its first pitch) depends on the lift-off state
-        with ContactBird(model, bird) as cb:
+        with ContactBird(model, bird, perches=preset.scene) as cb:
             sched = WingbeatSchedule(
                 cb.m, cb.kin, cb.red, params0, smoothing=config.smoothing_beats * TWO_PI
             )
             first = first_pose(sched, params0)
             cb.hold_qpos = wing_arrays(cb.m, REST_WINGS)[0][0]  # standing: wings folded back
-            cb.place_standing(PERCH_TOP, STAND_PITCH)
+            cb.place_standing(surface, STAND_PITCH)
             jr = jump(
                 cb,
                 profile or JumpProfile(),
@@ -193,24 +243,33 @@ def take_off(
         if abs(pitch1 - pitch0) < 1e-3:
             break
         params0, pitch0 = params1, pitch1
-    result = fly(
-        path,
-        table,
-        bird,
-        model,
-        config=replace(config, legs=True),
-        progress=progress,
-        trim=trim,
-    )
-    flight = dict(result.arrays)
-    n = len(flight["t"])
-    flight["foot_force"] = np.zeros(n)
-    flight["on_perch"] = np.zeros(n, dtype=bool)
-    flight["phase"] = np.array(["flight"] * n)
+    landing: dict | None = None
+    if preset.perch_end:  # at rest at both ends: the flight ends in a touchdown
+        if land is None:
+            raise ValueError(f"path {preset.name!r} ends at rest: take_off needs land=")
+        result = land(path, table, bird, model, config=config, progress=progress)
+        flight = dict(result.arrays)
+        landing = dict(result.meta.get("legs", {}))
+    else:
+        result = fly(
+            path,
+            table,
+            bird,
+            model,
+            config=replace(config, legs=True),
+            progress=progress,
+            trim=trim,
+        )
+        flight = dict(result.arrays)
+        n = len(flight["t"])
+        flight["foot_force"] = np.zeros(n)
+        flight["on_perch"] = np.zeros(n, dtype=bool)
+        flight["phase"] = np.array(["flight"] * n)
     keep = rows["t"] < jr.liftoff_time - 1e-12
     rows = {k: v[keep] for k, v in rows.items()}
     joined = _join(rows, flight, jr.liftoff_time)
-    e = np.hypot(flight["x"] - flight["x_ref"], flight["z"] - flight["z_ref"])
+    fl = flight["phase"] == "flight"
+    e = np.hypot(flight["x"] - flight["x_ref"], flight["z"] - flight["z_ref"])[fl]
     start = flight["qpos"][0, :3]
     meta = dict(result.meta)
     meta["legs"] = {
@@ -225,6 +284,8 @@ def take_off(
         "first_pitch_deg": math.degrees(pitch0),
         "root_applied_max_contact": jr.root_applied_max,
     }
+    if landing is not None:
+        meta["legs"]["landing"] = landing
     return FlightResult(
         joined,
         bird,
@@ -237,4 +298,11 @@ def take_off(
     )
 
 
-__all__ = ["PERCH_TOP", "STAND_PITCH", "first_wingbeat", "liftoff_path", "take_off"]
+__all__ = [
+    "PERCH_TOP",
+    "STAND_PITCH",
+    "first_wingbeat",
+    "liftoff_path",
+    "rest_surface",
+    "take_off",
+]

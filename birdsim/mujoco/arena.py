@@ -13,6 +13,7 @@ import math
 import mujoco
 import numpy as np
 
+from birdsim.mujoco.perches import BAR_HALF_LENGTH, DEFAULT_SCENE, POST_RADIUS, Perch, Scene
 from birdsim.physics.bird import Bird
 
 
@@ -35,10 +36,12 @@ def camera_quat(position: np.ndarray) -> np.ndarray:
 GROUND_SPACING = 1.0
 
 
-def add_arena(spec: mujoco.MjSpec, bird: Bird) -> None:
-    """Floor (checker of :data:`GROUND_SPACING` semispans), sky gradient, sun, perch
-    (a post and a branch with twigs), overview camera.  Textures and materials are for
-    the eye only; the floor and perch geoms are the collision geometry."""
+def add_arena(spec: mujoco.MjSpec, bird: Bird, scene: Scene | None = None) -> None:
+    """Floor (checker of :data:`GROUND_SPACING` semispans), sky gradient, sun, the
+    scene's perches (each a post and a branch with twigs; the first named ``perch``,
+    ``perch_post``, ``perch_bar``, ``perch_top``, the k-th ``perchk``, ``perchk_post``
+    ...), overview camera.  Textures and materials are for the eye only; the floor and
+    perch geoms are the collision geometry."""
     s = bird.semispan
     arena = spec.find_default("arena")
     world = spec.worldbody
@@ -106,20 +109,29 @@ def add_arena(spec: mujoco.MjSpec, bird: Bird) -> None:
         rgba=[1, 1, 1, 1],
         material="ground",
     )
-    perch = world.add_body(name="perch", pos=[6.0 * s, 0.0, 0.0], childclass="arena")
+    for k, p in enumerate((scene or DEFAULT_SCENE).perches, 1):
+        _add_perch(world, s, p, "perch" if k == 1 else f"perch{k}")
+    world.add_camera(
+        name="overview", pos=[3 * s, -12 * s, 4 * s], quat=camera_quat(np.array([-3.0, -12.0, 2.0]))
+    )
+
+
+def _add_perch(world: mujoco.MjsBody, s: float, p: Perch, name: str) -> None:
+    """One perch: a post and a bar (collision), a foot, a knot and twigs (the eye only)."""
+    perch = world.add_body(name=name, pos=[p.x * s, p.y * s, 0.0], childclass="arena")
     perch.add_geom(
-        name="perch_post",
+        name=f"{name}_post",
         type=mujoco.mjtGeom.mjGEOM_CYLINDER,
-        size=[0.05 * s, 0.75 * s, 0],
-        pos=[0, 0, 0.75 * s],
+        size=[POST_RADIUS * s, 0.5 * p.height * s, 0],
+        pos=[0, 0, 0.5 * p.height * s],
         rgba=[0.5, 0.38, 0.26, 1],
         material="bark",
     )
     perch.add_geom(
-        name="perch_bar",
+        name=f"{name}_bar",
         type=mujoco.mjtGeom.mjGEOM_CAPSULE,
-        size=[0.04 * s, 0.6 * s, 0],
-        pos=[0, 0, 1.5 * s],
+        size=[p.radius * s, BAR_HALF_LENGTH * s, 0],
+        pos=[0, 0, p.height * s],
         quat=[math.sqrt(0.5), math.sqrt(0.5), 0, 0],
         rgba=[0.5, 0.38, 0.26, 1],
         material="bark",
@@ -129,17 +141,17 @@ def add_arena(spec: mujoco.MjSpec, bird: Bird) -> None:
         contype=0, conaffinity=0, group=2, mass=0.0, material="bark", rgba=[0.5, 0.38, 0.26, 1]
     )
     perch.add_geom(
-        name="perch_foot",
+        name=f"{name}_foot",
         type=mujoco.mjtGeom.mjGEOM_ELLIPSOID,
         size=[0.11 * s, 0.11 * s, 0.08 * s],
         pos=[0, 0, 0],
         **decor,
     )
     perch.add_geom(
-        name="perch_knot",
+        name=f"{name}_knot",
         type=mujoco.mjtGeom.mjGEOM_SPHERE,
-        size=[0.065 * s, 0, 0],
-        pos=[0, 0, 1.5 * s],
+        size=[1.625 * p.radius * s, 0, 0],
+        pos=[0, 0, p.height * s],
         **decor,
     )
     for k, (y, angle, length) in enumerate(
@@ -149,19 +161,16 @@ def add_arena(spec: mujoco.MjSpec, bird: Bird) -> None:
         d = np.array([math.cos(angle) * 0.4, 0.0, math.sin(angle)])
         d /= np.linalg.norm(d)
         perch.add_geom(
-            name=f"perch_twig{k}",
+            name=f"{name}_twig{k}",
             type=mujoco.mjtGeom.mjGEOM_CAPSULE,
             size=[0.012 * s, 0, 0],
             fromto=[
-                *(np.array([0.0, y * s, 1.5 * s])),
-                *(np.array([0.0, y * s, 1.5 * s]) + 2 * half * d),
+                *(np.array([0.0, y * s, p.height * s])),
+                *(np.array([0.0, y * s, p.height * s]) + 2 * half * d),
             ],
             **decor,
         )
-    perch.add_site(name="perch_top", pos=[0, 0, 1.54 * s], size=[0.02 * s, 0, 0], group=3)
-    world.add_camera(
-        name="overview", pos=[3 * s, -12 * s, 4 * s], quat=camera_quat(np.array([-3.0, -12.0, 2.0]))
-    )
+    perch.add_site(name=f"{name}_top", pos=[0, 0, p.top * s], size=[0.02 * s, 0, 0], group=3)
 
 
 __all__ = ["GROUND_SPACING", "add_arena", "camera_quat"]

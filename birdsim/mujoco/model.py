@@ -44,6 +44,7 @@ from birdsim.mujoco.arena import add_arena as _add_arena
 from birdsim.mujoco.arena import camera_quat as _camera_quat
 from birdsim.mujoco.fold import add_elbow, add_hand_joints
 from birdsim.mujoco.legs import add_legs
+from birdsim.mujoco.perches import Scene
 from birdsim.mujoco.plumage import plumage_for
 from birdsim.mujoco.sites import (  # noqa: F401 (re-exported)
     SIDES,
@@ -293,6 +294,7 @@ def build_spec(
     body_pitch: float = 0.0,
     visuals: bool = True,
     legs: bool = False,
+    perches: Scene | None = None,
 ) -> mujoco.MjSpec:
     """The MjSpec of the bird for kinematic ``model_name`` (base, m1..m4).
 
@@ -301,7 +303,8 @@ def build_spec(
     Every model has the same joints (nq = 7 + 2 * 8, nv = 6 + 2 * 7); a kinematic model
     only moves the ones it uses (see :mod:`birdsim.mujoco.driver`).  ``visuals`` adds
     the bird for the eye (:mod:`birdsim.mujoco.visual`: massless, contact-free geoms
-    in group 2; the dynamics are identical without them).  ``legs``: legs and feet.
+    in group 2; the dynamics are identical without them).  ``legs``: legs and feet;
+    ``perches``: the scene (:mod:`birdsim.mujoco.perches`; default the presets' perch).
     """
     bird = bird or Bird()
     spec = mujoco.MjSpec()
@@ -312,7 +315,7 @@ def build_spec(
     if legs:  # after the wings: their DOF come last, the wings' addresses are unchanged
         add_legs(spec, spec.body("torso"), bird, visuals)
     if scene:
-        _add_arena(spec, bird)
+        _add_arena(spec, bird, perches)
     m = spec.compile()
     _add_key(spec, m)
     return spec
@@ -326,6 +329,7 @@ def build_model(
     body_pitch: float = 0.0,
     visuals: bool = True,
     legs: bool = False,  # birdsim.mujoco.legs
+    perches: Scene | None = None,  # birdsim.mujoco.perches
 ) -> mujoco.MjModel:
     """Compiled MjModel of the bird (see :func:`build_spec`).
 
@@ -336,12 +340,9 @@ def build_model(
     weld ``hold`` (inactive).  Timestep ``bird.period / 512``; offscreen 1280 x 720.
     """
     if not isinstance(body_pitch, (int, float)) or not math.isfinite(body_pitch):
-        raise BirdsimError(
-            f"body_pitch={body_pitch!r} is invalid; allowed: a finite angle in radians"
-        )
-    return build_spec(
-        model_name, bird, scene=scene, body_pitch=body_pitch, visuals=visuals, legs=legs
-    ).compile()
+        raise BirdsimError(f"body_pitch={body_pitch!r} is invalid; allowed: a finite angle (rad)")
+    opts = dict(scene=scene, body_pitch=body_pitch, visuals=visuals, legs=legs)
+    return build_spec(model_name, bird, perches=perches, **opts).compile()
 
 
 SCENE_INCLUDE = '  <include file="bird.xml"/>\n'

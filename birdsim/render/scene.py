@@ -70,6 +70,7 @@ class Scene:
             states.model.name if isinstance(states, Playback) else states.model,
             states.bird,
             -1 if isinstance(states, Playback) else int(states.qpos.shape[1]),
+            perches=getattr(states, "perches", None),
         )
         if isinstance(states, Playback):
             states = states_from_playback(states, max(1, int(options.trail_substeps)), m=self.m)
@@ -134,8 +135,10 @@ class Scene:
         if name not in CAMERAS:
             raise RenderError(f"--camera {name!r} is unknown; allowed: {', '.join(CAMERAS)}")
         extra = []
-        sid = mj.mj_name2id(self.m, mj.mjtObj.mjOBJ_SITE, "perch_top")
-        if sid >= 0:
+        for k in range(1, 100):  # every perch's top: perch_top, perch2_top, ...
+            sid = mj.mj_name2id(self.m, mj.mjtObj.mjOBJ_SITE, f"perch{k if k > 1 else ''}_top")
+            if sid < 0:
+                break
             top = self.d.site_xpos[sid].copy()
             extra += [top, top * np.array([1.0, 1.0, 0.0])]
         if self.states.reference_path is not None:

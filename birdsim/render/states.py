@@ -70,6 +70,8 @@ class StateSequence:
     brief: OverlaySource = None  # the default overlay: at most three short lines
     #: the tail's controls per instant (F, 3): elevation, spread, roll (free flight)
     tail: np.ndarray | None = None
+    #: the scene's perches (birdsim.mujoco.perches.Scene; None: the presets' one perch)
+    perches: object = None
 
     def __post_init__(self) -> None:
         t = np.asarray(self.t_beats, dtype=float)
