@@ -90,3 +90,44 @@ def test_render_a_still_of_the_circle(tmp_path, capsys):
     assert img.shape[:2] == (128, 160)
     assert img.std() > 10.0  # a drawn scene, not a flat frame
     assert sorted(p.name for p in tmp_path.iterdir()) == ["c.png"]
+
+
+def test_bvh_root_follows_the_csv_in_a_turn(tmp_path, capsys):
+    """The s-turn's BVH and CSV (same flight, 4 s) agree on the body: the BVH root's
+    position (its Y up, Z toward the viewer: MuJoCo x, y, z = X, -Z, Y) at three frames
+    within 1e-4 semispan of the CSV's (the file's 6 decimals), and its rotation (Z X Y
+    channels, intrinsic) gives the CSV's heading change to 0.01 degree. The heading
+    change is tens of degrees, so a root that did not turn fails."""
+    pytest.importorskip("pybvh")
+    bvh = pytest.importorskip("bvh")
+    common = ["--fps", "10", "--seconds", "4"]
+    assert (
+        main(["export", "s-turn", "--format", "csv", "--out", str(tmp_path / "s.csv"), *common])
+        == 0
+    )
+    assert (
+        main(["export", "s-turn", "--format", "bvh", "--out", str(tmp_path / "s.bvh"), *common])
+        == 0
+    )
+    capsys.readouterr()
+    rows = list(csv.DictReader((tmp_path / "s.csv").open()))
+    parsed = bvh.Bvh((tmp_path / "s.bvh").read_text())
+    root = parsed.get_joints_names()[0]
+    chans = parsed.joint_channels(root)
+    assert parsed.nframes == len(rows) == 41
+    yaw_csv = _yaw_deg(np.array([[float(r[k]) for k in ("qw", "qx", "qy", "qz")] for r in rows]))
+    yaw_bvh = []
+    for frame in (0, 20, 40):
+        v = dict(zip(chans, parsed.frame_joint_channels(frame, root, chans)))
+        pos = np.array([v["Xposition"], -v["Zposition"], v["Yposition"]])
+        want = [float(rows[frame][k]) for k in "xyz"]
+        assert np.allclose(pos, want, atol=1e-4), (frame, pos, want)
+        # intrinsic Z X Y in BVH axes -> the body's x axis (BVH X) in MuJoCo axes
+        r = Rotation.from_euler(
+            "ZXY", [v["Zrotation"], v["Xrotation"], v["Yrotation"]], degrees=True
+        ).as_matrix()
+        x_mj = np.array([[1, 0, 0], [0, 0, -1], [0, 1, 0]]) @ r @ [1.0, 0.0, 0.0]
+        yaw_bvh.append(np.degrees(np.arctan2(x_mj[1], x_mj[0])))
+    change = yaw_csv[[0, 20, 40]] - yaw_csv[0]
+    assert change[-1] > 20.0, change
+    assert np.allclose(np.array(yaw_bvh) - yaw_bvh[0], change, atol=1e-2), (yaw_bvh, change)
