@@ -131,3 +131,21 @@ def test_bvh_root_follows_the_csv_in_a_turn(tmp_path, capsys):
     change = yaw_csv[[0, 20, 40]] - yaw_csv[0]
     assert change[-1] > 20.0, change
     assert np.allclose(np.array(yaw_bvh) - yaw_bvh[0], change, atol=1e-2), (yaw_bvh, change)
+
+
+def test_the_studio_flies_a_turning_preset_free():
+    """The studio's flight request flies the circle free (its log has the quaternion and
+    the body's heading turns left), and the circle edited as a path table (the page's
+    form) flies the same flight, sample for sample."""
+    from birdsim.studio.flights import FlightRequest, fly_request, load_path, path_dict
+
+    seconds = 10 * 2 * np.pi  # 10 wingbeats of the seed bird
+    log, info = fly_request(FlightRequest("circle", seconds=seconds))
+    assert info["wingbeats"] == pytest.approx(10.0, abs=0.05)
+    yaw = _yaw_deg(np.asarray(log["quat"]))
+    assert yaw[-1] - yaw[0] > 45.0, yaw[-1]
+    assert np.asarray(log["y"])[-1] > 4.0
+    edited = path_dict(get_flight("circle", turning=True))
+    assert load_path(edited).is_3d
+    again, _ = fly_request(FlightRequest(None, path=edited, seconds=seconds))
+    np.testing.assert_array_equal(again["qpos"], log["qpos"])

@@ -52,7 +52,16 @@ def test_options_list_the_folder_and_the_shipped_birds(client, folder):
     assert o["folder"] == str(folder.resolve())
     assert "shipped:seed-bird.toml" in o["birds"] and "shipped:pigeon.toml" in o["birds"]
     assert {"climb.toml", "broken.toml", "sub/pigeon.toml"} <= set(o["files"])
-    assert o["presets"] == ["hover", "cruise", "take-off", "landing"]
+    assert o["presets"] == [
+        "hover",
+        "cruise",
+        "take-off",
+        "landing",
+        "turn-90",
+        "circle",
+        "s-turn",
+        "u-turn",
+    ]
     assert o["default_model"] == "m3"
 
 
