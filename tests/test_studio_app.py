@@ -100,6 +100,9 @@ def test_paths_of_presets_and_files(client):
     assert p["perch"] == "start" and p["keyframe"][0]["t"] == 0.0
     r = client.get("/api/path", query_string={"source": "climb.toml"}).get_json()
     assert r["path"] is None and "force schedule" in r["note"]
+    # a turning preset is flown as it is: the editor's columns would drop its heading
+    r = client.get("/api/path", query_string={"source": "circle"}).get_json()
+    assert r["path"] is None and "turns out of the vertical plane" in r["note"]
     r = client.get("/api/path", query_string={"source": "broken.toml"})
     assert r.status_code == 400
     msg = r.get_json()["error"]

@@ -111,6 +111,12 @@ def create_app(root: str | Path) -> Flask:
 
         name = request.args.get("source", "")
         flight = get_flight(source_arg(name), turning=True)
+        if getattr(flight, "is_3d", False):  # the editor's table has no y, heading, turn_rate
+            return jsonify(
+                path=None,
+                note=f"{name!r} turns out of the vertical plane: flown as it is (attitude "
+                "free, bank to turn), not edited here",
+            )
         data = path_dict(flight)
         if data is None:
             return jsonify(
