@@ -318,9 +318,10 @@ def test_bad_3d_path_files_are_one_line(tmp_path, change, words):
 
 
 def test_the_cli_refuses_a_3d_path_in_one_line_and_writes_nothing(tmp_path, capsys):
-    # render cannot show a turn yet, and a posed body cannot bank: both refuse a turning
-    # path rather than fly it in the x-z plane (exit 2, one line naming what is allowed);
-    # `birdsim fly` without --attitude flies it free (tests/test_turning.py)
+    # a posed body cannot bank: fly, render and export refuse a turning path with
+    # --attitude posed rather than fly it in the x-z plane (exit 2, one line naming what
+    # is allowed); without --attitude they fly it free (tests/test_turning.py,
+    # tests/test_render_export_turning.py)
     from birdsim.cli import main
     from birdsim.flight.path_file import get_flight
 
@@ -329,8 +330,23 @@ def test_the_cli_refuses_a_3d_path_in_one_line_and_writes_nothing(tmp_path, caps
     out = tmp_path / "log.npz"
     for argv, words in (
         (["fly", str(f), "--attitude", "posed", "--out", str(out)], "cannot bank"),
-        (["render", str(f), "--out", str(tmp_path / "a.mp4")], "keyframe 2 gives heading"),
-        (["render", "circle", "--out", str(tmp_path / "a.mp4")], "turns out of the vertical"),
+        (
+            ["render", str(f), "--attitude", "posed", "--out", str(tmp_path / "a.mp4")],
+            "cannot bank",
+        ),
+        (
+            [
+                "export",
+                "circle",
+                "--format",
+                "csv",
+                "--out",
+                str(tmp_path / "a.csv"),
+                "--attitude",
+                "posed",
+            ],
+            "cannot bank",
+        ),
     ):
         rc = main(argv)
         err = capsys.readouterr().err.strip()

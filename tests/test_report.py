@@ -41,7 +41,8 @@ def test_quick_report_every_figure_is_a_real_plot(tmp_path: Path) -> None:
     assert not [s.error for s in sections if s.error]
     files = [e.file for s in sections for e in s.entries]
     # 10 histories + 1 + 2 + 2 + 3 + 6 + 5 + 9 paths + 3: no figure silently dropped
-    assert len(files) == len(set(files)) == 42  # 41 of the dissertation + table smoothness
+    # 41 of the dissertation + table smoothness + the turning presets (issue 23)
+    assert len(files) == len(set(files)) == 43
     assert sorted(p.name for p in out.glob("*.png")) == sorted(files)
     for name in files:
         px = _pixels(out / name)
@@ -205,6 +206,6 @@ def test_full_report_builds(tmp_path: Path) -> None:
     sections = report.build_report(tmp_path / "report", quick=False, progress=False)
     assert not [s.error for s in sections if s.error]
     files = [e.file for s in sections for e in s.entries]
-    assert len(files) == 42 and all(
+    assert len(files) == 43 and all(
         (tmp_path / "report" / f).stat().st_size > 20_000 for f in files
-    )  # 41 + smoothness
+    )  # 41 + smoothness + turns

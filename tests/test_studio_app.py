@@ -52,7 +52,16 @@ def test_options_list_the_folder_and_the_shipped_birds(client, folder):
     assert o["folder"] == str(folder.resolve())
     assert "shipped:seed-bird.toml" in o["birds"] and "shipped:pigeon.toml" in o["birds"]
     assert {"climb.toml", "broken.toml", "sub/pigeon.toml"} <= set(o["files"])
-    assert o["presets"] == ["hover", "cruise", "take-off", "landing"]
+    assert o["presets"] == [
+        "hover",
+        "cruise",
+        "take-off",
+        "landing",
+        "turn-90",
+        "circle",
+        "s-turn",
+        "u-turn",
+    ]
     assert o["default_model"] == "m3"
 
 
@@ -91,6 +100,9 @@ def test_paths_of_presets_and_files(client):
     assert p["perch"] == "start" and p["keyframe"][0]["t"] == 0.0
     r = client.get("/api/path", query_string={"source": "climb.toml"}).get_json()
     assert r["path"] is None and "force schedule" in r["note"]
+    # a turning preset is flown as it is: the editor's columns would drop its heading
+    r = client.get("/api/path", query_string={"source": "circle"}).get_json()
+    assert r["path"] is None and "turns out of the vertical plane" in r["note"]
     r = client.get("/api/path", query_string={"source": "broken.toml"})
     assert r.status_code == 400
     msg = r.get_json()["error"]

@@ -175,7 +175,8 @@ def test_circle_is_coordinated_and_closes():
 def test_fly_chooses_the_free_attitude_for_a_turning_path(capsys):
     """``birdsim fly`` flies a turning path free and says so in one stderr line; it keeps
     the posed default for a straight path and refuses ``--attitude posed`` for a turn in
-    one line; other commands refuse a turning preset in one line."""
+    one line; ``get_flight`` without ``turning`` (the studio's readers) refuses a turning
+    preset in one line; ``birdsim render`` and ``birdsim export`` say their own name."""
     from birdsim.errors import BirdsimError
     from birdsim.flight.path_file import attitude_for as _attitude_for
     from birdsim.flight.path_file import get_flight
@@ -195,3 +196,6 @@ def test_fly_chooses_the_free_attitude_for_a_turning_path(capsys):
     with pytest.raises(BirdsimError) as e:
         get_flight("circle")
     assert "\n" not in str(e.value) and "turns out of the vertical plane" in str(e.value)
+    assert _attitude_for(circle, None, "circle", command="render") == "free"
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("birdsim render: circle turns out of the vertical plane"), err

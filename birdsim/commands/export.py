@@ -137,6 +137,7 @@ def run(args: argparse.Namespace) -> int:
             ("--set", args.set),
             ("--gust", args.gust),
             ("--open-loop", args.open_loop),
+            ("--attitude", args.attitude),
             ("--kinematic", args.kinematic),
         ):
             if value:
@@ -165,7 +166,9 @@ def run(args: argparse.Namespace) -> int:
         from birdsim.export.frames import time_per_second
         from birdsim.flight.manoeuvre import MAX_BEATS
 
-        reference, model, gusts = flight_reference(args.source, args.model, args.gust)
+        reference, model, gusts, attitude = flight_reference(
+            args.source, args.model, args.gust, args.attitude, command="export"
+        )
         bird_and_table = flight_bird_and_table(args, model)  # --bird and --set, as flown
         bird = bird_and_table[0]
         beat_rate = rate_for(bird)
@@ -179,7 +182,13 @@ def run(args: argparse.Namespace) -> int:
                 f"--seconds {args.seconds} is {beats:g} wingbeats of flight; allowed: at most {MAX_BEATS:g} wingbeats"
             )
         log = fly_reference(
-            reference, model, args, beats=beats, gusts=gusts, bird_and_table=bird_and_table
+            reference,
+            model,
+            args,
+            beats=beats,
+            gusts=gusts,
+            bird_and_table=bird_and_table,
+            attitude=attitude,
         )
         frames = frames_from_log(
             log,
@@ -194,9 +203,9 @@ def run(args: argparse.Namespace) -> int:
         from birdsim.flight.manoeuvre import get_manoeuvre
         from birdsim.physics.kinematics import get_model
 
-        if args.gust or args.open_loop:
+        if args.gust or args.open_loop or args.attitude:
             raise BirdsimError(
-                "--gust/--open-loop need free flight; allowed: omit them with --kinematic"
+                "--gust/--open-loop/--attitude need free flight; allowed: omit them with --kinematic"
             )
         manoeuvre = get_manoeuvre(args.source)
         model = get_model(args.model or "m4").name

@@ -42,6 +42,12 @@ def add_flight_arguments(p: argparse.ArgumentParser) -> None:
         help="free flight with legs and feet: take-off as a jump from the perch, landing as a touchdown (see birdsim fly)",
     )
     p.add_argument(
+        "--attitude",
+        choices=("posed", "free"),
+        default=None,
+        help="free flight: posed (the body's pitch prescribed; the default for a path in the vertical plane) or free (six DOF; the default for a turning path, said on stderr): see birdsim fly",
+    )
+    p.add_argument(
         "--strict",
         action="store_true",
         help="free flight: saturated wingbeats are an error (exit 2, nothing written); else one warning line",
@@ -52,28 +58,38 @@ def is_log(name: str) -> bool:
     return Path(name).suffix.lower() == ".npz"
 
 
-def flight_reference(source: str, model_arg: str | None, gust_args: list[str]):
+def flight_reference(
+    source: str,
+    model_arg: str | None,
+    gust_args: list[str],
+    attitude_arg: str | None = None,
+    command: str = "render",
+):
     """What free flight flies for SOURCE (a preset or a manoeuvre file): the path or the
-    demand schedule of a force-keyframe file, the model (default the demo model) and the
-    gusts. Shared by ``birdsim render`` and ``birdsim export``.
+    demand schedule of a force-keyframe file, the model (default the demo model), the
+    gusts and the attitude (``--attitude``, else free for a turning path, said on stderr
+    in one line, and posed for any other: :func:`birdsim.flight.path_file.attitude_for`).
+    Shared by ``birdsim render`` and ``birdsim export``.
 
     Returns:
-        (reference, model name, gusts).
+        (reference, model name, gusts, attitude).
 
     Raises:
-        BirdsimError: an unknown preset or file, model or gust (one line).
+        BirdsimError: an unknown preset or file, model or gust, ``--attitude posed`` for a
+            turning path (one line).
     """
     from birdsim.flight.freeflight import DemandSchedule, parse_gust
     from birdsim.flight.manoeuvre import Manoeuvre
-    from birdsim.flight.path_file import get_flight
+    from birdsim.flight.path_file import attitude_for, get_flight
     from birdsim.flight.presets import DEMO_MODEL
     from birdsim.physics.kinematics import get_model
 
-    flight = get_flight(source)
+    flight = get_flight(source, turning=True)
     model = get_model(model_arg or DEMO_MODEL).name
     gusts = [parse_gust(g) for g in gust_args]
+    attitude = attitude_for(flight, attitude_arg, source, command=command)
     reference = DemandSchedule(flight) if isinstance(flight, Manoeuvre) else flight
-    return reference, model, gusts
+    return reference, model, gusts, attitude
 
 
 def flight_bird_and_table(args: argparse.Namespace, model: str) -> tuple:
@@ -100,6 +116,7 @@ def fly_reference(
     beats: float,
     gusts: list,
     bird_and_table: tuple | None = None,
+    attitude: str = "posed",
 ) -> dict:
     """Fly ``reference`` in MuJoCo for ``beats`` wingbeats with ``bird_and_table``
     (default :func:`flight_bird_and_table`), as ``birdsim render`` and ``birdsim
@@ -110,6 +127,7 @@ def fly_reference(
     """
     from birdsim.flight.flightlog import log_arrays
     from birdsim.flight.freeflight import fly
+    from birdsim.flight.simulate import SimConfig
 
     bird, table = bird_and_table or flight_bird_and_table(args, model)
     if getattr(args, "legs", False):  # issue 25: the contact phases joined to the flight
@@ -124,10 +142,17 @@ def fly_reference(
             )
         if gusts or args.open_loop:
             raise BirdsimError("--legs with --gust or --open-loop; allowed: --legs alone")
-        result = fly_with_legs(reference, table, bird, model, "posed", None)
+        result = fly_with_legs(reference, table, bird, model, attitude, None)
     else:
         result = fly(
-            reference, table, bird, model, beats=beats, gusts=gusts, open_loop=args.open_loop
+            reference,
+            table,
+            bird,
+            model,
+            beats=beats,
+            gusts=gusts,
+            open_loop=args.open_loop,
+            config=SimConfig(attitude=attitude),
         )
     log = log_arrays(result, reference.name)
     from birdsim.flight.saturation import report_saturation
@@ -154,16 +179,18 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
 
     options = options_from_args(args)
     if is_log(args.manoeuvre):
-        if args.gust or args.open_loop:
+        if args.gust or args.open_loop or args.attitude:
             raise BirdsimError(
-                "--gust/--open-loop do not apply to a flight log; allowed: a manoeuvre name or file with them"
+                "--gust/--open-loop/--attitude do not apply to a flight log; allowed: a manoeuvre name or file with them"
             )
         log = load_log(args.manoeuvre, "LOG")
         name = str(log.get("manoeuvre", "")) or Path(args.manoeuvre).stem
         default_out = Path("renders") / f"{slug(Path(args.manoeuvre).stem)}.mp4"
         reference = None
     else:
-        reference, model, gusts = flight_reference(args.manoeuvre, args.model, args.gust)
+        reference, model, gusts, attitude = flight_reference(
+            args.manoeuvre, args.model, args.gust, args.attitude
+        )
         name = reference.name
         default_out = Path("renders") / f"{slug(name)}-{model}.mp4"
     if options.seconds is None:  # the whole flight: one line when it would exceed the longest video
@@ -208,7 +235,13 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
             else options.seconds * options.beats_per_second
         )
         log = fly_reference(
-            reference, model, args, beats=beats, gusts=gusts, bird_and_table=bird_and_table
+            reference,
+            model,
+            args,
+            beats=beats,
+            gusts=gusts,
+            bird_and_table=bird_and_table,
+            attitude=attitude,
         )
     states = flight_states(
         log,

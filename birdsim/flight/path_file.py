@@ -239,9 +239,10 @@ def _number(arg: str, raw: Any, allowed: str = "a finite number") -> float:
     return float(raw)
 
 
-def attitude_for(flight: object, attitude: str | None, name: str) -> str:
+def attitude_for(flight: object, attitude: str | None, name: str, command: str = "fly") -> str:
     """The attitude to fly: the one asked for, else free for a path that turns out of
-    the vertical plane (said on stderr in one line) and posed for any other.
+    the vertical plane (said on stderr in one line, ``birdsim COMMAND: ...``) and posed
+    for any other.
 
     Raises:
         BirdsimError: ``--attitude posed`` with a turning path (a posed body cannot bank).
@@ -256,7 +257,7 @@ def attitude_for(flight: object, attitude: str | None, name: str) -> str:
         )
     if attitude is None:
         print(
-            f"birdsim fly: {name} turns out of the vertical plane: flying it with "
+            f"birdsim {command}: {name} turns out of the vertical plane: flying it with "
             "--attitude free (bank to turn)",
             file=sys.stderr,
         )

@@ -30,9 +30,13 @@ def _per_beat(t_beats: np.ndarray, values: np.ndarray, n: int) -> np.ndarray:
     return np.array([values[idx == b].mean(axis=0) for b in range(n)])
 
 
-def turn_figures(arrays: dict[str, Any]) -> dict[str, Any] | None:
-    """Heading change, bank and sideslip of a flight whose reference leaves the x-z
-    plane (None for a straight one): degrees, per whole wingbeat."""
+def turn_series(arrays: dict[str, Any]) -> dict[str, np.ndarray] | None:
+    """Per whole wingbeat of a flight whose reference leaves the x-z plane (None for a
+    straight one or one shorter than two wingbeats), radians: ``psi`` and ``psi_ref``
+    (headings of the flown and reference wingbeat-mean horizontal velocity, unwrapped),
+    ``bank`` and ``sideslip`` (wingbeat means), ``coordinated`` (``atan(a_c / g)`` of the
+    flown path, right wing down > 0 as ``bank``), ``steady`` (bool) and ``t_beats`` (the
+    middle of each wingbeat)."""
     y_ref = np.asarray(arrays.get("y_ref", np.zeros(1)), dtype=float)
     if not np.any(y_ref != 0.0) or "quat" not in arrays:
         return None
@@ -59,6 +63,25 @@ def turn_figures(arrays: dict[str, Any]) -> dict[str, Any] | None:
     slip = _per_beat(t_beats, sideslip_of(np.asarray(arrays["quat"], dtype=float), vel), n)
     a_c = np.hypot(v[:, 0], v[:, 1]) * np.gradient(psi) / beat_time  # to the left
     coordinated = np.arctan2(-a_c, float(arrays["gravity"]))  # seed: right wing down > 0
+    return {
+        "t_beats": np.arange(n) + 0.5,
+        "psi": psi,
+        "psi_ref": psi_ref,
+        "bank": bank,
+        "sideslip": slip,
+        "coordinated": coordinated,
+        "steady": steady,
+    }
+
+
+def turn_figures(arrays: dict[str, Any]) -> dict[str, Any] | None:
+    """Heading change, bank and sideslip of a flight whose reference leaves the x-z
+    plane (None for a straight one): degrees, per whole wingbeat (:func:`turn_series`)."""
+    series = turn_series(arrays)
+    if series is None:
+        return None
+    psi, psi_ref, steady = series["psi"], series["psi_ref"], series["steady"]
+    bank, slip, coordinated = series["bank"], series["sideslip"], series["coordinated"]
     out: dict[str, Any] = {
         "heading_change_deg": math.degrees(psi[-1] - psi[0]),
         "heading_change_reference_deg": math.degrees(psi_ref[-1] - psi_ref[0]),
@@ -79,4 +102,4 @@ def turn_figures(arrays: dict[str, Any]) -> dict[str, Any] | None:
     return out
 
 
-__all__ = ["turn_figures"]
+__all__ = ["turn_figures", "turn_series"]

@@ -12,7 +12,7 @@ dissertation tested against our numbers (:mod:`birdsim.report.claims`,
 
 Modules: ``records`` (Resolution, Claim, Entry, Context), ``claims`` and
 ``sweep_claims`` (the statements, registered per figure), ``fig_cycle``, ``fig_costs``,
-``fig_sweeps``, ``fig_tables`` (the families), ``page`` (HTML), this module (the list
+``fig_sweeps``, ``fig_tables``, ``fig_turns`` (the families), ``page`` (HTML), this module (the list
 of families and the run).
 """
 
@@ -33,6 +33,7 @@ from birdsim.report.fig_costs import fig_landscapes, fig_wrist_activity
 from birdsim.report.fig_cycle import fig_histories, fig_paths, fig_thrust, fig_wrist
 from birdsim.report.fig_sweeps import fig_sweeps
 from birdsim.report.fig_tables import fig_optimisers, fig_tables
+from birdsim.report.fig_turns import fig_turns
 from birdsim.report.page import render_html
 from birdsim.report.records import (
     FULL,
@@ -82,6 +83,7 @@ FAMILIES: tuple[Family, ...] = (
         fig_optimisers,
     ),
     Family("smoothness", "9. Smoothness of the lookup tables (sec. 4.1)", fig_smoothness),
+    Family("turns", "10. Turning flight: ground tracks and bank (issue 23)", fig_turns),
 )
 
 

@@ -45,6 +45,7 @@ def _shipped_birds() -> dict[str, Path]:
 def create_app(root: str | Path) -> Flask:
     """The studio for the folder ``root`` (the only folder it reads files from)."""
     from birdsim.flight.presets import DEMO_MODEL, PATH_PRESETS
+    from birdsim.flight.turn_presets import TURN_PRESETS
 
     root = Path(root).resolve()
     app = Flask("birdsim.studio", static_folder=None)
@@ -59,7 +60,7 @@ def create_app(root: str | Path) -> Flask:
             "birds": [*_shipped_birds(), *files],
             "models": list(MODELS),
             "default_model": DEMO_MODEL,
-            "presets": list(PATH_PRESETS),
+            "presets": [*PATH_PRESETS, *TURN_PRESETS],  # the turns fly free (bank to turn)
             "files": files,
         }
 
@@ -73,8 +74,9 @@ def create_app(root: str | Path) -> Flask:
 
     def source_arg(name: str) -> str:
         from birdsim.flight.presets import PATH_PRESETS
+        from birdsim.flight.turn_presets import TURN_PRESETS
 
-        if name in PATH_PRESETS:
+        if name in PATH_PRESETS or name in TURN_PRESETS:
             return name
         return str(inside(root, name, "manoeuvre file"))
 
@@ -108,7 +110,13 @@ def create_app(root: str | Path) -> Flask:
         from birdsim.flight.path_file import get_flight
 
         name = request.args.get("source", "")
-        flight = get_flight(source_arg(name))
+        flight = get_flight(source_arg(name), turning=True)
+        if getattr(flight, "is_3d", False):  # the editor's table has no y, heading, turn_rate
+            return jsonify(
+                path=None,
+                note=f"{name!r} turns out of the vertical plane: flown as it is (attitude "
+                "free, bank to turn), not edited here",
+            )
         data = path_dict(flight)
         if data is None:
             return jsonify(

@@ -131,10 +131,15 @@ def fly_request(
     from birdsim.flight.manoeuvre import Manoeuvre
     from birdsim.flight.path_file import get_flight
     from birdsim.flight.presets import DEMO_MODEL
+    from birdsim.flight.simulate import SimConfig
     from birdsim.physics.kinematics import get_model
 
     check_sizes(req)
-    flight = load_path(req.path) if req.path is not None else get_flight(str(req.source))
+    flight = (
+        load_path(req.path) if req.path is not None else get_flight(str(req.source), turning=True)
+    )
+    # a path out of the vertical plane flies free (bank to turn), as `birdsim fly` chooses
+    attitude = "free" if getattr(flight, "is_3d", False) else "posed"
     model = get_model(req.model or DEMO_MODEL).name
     gusts = [parse_gust(g) for g in req.gusts]
     bird = load_bird(req.bird)
@@ -160,6 +165,7 @@ def fly_request(
         gusts=gusts,
         open_loop=req.open_loop,
         progress=progress,
+        config=SimConfig(attitude=attitude),
     )
     log = log_arrays(result, reference.name)
     phases = flight.regime if isinstance(flight, Manoeuvre) else getattr(reference, "regime", None)

@@ -76,7 +76,7 @@ class Store:
                 from birdsim.flight.path_file import get_flight
 
                 if job.request.path is None:
-                    flight = get_flight(str(job.request.source))
+                    flight = get_flight(str(job.request.source), turning=True)
                     beats = float(getattr(flight, "duration_beats", 0) or 0) or None
                 else:
                     beats = float(job.request.path.get("duration") or 0) or None
