@@ -284,7 +284,9 @@ def touchdown(
             settle[:] = [t, float(np.mean(q)) + 0.5 * cb.weight / mu.stiffness, cb.hip_ref]
             cb.set_leg_damping(True)
         if braking[0]:  # before contact the leg hangs relaxed at its standing length
-            if cb.foot_normal() <= 0.0 and contact[0] < 0.0:
+            # (the force felt at the end of the last step: inside the step the
+            # contact's force is not solved yet)
+            if cb.felt_normal <= 0.0 and contact[0] < 0.0:
                 return mu.spring(q, qd, mu.q_stand)
             if contact[0] < 0.0:
                 contact[0] = t
