@@ -235,6 +235,11 @@ class ContactBird:
             for i in range(d.ncon)
         ) and bool(np.any(d.qfrc_constraint[:3]))
 
+    def body_pitch(self) -> float:
+        """The torso's pitch (rad, nose up; :func:`~birdsim.mujoco.model.pitch_quat`)."""
+        w, x, y, z = self.d.qpos[3:7]
+        return -math.asin(max(-1.0, min(1.0, 2.0 * (w * y - z * x))))
+
     def com(self) -> tuple[np.ndarray, np.ndarray]:
         """Whole bird's centre of mass and its velocity (world)."""
         mujoco.mj_fwdPosition(self.m, self.d)
