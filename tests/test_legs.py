@@ -135,3 +135,19 @@ def test_leg_geometry_standing_height():
     g = leg_geometry(reduced_bird(demo_bird()))
     assert g.sole_below_origin(g.q_stand) == pytest.approx(0.06 + 0.21, abs=1e-12)
     assert mujoco.mjtJoint.mjJNT_SLIDE  # the leg is a slide joint (model test above)
+
+
+def test_jump_lifts_off_at_the_first_wingbeats_pitch():
+    """The hips' pitch trim brings the body to ``pitch_to`` by lift-off (the posed flight
+    starts at that pitch: without the trim the body stood 8-10 deg higher and the
+    animation's pitch jumped in one step).  2 deg: the push itself pitches the body up
+    by about 1.5 deg in its last half wingbeat."""
+    from birdsim.flight.contact import REST_WINGS
+    from birdsim.mujoco.driver import wing_arrays
+
+    pitch_to = np.radians(66.9)
+    with ContactBird("m3", demo_bird()) as cb:
+        cb.hold_qpos = wing_arrays(cb.m, REST_WINGS)[0][0]
+        cb.place_standing(PERCH_TOP, np.radians(20.0))
+        jump(cb, after_beats=0.0, pitch_to=pitch_to)
+        assert abs(cb.body_pitch() - pitch_to) < np.radians(2.0)

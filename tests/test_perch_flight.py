@@ -124,3 +124,26 @@ def test_fly_legs_bad_input_one_line(args, word, tmp_path):
     assert word in run.stderr and "Traceback" not in run.stderr
     assert len(run.stderr.strip().splitlines()) == 1
     assert not out.exists()
+
+
+def test_render_legs_still_at_reaches_the_flown_log():
+    """``render --legs --still --at`` is checked against the flown log (longer than the
+    path: the stand after the landing), not the path's length."""
+    from birdsim.commands.render_flight import _at_in_flown
+    from birdsim.errors import BirdsimError
+
+    omega = 2.0 * np.pi * 8.0  # 8 wingbeats per second
+    log = {"t": np.linspace(0.0, 47.0 / 8.0, 100), "omega": omega}  # 47 wingbeats flown
+    assert _at_in_flown("45", log) == 45.0  # past the landing path's 40 wingbeats
+    assert _at_in_flown(None, log) == pytest.approx(23.5)  # the middle
+    with pytest.raises(BirdsimError, match=r"--at '60' is past the flown log.*47"):
+        _at_in_flown("60", log)
+
+
+@pytest.mark.slow
+def test_render_legs_still_after_the_path(tmp_path):
+    png = tmp_path / "s.png"
+    cmd = [sys.executable, "-m", "birdsim.cli", "render", "landing", "--legs", "--size", "160x128"]
+    run = subprocess.run([*cmd, "--still", str(png), "--at", "45"], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    assert png.stat().st_size > 0

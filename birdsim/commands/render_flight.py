@@ -6,7 +6,10 @@ from __future__ import annotations
 
 import argparse
 import dataclasses
+import math
 from pathlib import Path
+
+import numpy as np
 
 from birdsim.commands.common import (
     bird_from_args,
@@ -215,7 +218,10 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
         )
     else:
         clip_beats = float(log["t"][-1]) * float(log["omega"]) / (2 * 3.141592653589793)
-    at = check_still(args, clip_beats)
+    # --legs flies longer than the path (the stand before a take-off, the touchdown and
+    # the stand after a landing): --at is checked against the flown log once it is flown
+    legs_log = reference is not None and getattr(args, "legs", False) and options.seconds is None
+    at = check_still(args, float("inf") if legs_log else clip_beats)
     select_gl(args.gl)  # a missing GL library -> one line; MUJOCO_GL set before the renderer starts
     # the bird and the table before any output is checked (checking makes its folder)
     bird_and_table = flight_bird_and_table(args, model) if reference is not None else None
@@ -243,6 +249,8 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
             bird_and_table=bird_and_table,
             attitude=attitude,
         )
+        if legs_log and at is not None:
+            at = _at_in_flown(args.at, log)
     states = flight_states(
         log,
         dataclasses.replace(options, seconds=None) if reference is not None else options,
@@ -274,3 +282,17 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
 
         print(f"wrote {contact_sheet(result.path, args.sheet)} (contact sheet)")
     return 0
+
+
+def _at_in_flown(raw: str | None, log: dict) -> float:
+    """``--at`` (already a number >= 0, or None: the middle) inside the flown log's
+    length in wingbeats."""
+    t = np.asarray(log["t"], dtype=float)
+    flown = float(t[-1] - t[0]) * float(log["omega"]) / (2 * math.pi)
+    if raw is None:
+        return 0.5 * flown
+    if float(raw) > flown:
+        raise BirdsimError(
+            f"--at {raw!r} is past the flown log; allowed: a time in wingbeats in [0, {flown:g}]"
+        )
+    return float(raw)

@@ -149,6 +149,11 @@ class ContactBird:
         self.wing_path: WingPath | None = None
         #: largest |entry| of the root's applied force over every step (0.0 exactly)
         self.root_applied_max = 0.0
+        #: the feet's total normal force at the end of the last step (what a leg law may
+        #: read: inside a step, between ``mj_step1`` and ``mj_step2``, MuJoCo's
+        #: ``efc_force`` is not yet solved and holds whatever its arena memory held,
+        #: which made the landing's contact differ from run to run)
+        self.felt_normal = 0.0
 
     def __enter__(self) -> "ContactBird":
         if mujoco.get_mjcb_passive() is not None:
@@ -212,7 +217,8 @@ class ContactBird:
         return self.d.qfrc_constraint[:3].copy()
 
     def foot_normal(self) -> float:
-        """Total normal force on the feet (sum over the feet's contacts)."""
+        """Total normal force on the feet (sum over the feet's contacts), valid after a
+        step only (inside one, in a leg law, read :attr:`felt_normal`)."""
         d, m = self.d, self.m
         total, f6 = 0.0, np.zeros(6)
         for i in range(d.ncon):
@@ -228,6 +234,11 @@ class ContactBird:
             d.contact[i].geom1 in self.feet or d.contact[i].geom2 in self.feet
             for i in range(d.ncon)
         ) and bool(np.any(d.qfrc_constraint[:3]))
+
+    def body_pitch(self) -> float:
+        """The torso's pitch (rad, nose up; :func:`~birdsim.mujoco.model.pitch_quat`)."""
+        w, x, y, z = self.d.qpos[3:7]
+        return -math.asin(max(-1.0, min(1.0, 2.0 * (w * y - z * x))))
 
     def com(self) -> tuple[np.ndarray, np.ndarray]:
         """Whole bird's centre of mass and its velocity (world)."""
@@ -266,6 +277,7 @@ class ContactBird:
         d.qfrc_applied[self.hips] = hips
         self.root_applied_max = max(self.root_applied_max, float(np.abs(d.qfrc_applied[:6]).max()))
         mujoco.mj_step2(m, d)
+        self.felt_normal = self.foot_normal()
         self.time += self.h
         if not (np.all(np.isfinite(d.qpos)) and np.all(np.isfinite(d.qvel))):
             raise BirdsimError(f"the contact simulation diverged at t={self.time:.3f}")

@@ -29,6 +29,10 @@ TWO_PI = 2.0 * math.pi
 PHASES = ("standing", "take-off", "flight", "landing")
 
 
+#: Time constant of the hips' pitch trim during the rise, crouch and push (wingbeats).
+PITCH_TRIM_BEATS = 0.5
+
+
 @dataclass(frozen=True)
 class JumpProfile:
     """The legs' take-off (times in wingbeats, forces in the bird's weights)."""
@@ -112,15 +116,26 @@ def jump(
     depth = prof.crouch_depth * mu.q_stand
     q0 = mu.q_ref_stand
     hip0 = cb.hip_ref
+    # the hips' reference is trimmed by the body's pitch error (integral, over
+    # PITCH_TRIM_BEATS): hip_for assumes vertical legs, the feet on the bar let them lean,
+    # and the body reached 75 deg for a first wingbeat at 67 (the flight then started
+    # 8-10 deg lower in one step at lift-off)
+    trim = [0.0, cb.body_pitch(), pitch_to]  # correction (rad), pitch at start, target
+
+    def trimmed(target: float) -> None:
+        if pitch_to is not None:
+            trim[0] += cb.h * (target - cb.body_pitch()) / (PITCH_TRIM_BEATS * TWO_PI)
+
     if pitch_to is not None:
         hip1 = cb.hip_for(pitch_to)
         t_r = prof.rise_beats * TWO_PI
         for k in range(beats_to_steps(prof.rise_beats)):
             blend = 0.5 * (1.0 - math.cos(math.pi * min(k * cb.h / t_r, 1.0)))
-            cb.hip_ref = hip0 + blend * (hip1 - hip0)
+            trimmed(trim[1] + blend * (pitch_to - trim[1]))
+            cb.hip_ref = hip0 + blend * (hip1 - hip0) + trim[0]
             cb.step(stand, 0.0)
             rec.add(cb, 0)
-        cb.hip_ref = hip1
+        cb.hip_ref = hip1 + trim[0]
 
     def crouch(t: float, q: np.ndarray, qd: np.ndarray) -> np.ndarray:
         blend = 0.5 * (1.0 - math.cos(math.pi * min(t / t_c, 1.0)))
@@ -129,6 +144,9 @@ def jump(
     if unfold is not None:
         cb.wing_path = cb.wing_blend(unfold[0], unfold[1], cb.time, t_c)
     for k in range(beats_to_steps(prof.crouch_beats)):
+        if pitch_to is not None:
+            trimmed(pitch_to)
+            cb.hip_ref = hip1 + trim[0]
         cb.step(crouch, k * cb.h)
         rec.add(cb, 1)
     if unfold is not None:  # held at the first wingbeat's pose for the push
@@ -151,6 +169,9 @@ def jump(
     k = 0
     limit = beats_to_steps(prof.settle_beats + 4.0)
     while k < limit:
+        if pitch_to is not None and t_lo is None:
+            trimmed(pitch_to)
+            cb.hip_ref = hip1 + trim[0]
         cb.step(push, k * cb.h)
         rec.add(cb, 1)
         k += 1
@@ -284,7 +305,9 @@ def touchdown(
             settle[:] = [t, float(np.mean(q)) + 0.5 * cb.weight / mu.stiffness, cb.hip_ref]
             cb.set_leg_damping(True)
         if braking[0]:  # before contact the leg hangs relaxed at its standing length
-            if cb.foot_normal() <= 0.0 and contact[0] < 0.0:
+            # (the force felt at the end of the last step: inside the step the
+            # contact's force is not solved yet)
+            if cb.felt_normal <= 0.0 and contact[0] < 0.0:
                 return mu.spring(q, qd, mu.q_stand)
             if contact[0] < 0.0:
                 contact[0] = t
