@@ -192,16 +192,7 @@ def land(
         "touchdown_pitch_deg": math.degrees(float(a["pitch"][i])),
         "root_applied_max_contact": td.root_applied_max,
     }
-    return FlightResult(
-        joined,
-        bird,
-        result.model,
-        result.param_names,
-        result.gains,
-        result.open_loop,
-        result.projection_max,
-        meta,
-    )
+    return replace(result, arrays=joined, bird=bird, meta=meta)
 
 
 __all__ = ["land", "landing_path", "touchdown_pose"]

@@ -286,16 +286,7 @@ def take_off(
     }
     if landing is not None:
         meta["legs"]["landing"] = landing
-    return FlightResult(
-        joined,
-        bird,
-        result.model,
-        result.param_names,
-        result.gains,
-        result.open_loop,
-        result.projection_max,
-        meta,
-    )
+    return replace(result, arrays=joined, bird=bird, meta=meta)
 
 
 __all__ = [
