@@ -26,7 +26,7 @@ import numpy as np
 
 from birdsim.mujoco import capi
 from birdsim.mujoco.callback import AeroCallback
-from birdsim.mujoco.tail import ALPHA_MAX, SPREAD_MIN, TAIL_CD0, TailControls, tail_frame
+from birdsim.mujoco.tail import SPREAD_MIN, TailControls, plane_force, tail_frame
 from birdsim.physics.aero import SeedPolar
 from birdsim.physics.jit import numba
 
@@ -120,6 +120,9 @@ def _body_drag(m, d, passive, site_xpos, site_xmat, wind, fl, ints, vel, buf, ze
     )
 
 
+_plane_force = plane_force  # compiled below, with the kernels
+
+
 def _tail(m, d, passive, site_xpos, site_xmat, wind, fl, ints, fr, vel, buf, zero, tail_out):
     """The tail's force (birdsim.mujoco.tail.tail_force); ``tail_out`` (4,): its force in
     torso axes and its angle of attack."""
@@ -138,18 +141,7 @@ def _tail(m, d, passive, site_xpos, site_xmat, wind, fl, ints, fr, vel, buf, zer
         f0 = f1 = f2 = 0.0
         a = 0.0
     else:
-        v = math.sqrt(v2)
-        profile = 0.5 * rho * v2 * 0.5 * b * length * TAIL_CD0
-        if ux <= 0.0:
-            fx, fz = -profile * ux / v, -profile * uz / v
-            a = 0.0
-        else:
-            alpha = math.atan2(-uz, ux)
-            a = max(-ALPHA_MAX, min(ALPHA_MAX, alpha))
-            lift = 0.25 * math.pi * rho * v2 * a * b * b
-            drag = 0.5 * lift * a + profile
-            fx = (lift * -uz - drag * ux) / v
-            fz = (lift * ux - drag * uz) / v
+        fx, fz, a = _plane_force(ux, uz, v2, b, length, rho)
         f0 = fr[0, 0] * fx + fr[0, 2] * fz
         f1 = fr[1, 0] * fx + fr[1, 2] * fz
         f2 = fr[2, 0] * fx + fr[2, 2] * fz
@@ -184,6 +176,7 @@ if numba is not None and capi.AVAILABLE:
     _opts = dict(cache=True, inline="always")
     _wings = numba.njit(**_opts)(_wings)
     _body_drag = numba.njit(**_opts)(_body_drag)
+    _plane_force = numba.njit(**_opts)(plane_force)
     _tail = numba.njit(**_opts)(_tail)
     apply_aero = numba.njit(cache=True)(_apply_aero)
 else:  # pragma: no cover

@@ -101,20 +101,27 @@ def tail_force(
     v2 = ux * ux + uz * uz
     if v2 == 0.0:
         return np.zeros(3), 0.0
-    b = span * spread
+    fx, fz, a = plane_force(ux, uz, v2, span * spread, length, rho)
+    return np.array([fr[i][0] * fx + fr[i][2] * fz for i in range(3)]), a
+
+
+def plane_force(
+    ux: float, uz: float, v2: float, b: float, length: float, rho: float
+) -> tuple[float, float, float]:
+    """The tail's force in its own chord (x) and normal (z) axes for the air's velocity
+    ``(ux, uz)`` in them (``v2 = ux^2 + uz^2 > 0``), spread span ``b``: slender-wing
+    lift, induced and profile drag; and the angle of attack (rad, capped).  Plain floats:
+    the compiled callback (:mod:`birdsim.mujoco.aero_kernel`) compiles this same
+    function."""
     v = math.sqrt(v2)
     profile = 0.5 * rho * v2 * 0.5 * b * length * TAIL_CD0
     if ux <= 0.0:  # flow from behind: no slender-wing lift
-        fx, fz = -profile * ux / v, -profile * uz / v
-        a = 0.0
-    else:
-        alpha = math.atan2(-uz, ux)
-        a = max(-ALPHA_MAX, min(ALPHA_MAX, alpha))
-        lift = 0.25 * math.pi * rho * v2 * a * b * b
-        drag = 0.5 * lift * a + profile
-        fx = (lift * -uz - drag * ux) / v
-        fz = (lift * ux - drag * uz) / v
-    return np.array([fr[i][0] * fx + fr[i][2] * fz for i in range(3)]), a
+        return -profile * ux / v, -profile * uz / v, 0.0
+    alpha = math.atan2(-uz, ux)
+    a = max(-ALPHA_MAX, min(ALPHA_MAX, alpha))
+    lift = 0.25 * math.pi * rho * v2 * a * b * b
+    drag = 0.5 * lift * a + profile
+    return (lift * -uz - drag * ux) / v, (lift * ux - drag * uz) / v, a
 
 
 __all__ = [
@@ -124,6 +131,7 @@ __all__ = [
     "SPREAD_MIN",
     "TAIL_CD0",
     "TailControls",
+    "plane_force",
     "tail_cp_offset",
     "tail_force",
     "tail_frame",
