@@ -97,7 +97,7 @@ def test_side_gust_is_flown_back_by_banking():
     lateral loop banks it back.  A regression guard on the recovery: the largest path
     error stays below 0.2 semispan (measured 0.155; 0.53 before the attitude loop placed
     its gains for the flapping's own roll damping and cancelled its cross terms,
-    docs/flight.md) and from 7 wingbeats after the gust the error is within 0.05 semispan
+    docs/free-body.md) and from 7 wingbeats after the gust the error is within 0.05 semispan
     (measured at most 0.042 over wingbeats 11-15).  Not yet within the issue's 2 degrees
     of level by then (roll and yaw swing by 5 degrees: measured, not asserted).  With the
     lateral loop off (LATERAL_ROLL_MAX = 0) it keeps drifting (-0.30 at wingbeat 15,
@@ -232,7 +232,7 @@ def test_free_take_off_and_landing_meet_the_targets(preset, posed, measured):
     0.051), wingbeat-mean pitch within 3 degrees RMS of the command (measured 2.1 and
     2.7), no attitude- or table-saturated sample.  Before the stroke plane's compensation
     took the table's pitch target (not its smoothed output) and the pitch command was
-    planned along the path: 0.073 and 0.130 (docs/flight.md)."""
+    planned along the path: 0.073 and 0.130 (docs/free-body.md)."""
     a, s = _free(preset)
     assert s["rms_error_after_start"] <= 1.5 * posed, (s["rms_error_after_start"], measured)
     pe = _beat_means(a, "pitch")[2:] - _beat_means(a, "pitch_command")[2:]

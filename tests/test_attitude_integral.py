@@ -44,7 +44,7 @@ def test_authority_bound_is_each_axis_own_inputs_at_their_bounds():
     yaw = sum(abs(JAC[2, c]) * HI[c] for c in LAT_INPUTS) / 1.3066
     np.testing.assert_allclose(got, [roll, pitch, yaw], rtol=1e-12)
     # the pigeon's pitch: the radians' bound is a moment of 0.0025 table units, the
-    # inputs deliver 30 times more (the flown bias was 0.002-0.008, docs/flight.md)
+    # inputs deliver 30 times more (the flown bias was 0.002-0.008, docs/free-body.md)
     assert INTEGRAL_LIMIT_RAD * wa[1] ** 2 * 0.782 < 0.0026
     assert got[1] > 25 * INTEGRAL_LIMIT_RAD * wa[1] ** 2
     # a symmetric input never enters the lateral bound and vice versa

@@ -6,7 +6,7 @@ rad per time unit) against the analytic core's exact ones: 1 % of the largest en
 (measured agreement: 4 digits; the pitch damping differs by the tail's, which the core
 does not have); the closed-loop poles of the gains: 1e-6 relative (polynomial roots of a
 triple or double root, whose round-off goes as its cube or square root); flight figures
-bounded near what they measured (docs/flight.md), below the issue's targets."""
+bounded near what they measured (docs/free-body.md), below the issue's targets."""
 
 from __future__ import annotations
 

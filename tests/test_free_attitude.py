@@ -87,7 +87,7 @@ def test_free_cruise_holds_its_attitude_with_nothing_on_the_root():
     degrees peak to peak, a posed body shows none).  The path's altitude RMS is bounded
     at 0.04 semispan, the measured 0.0298 with margin: ABOVE the issue's target of 1.5 x
     the posed 0.0137
-    (docs/flight.md, "Six degrees of freedom")."""
+    (docs/free-body.md)."""
     from birdsim.commands.fly import load_table_for
     from birdsim.flight.flightlog import log_arrays, summary
     from birdsim.flight.freeflight import fly

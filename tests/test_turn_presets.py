@@ -41,7 +41,7 @@ def test_turn_90_turns_90_degrees_level_at_slow_speed():
     # the steady arc: radius SLOW_RADIUS (3 semispans = 0.99 m for the pigeon at 3.3 m/s)
     a = np.hypot(s["ax"], s["ay"])
     assert a.max() == pytest.approx(SLOW_SPEED**2 / SLOW_RADIUS, rel=1e-12)
-    assert SLOW_SPEED * 16.63 == pytest.approx(3.33, abs=0.01)  # pigeon speed scale, docs/flight.md
+    assert SLOW_SPEED * 16.63 == pytest.approx(3.33, abs=0.01)  # pigeon speed scale, docs/turning.md
     assert SLOW_RADIUS * 0.33 == pytest.approx(0.99)
 
 

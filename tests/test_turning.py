@@ -4,7 +4,7 @@ with the attitude free.
 Tolerances: the attitude algebra is exact (1e-12, round-off); the body rates and their
 derivatives are checked against central differences of the attitude matrix (step 1e-5:
 truncation ~1e-10, round-off ~1e-11; 1e-8); the flight figures are bounded near the
-measured ones (docs/flight.md "Bank to turn"), with the issue's targets where they are
+measured ones (docs/turning.md, "Bank to turn"), with the issue's targets where they are
 met (no saturated sample, the circle's path RMS 0.083 semispan and its bank within 3
 degrees of atan(a_c / g) in every steady wingbeat (largest miss 2.93), sideslip,
 momentum to 1 % of the weight) and the measured figure where a target is not met yet

@@ -73,12 +73,12 @@ def register(sub: argparse._SubParsersAction) -> None:
         "--attitude",
         choices=("posed", "free"),
         default=None,
-        help="posed: the body's pitch prescribed (default for a path in the vertical plane); free: all six DOF free, held by the attitude loop (experimental: docs/flight.md; the default for a turning path, which a posed body cannot fly)",
+        help="posed: the body's pitch prescribed (default for a path in the vertical plane); free: all six DOF free, held by the attitude loop (docs/free-body.md; the default for a turning path, which a posed body cannot fly)",
     )
     p.add_argument(
         "--legs",
         action="store_true",
-        help="legs and feet (issue 25): a path that starts at rest on the perch is a standing start and a jump; one that ends there, a touchdown and standing (docs/flight.md)",
+        help="legs and feet (issue 25): a path that starts at rest on the perch is a standing start and a jump; one that ends there, a touchdown and standing (docs/legs.md)",
     )
     p.add_argument(
         "--open-loop",

@@ -58,7 +58,7 @@ from birdsim.mujoco.tail import TailControls
 #: wingbeats (the one-wingbeat estimate and the inputs' smoothing delay the loop by about
 #: a wingbeat); with it, over the four presets, 1 and 1.5 are worse than 2, and 3 is the
 #: best (cruise, hover within 3 degrees of pitch; take-off and landing the least
-#: saturated); 4 loses cruise's pitch again (docs/flight.md).
+#: saturated); 4 loses cruise's pitch again (docs/free-body.md).
 ATTITUDE_BEATS = 2.0
 #: ... per axis (roll, pitch, yaw): the lateral axes keep 2 wingbeats, with which a side
 #: gust's roll and yaw are back within 2 degrees in 4 wingbeats (3: 5 and 3 degrees
@@ -81,7 +81,7 @@ RATE_CANCEL = True
 #: loop's yaw authority is the one measured in flight (a quarter of the held body's for
 #: the differential flap amplitude), but the loop then asks for four times the input and
 #: roll and yaw limit-cycle at a period of two wingbeats (+-2 degrees of roll in a yaw
-#: step); the side gust's peak error rose from 0.155 to 0.187 (docs/flight.md).
+#: step); the side gust's peak error rose from 0.155 to 0.187 (docs/free-body.md).
 ROCKING = False
 #: Regularisation of the allocation (relative to the inputs' bounds).
 LAMBDA = 1e-4
@@ -98,7 +98,7 @@ INTEGRAL_LIMIT_RAD = 0.5
 #: and the integral was at its bound in 56 % of the control steps (landing 52 %; the
 #: seed bird's presets: never).  Off: with it the pigeon's cruise improved (0.0187 ->
 #: 0.0089 m, pitch 14.9 -> 6.6 deg RMS) but its landing did not (0.068 -> 0.101 m), and
-#: the seed bird's side gust came back more slowly; measured in docs/flight.md ("The
+#: the seed bird's side gust came back more slowly; measured in docs/free-body.md ("The
 #: pigeon's attitude, third stage").
 INTEGRAL_AUTHORITY = False
 

@@ -16,7 +16,7 @@ part is only ``cos(pitch) sin(roll)`` of it and the air meets the body from the 
 (``asin(sin(pitch) sin(roll))`` = 39 degrees out of the symmetry plane at a 48-degree
 roll, a sideslip of ``atan(tan(pitch) sin(roll))`` = 49 degrees): the
 table's wingbeat no longer gives the table's force, and the first bank-to-turn
-controller (a Z-Y-X roll command) drifted outside every turn (docs/flight.md).
+controller (a Z-Y-X roll command) drifted outside every turn (docs/turning.md).
 
 The attitude loop keeps its Z-Y-X error (``flight_arrays.error_rotvec``): the command is
 handed to it as the Z-Y-X angles of the same rotation (:func:`zyx_of`).

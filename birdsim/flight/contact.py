@@ -1,5 +1,5 @@
 """The bird on its feet: free flight's partitioned dynamics with the legs free and the
-feet in contact (issue 25; docs/flight.md, "Legs, contact, take-off and landing").
+feet in contact (issue 25; docs/legs.md).
 
 Reduced units (semispans, omega = 1, mass ratio, reduced gravity), MuJoCo world axes
 (x forward, y left, z up), the arena of :mod:`birdsim.mujoco.arena` (floor and perch).

@@ -45,7 +45,7 @@ SP_MARGIN = 0.8
 #: Wingbeats ahead the stroke plane's compensation predicts the body's pitch (the
 #: estimated pitch rate times this): the lag of the offset's smoothing, two cascaded
 #: filters of INPUT_SMOOTHING_BEATS.  Measured (take-off / landing path RMS): 0: 0.032 /
-#: 0.048, 0.2: 0.034 / 0.042, 0.25: 0.034 / 0.042, 0.375: 0.036 / 0.044 (docs/flight.md).
+#: 0.048, 0.2: 0.034 / 0.042, 0.25: 0.034 / 0.042, 0.375: 0.036 / 0.044 (docs/free-body.md).
 SP_LEAD = 2.0 * INPUT_SMOOTHING_BEATS
 #: Plan the free body's pitch command along the known path (birdsim.flight.pitch_plan),
 #: from the feed-forward's table pitch PLAN_PER_BEAT times a wingbeat.

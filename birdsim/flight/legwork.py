@@ -1,5 +1,5 @@
 """Standing, the take-off jump and the touchdown, simulated with the feet in contact
-(issue 25; :class:`birdsim.flight.contact.ContactBird`; docs/flight.md, "Legs,
+(issue 25; :class:`birdsim.flight.contact.ContactBird`; docs/legs.md, "Legs,
 contact, take-off and landing").  Reduced units throughout.
 
 * Standing: the legs' spring-damper carries the weight at the standing length.

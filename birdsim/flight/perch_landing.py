@@ -1,5 +1,5 @@
 """Landing on a perch with legs (issue 25): free flight down to the touchdown, then the
-contact phase of :func:`birdsim.flight.legwork.touchdown` (docs/flight.md, "Legs,
+contact phase of :func:`birdsim.flight.legwork.touchdown` (docs/legs.md, "Legs,
 contact, take-off and landing").
 
 The path is the preset's (approach and flare) ending in a hover over the perch at the

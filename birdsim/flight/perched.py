@@ -10,7 +10,7 @@ and jumps (:class:`~birdsim.flight.legwork.JumpProfile`).  At lift-off
 at the top of the jump's climb (:func:`liftoff_path`) into the preset's later keyframes,
 flown by ``fly`` with the legs tucked.
 
-Hand-over (a limitation, documented in docs/flight.md): ``fly`` starts a new MuJoCo
+Hand-over (a limitation, documented in docs/legs.md): ``fly`` starts a new MuJoCo
 state from the lift-off state -- its trim moves the start by its probe wingbeat's mean
 error (logged as ``handover_shift``), the legs fold in one step, and the wings start
 beating at the first wingbeat's phase from rest.

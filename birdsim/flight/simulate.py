@@ -72,7 +72,7 @@ class SimConfig:
     momentum_projection: bool = True
     #: "free": the root's six DOF are integrated by MuJoCo (no root force or torque);
     #: "posed": the torso's orientation prescribed at the table pitch (the default until
-    #: the attitude loop holds the presets: docs/flight.md, "Six degrees of freedom")
+    #: the attitude loop holds the presets: docs/free-body.md)
     attitude: str = "posed"
     #: legs and feet in the model (issue 25), tucked and prescribed in flight
     legs: bool = False

@@ -46,12 +46,12 @@ SLOW_RADIUS = 3.0
 #: Radius of the cruise-speed circle and s-turn (semispans).
 CIRCLE_RADIUS = 25.0
 #: Wingbeats of each turn-rate ramp (slow turns, cruise turns): long enough for the free
-#: body's roll (1.5 and 2 asked more roll rate than its inputs give; docs/flight.md).
+#: body's roll (1.5 and 2 asked more roll rate than its inputs give; docs/turning.md).
 #: Cruise turns 6: with the attitude loop's gains placed for the flapping's roll damping
 #: (0.45 per unit inertia, 3.6 times the turn's roll pole) the moment that damping asks
 #: at a 4-wingbeat ramp's roll rate (1.4e-2 x inertia) saturates the differential inputs
 #: and the s-turn's reversal diverged (path RMS 1.12, 4 saturated wingbeats); ramps of
-#: 5 and 6 wingbeats: 0.38 and 0.18, none saturated (docs/flight.md).
+#: 5 and 6 wingbeats: 0.38 and 0.18, none saturated (docs/turning.md).
 RAMP_BEATS = 3.0
 CRUISE_RAMP_BEATS = 6.0
 #: Straight flight before the first and after the last turn (wingbeats).

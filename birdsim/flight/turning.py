@@ -16,7 +16,7 @@ track frame, :class:`birdsim.flight.track.TrackFrame`; the attitude of
   response, the one-wingbeat estimate), measured on the circle (first pass, before the
   attitude gains included the flapping's damping): lead 0, 0.25, 0.5, 0.75 and 1
   wingbeat gave 16-wingbeat path RMS 5.0 (diverging), 1.5, 0.82, 0.25 and 0.24
-  semispan; with those gains 0.5 is best (:data:`FF_LEAD`; docs/flight.md).
+  semispan; with those gains 0.5 is best (:data:`FF_LEAD`; docs/turning.md).
 """
 
 from __future__ import annotations

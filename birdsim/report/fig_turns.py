@@ -18,7 +18,7 @@ import numpy as np
 from birdsim.report.plot_base import add_footnote, pyplot, wrap
 
 #: The turning presets of the figure: the two that meet the tracking target (turn-90 and
-#: u-turn saturate today: docs/flight.md).
+#: u-turn saturate today: docs/turning.md).
 PRESETS = ("circle", "s-turn")
 #: The issue's coordinated-turn target: every steady wingbeat's bank within this of
 #: atan(a_c / g) (degrees).
