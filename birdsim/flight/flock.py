@@ -39,6 +39,7 @@ from pathlib import Path
 from typing import Any
 
 from birdsim.errors import BirdsimError
+from birdsim.flight.steering import STEERING_KEYS, SteeringConfig
 from birdsim.physics.bird import Bird
 
 if sys.version_info >= (3, 11):
@@ -53,7 +54,12 @@ MAX_BIRDS = 100
 MIN_START_SEPARATION = 1.0
 #: The shipped flock preset's file (``birdsim fly flock``).
 PRESET_FOLDER = Path(__file__).resolve().parent.parent / "data" / "flocks"
-FLOCK_KEYS = ("name", "path", "model", "attitude", "seconds", "bird", "description")
+FLOCK_KEYS = (
+    *("name", "path", "model", "attitude", "seconds", "bird", "description"),
+    *("rule", "steering"),
+)
+#: Group rules: follow the leader path with offsets; or that plus Reynolds steering.
+RULES = ("offsets", "steer")
 BIRD_KEYS = ("file", "offset", "path")
 
 
@@ -84,6 +90,10 @@ class Flock:
     attitude: str | None = None
     seconds: float | None = None
     description: str = ""
+    #: "offsets" (each bird the leader path with its offset) or "steer" (that as the
+    #: goal of Reynolds steering, the birds in lockstep: birdsim.flight.steering)
+    rule: str = "offsets"
+    steering: SteeringConfig = SteeringConfig()
 
     @property
     def n_birds(self) -> int:
@@ -158,6 +168,14 @@ def load_flock(source: str) -> Flock:
     name = data.get("name", p.stem)
     if not isinstance(name, str) or not name:
         raise FlockError(f"{arg}: name={name!r}; allowed: a non-empty string")
+    rule = data.get("rule", "offsets")
+    if rule not in RULES:
+        raise FlockError(f"{arg}: rule={rule!r}; allowed: {', '.join(RULES)}")
+    if rule == "steer" and attitude == "posed":
+        raise FlockError(
+            f"{arg}: rule 'steer' with attitude 'posed'; allowed: attitude free (a steered "
+            "bird moves sideways by banking)"
+        )
     return Flock(
         name,
         path,
@@ -166,7 +184,35 @@ def load_flock(source: str) -> Flock:
         attitude,
         None if seconds is None else float(seconds),
         str(data.get("description", "")),
+        rule,
+        _steering(arg, data.get("steering", {})),
     )
+
+
+def _steering(arg: str, table: Any) -> SteeringConfig:
+    """The [steering] table: positive finite numbers for SteeringConfig's fields."""
+    if not isinstance(table, dict):
+        raise FlockError(f"{arg}: steering must be a table ([steering])")
+    bad = sorted(set(table) - set(STEERING_KEYS))
+    if bad:
+        raise FlockError(
+            f"{arg}: steering key {bad[0]!r} is unknown; allowed: {', '.join(STEERING_KEYS)}"
+        )
+    for k, v in table.items():
+        if (
+            isinstance(v, bool)
+            or not isinstance(v, (int, float))
+            or not (
+                math.isfinite(v)
+                and v >= 0
+                and (v > 0 or k in ("separation", "cohesion", "alignment"))
+            )
+        ):
+            raise FlockError(
+                f"{arg}: steering {k}={v!r}; allowed: a finite number > 0 (the weights "
+                "separation, cohesion, alignment: >= 0)"
+            )
+    return SteeringConfig(**{k: float(v) for k, v in table.items()})
 
 
 def _bird_entry(arg: str, folder: Path, i: int, row: Any) -> FlockBird:
@@ -269,6 +315,7 @@ def check_starts(flock: Flock, semispan: float) -> None:
 __all__ = [
     "MAX_BIRDS",
     "MIN_START_SEPARATION",
+    "RULES",
     "Flock",
     "FlockBird",
     "FlockError",

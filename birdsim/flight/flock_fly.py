@@ -47,52 +47,126 @@ def shifted_path(path: Any, dx: float, dz: float) -> Any:
     return replace(path, keyframes=kfs, x0=path.x0 + dx)
 
 
-def fly_bird(job: FlockJob) -> dict[str, Any]:
-    """Fly bird ``job.index`` of the flock: {"index", "arrays", "info"} or {"index", "error"}
-    (one line naming the bird).  Top level and picklable for every executor."""
+@dataclass
+class BirdSetup:
+    """What one bird of a flock flies (reduced units): its reference, bird, table,
+    attitude, wingbeats, and the side offset applied by translation (planar rule only)."""
+
+    index: int
+    flock: Flock
+    bird: Any
+    reference: Any
+    table: Any
+    attitude: str
+    beats: float
+    dy: float
+    phases: Any
+
+
+def prepare_bird(job: FlockJob) -> BirdSetup:
+    """Bird ``job.index``'s reference and settings.  A leader path that turns (or the
+    rule ``steer``) gives a :class:`birdsim.flight.steering.FlockPath` (the offset turned
+    with the leader's heading, the steering's displacement added); a planar path under
+    the rule ``offsets`` the path shifted in x and z and the side offset by translation.
+
+    Raises:
+        FlockError: one line naming the bird.
+    """
     from birdsim.commands.common import load_table_for
-    from birdsim.flight.flightlog import log_arrays, summary
-    from birdsim.flight.freeflight import fly
     from birdsim.flight.manoeuvre import MAX_BEATS
     from birdsim.flight.path import FlightPath, PathError
     from birdsim.flight.path_file import attitude_for, get_flight
-    from birdsim.flight.simulate import SimConfig
+    from birdsim.flight.steering import FlockPath
 
-    try:
-        flock = load_flock(job.source)  # checked as a whole by jobs_for
-        bird = load_bird(flock, job.index)
-        entry = flock.birds[job.index]
-        source = entry.path or flock.path
-        flight = get_flight(source, turning=True)
-        if not isinstance(flight, FlightPath) or flight.perch_start or flight.perch_end:
-            raise FlockError(
-                f"flock {flock.name!r}: bird {job.index}: path {source!r}; allowed: a path "
-                "(position or speed keyframes) that neither starts nor ends on the perch"
-            )
-        attitude = attitude_for(flight, job.attitude, source)
-        dx, dy, dz = (v / bird.semispan for v in entry.offset)
+    flock = load_flock(job.source)  # checked as a whole by jobs_for
+    bird = load_bird(flock, job.index)
+    entry = flock.birds[job.index]
+    source = entry.path or flock.path
+    flight = get_flight(source, turning=True)
+    if not isinstance(flight, FlightPath) or flight.perch_start or flight.perch_end:
+        raise FlockError(
+            f"flock {flock.name!r}: bird {job.index}: path {source!r}; allowed: a path "
+            "(position or speed keyframes) that neither starts nor ends on the perch"
+        )
+    steer = flock.rule == "steer"
+    attitude = job.attitude or ("free" if steer else None)
+    attitude = attitude_for(flight, attitude, source)
+    offset = np.array(entry.offset) / bird.semispan
+    dx, dy, dz = offset
+    if steer or flight.is_3d:
+        reference = FlockPath(flight, offset, turn_offset=flight.is_3d)
+        dy = reference.shift_y  # flown from y = 0, moved back (FlockPath)
+    else:
         try:
-            path = shifted_path(flight, dx, dz)
+            reference = shifted_path(flight, dx, dz)
         except PathError as exc:
             raise FlockError(f"flock {flock.name!r}: bird {job.index}: {exc}") from None
-        if job.seconds is not None:
-            beats = job.seconds / bird.period
-        else:  # every bird for the leader path's length
-            beats = float(get_flight(flock.path, turning=True).duration_beats)
-        if beats > MAX_BEATS:
-            raise FlockError(f"{beats:g} wingbeats; allowed: at most {MAX_BEATS:g} wingbeats")
-        table = load_table_for(bird, job.model, None)
-        result = fly(path, table, bird, job.model, beats=beats, config=SimConfig(attitude=attitude))
-        arrays = log_arrays(result, flock.name)
-        if dy:
-            arrays["y"] = arrays["y"] + entry.offset[1]
-            arrays["y_ref"] = arrays["y_ref"] + entry.offset[1]
-            arrays["qpos"] = arrays["qpos"].copy()
-            arrays["qpos"][:, 1] += dy
-        info = summary(arrays, phases=getattr(path, "regime", None))
+    if job.seconds is not None:
+        beats = job.seconds / bird.period
+    else:  # every bird for the leader path's length
+        beats = float(get_flight(flock.path, turning=True).duration_beats)
+    if beats > MAX_BEATS:
+        raise FlockError(f"{beats:g} wingbeats; allowed: at most {MAX_BEATS:g} wingbeats")
+    table = load_table_for(bird, job.model, None)
+    phases = getattr(flight, "regime", None)
+    return BirdSetup(job.index, flock, bird, reference, table, attitude, beats, dy, phases)
+
+
+def fly_setup(setup: BirdSetup, model: str, control_hook: Any = None) -> dict[str, Any]:
+    """Fly one prepared bird: {"index", "arrays", "info"} (the bird's own units)."""
+    from birdsim.flight.flightlog import log_arrays, summary
+    from birdsim.flight.freeflight import fly
+    from birdsim.flight.simulate import SimConfig
+
+    bird = setup.bird
+    result = fly(
+        setup.reference,
+        setup.table,
+        bird,
+        model,
+        beats=setup.beats,
+        config=SimConfig(attitude=setup.attitude),
+        control_hook=control_hook,
+    )
+    arrays = log_arrays(result, setup.flock.name)
+    if setup.dy:
+        dy = setup.dy
+        arrays["y"] = arrays["y"] + dy * bird.semispan
+        arrays["y_ref"] = arrays["y_ref"] + dy * bird.semispan
+        arrays["qpos"] = arrays["qpos"].copy()
+        arrays["qpos"][:, 1] += dy
+    steering_at = getattr(setup.reference, "steering_at", None)
+    if steering_at is not None:  # the steering's displacement of the reference (bird units)
+        t_red = np.asarray(arrays["t"]) / bird.period * 2.0 * math.pi
+        arrays["steer"] = steering_at(t_red) * bird.semispan
+    info = summary(arrays, phases=setup.phases)
+    return {"index": setup.index, "arrays": arrays, "info": info}
+
+
+def fly_bird(job: FlockJob) -> dict[str, Any]:
+    """Fly bird ``job.index`` of the flock: {"index", "arrays", "info"} or {"index", "error"}
+    (one line naming the bird).  Top level and picklable for every executor."""
+    try:
+        return fly_setup(prepare_bird(job), job.model)
     except BirdsimError as exc:
         return {"index": job.index, "error": str(exc)}
-    return {"index": job.index, "arrays": arrays, "info": info}
+
+
+def fly_steered(jobs: list[FlockJob]) -> dict:
+    """Fly every bird of a steered flock in lockstep (:mod:`birdsim.flight.flock_lockstep`)
+    and stack their logs."""
+    from birdsim.flight.flock_lockstep import Lockstep, run_lockstep
+    from birdsim.flight.simulate import SimConfig
+    from birdsim.physics.units import reduced_bird
+
+    setups = [prepare_bird(job) for job in jobs]
+    flock = setups[0].flock
+    cfg = SimConfig()
+    dt = 2.0 * math.pi / cfg.control_per_beat
+    gravity = reduced_bird(setups[0].bird).gravity
+    lock = Lockstep([s.reference for s in setups], flock.steering, gravity, dt)
+    results = run_lockstep(lambda i, hook: fly_setup(setups[i], jobs[i].model, hook), lock)
+    return stack_logs([r["arrays"] for r in results], flock)
 
 
 def jobs_for(
@@ -108,7 +182,15 @@ def jobs_for(
 
 
 def fly_flock(jobs: list[FlockJob], executor: Any = None, progress: Any = None) -> dict:
-    """Fly every bird (in this process, or on ``executor``) and stack their logs."""
+    """Fly every bird (in this process, or on ``executor``) and stack their logs; a
+    steered flock in lockstep in this process (:func:`fly_steered`)."""
+    if load_flock(jobs[0].source).rule == "steer":
+        if executor is not None:
+            raise FlockError(
+                "--jobs with a steered flock (rule 'steer'); allowed: one process (its "
+                "birds fly in lockstep)"
+            )
+        return fly_steered(jobs)
     if executor is None:
         results = []
         for job in jobs:
@@ -213,11 +295,15 @@ def bird_log(arrays: dict[str, np.ndarray], i: int) -> dict[str, np.ndarray]:
 
 
 __all__ = [
+    "BirdSetup",
     "FlockJob",
     "bird_log",
     "flock_summary",
     "fly_bird",
     "fly_flock",
+    "fly_setup",
+    "fly_steered",
+    "prepare_bird",
     "jobs_for",
     "min_separation",
     "shifted_path",

@@ -88,6 +88,7 @@ def fly(
     trim: bool = True,
     attitude_loop: bool = True,
     stroke_compensation: bool = True,
+    control_hook: Any = None,
 ) -> FlightResult:
     """Fly ``reference`` (a FlightPath in reduced units, or a DemandSchedule) with
     ``table`` for ``beats`` wingbeats (default: the reference's duration).
@@ -98,6 +99,7 @@ def fly(
         open_loop: feed-forward only (no feedback).
         progress: optional callable(beats_done) for a progress bar.
         trim: start on the periodic orbit of the first wingbeat (see :func:`birdsim.flight.trim.trim_start`).
+        control_hook: callable(k, t, fb) at every control update (a flock's lockstep).
     Returns:
         FlightResult with arrays t, x, y, z, vx, vz, x_ref, z_ref, pitch, <params>,
         Fx_demand, Fz_demand, climb_demand (the table's climb; 0 for a level table),
@@ -236,6 +238,7 @@ def fly(
         dt_ctl = steps_ctl * h
         for k in range(n_ctl):
             t = fb.time
+            _ = control_hook and control_hook(k, t, fb)  # a flock's lockstep
             pitch = float(fb.schedule.output[names.index("pitch")]) if "pitch" in names else 0.0
             est = window.estimate() if window.ep else None
             cmd = command(t, est, integral, pitch)

@@ -1,0 +1,155 @@
+"""A flock's birds in lockstep: each bird's own free flight, all advancing one control
+interval at a time, the steering rules (:mod:`birdsim.flight.steering`) computed from
+every bird's state at every control update.
+
+Each bird is flown by :func:`birdsim.flight.freeflight.fly` (its own MuJoCo model,
+controller and callback) in its own thread, and the threads take turns: bird ``i`` runs
+until its next control update (``fly``'s ``control_hook``), publishes its position and
+velocity there, and hands the turn to bird ``i + 1``; the last bird, having seen every
+bird's state at the same time ``t_k``, computes the rules for all of them and sets each
+bird's steering for the interval ``[t_k, t_k+1)``; then bird 0 flies that interval, and
+so on.  One thread runs at a time (the turn is a condition variable), so the birds'
+simulations are exactly those of one process flying them one after another with the
+references the rules set: the threads are coroutines, not parallelism.  MuJoCo's
+passive callback is process-wide: the bird holding the turn installs its own and
+removes it when it hands the turn on.
+
+This is the issue's lockstep "as a step": the issue's design (all birds in one MuJoCo
+model, one callback over every bird) is not built; the cost of the lockstep over flying
+the birds one after another is measured in ``benchmarks/bench_flock.py``.
+"""
+
+from __future__ import annotations
+
+import threading
+from typing import Any
+
+import mujoco
+import numpy as np
+
+from birdsim.errors import BirdsimError
+from birdsim.flight.steering import FlockPath, SteeringConfig, rule_accelerations
+
+
+class _Aborted(BirdsimError):
+    """Another bird of the flock failed: this one stops too."""
+
+
+class Lockstep:
+    """The turn-taking of ``n`` birds and their published states (reduced units)."""
+
+    def __init__(self, paths: list[FlockPath], cfg: SteeringConfig, gravity: float, dt: float):
+        self.paths = paths
+        self.cfg = cfg
+        self.gravity = float(gravity)
+        self.dt = float(dt)
+        n = len(paths)
+        self.n = n
+        self.pos = np.zeros((n, 3))
+        self.vel = np.zeros((n, 3))
+        self.time = np.zeros(n)
+        self.turn = 0
+        self.failed: str | None = None
+        self.cond = threading.Condition()
+        self.updates = 0
+
+    # ---- turns -----------------------------------------------------------------------
+
+    def wait_turn(self, i: int) -> None:
+        with self.cond:
+            self.cond.wait_for(lambda: self.turn == i or self.failed is not None)
+            if self.failed is not None:
+                raise _Aborted(self.failed)
+
+    def pass_turn(self, i: int) -> None:
+        with self.cond:
+            self.turn = (i + 1) % self.n
+            self.cond.notify_all()
+
+    def fail(self, message: str) -> None:
+        with self.cond:
+            if self.failed is None:
+                self.failed = message
+            self.cond.notify_all()
+
+    # ---- the control update ----------------------------------------------------------
+
+    def hook(self, i: int) -> Any:
+        """Bird ``i``'s ``control_hook`` for :func:`birdsim.flight.freeflight.fly`."""
+
+        def control_hook(k: int, t: float, fb: Any) -> None:
+            self.pos[i] = fb.d.qpos[:3]
+            self.pos[i, 1] += self.paths[i].shift_y  # the flown frame to the world's
+            self.vel[i] = fb.d.qvel[:3]
+            self.time[i] = t
+            if i == self.n - 1:
+                self.update()
+            mujoco.set_mjcb_passive(None)
+            self.pass_turn(i)
+            self.wait_turn(i)
+            mujoco.set_mjcb_passive(fb.cb)
+
+        return control_hook
+
+    def update(self) -> None:
+        """Every bird at the same time: the rules' accelerations, held for the interval."""
+        t = float(self.time[0])
+        if not np.allclose(self.time, t, rtol=0, atol=1e-9):
+            raise BirdsimError(f"flock lockstep out of step: times {self.time.tolist()}")
+        goal, goal_v = np.zeros((self.n, 3)), np.zeros((self.n, 3))
+        delta, delta_v = np.zeros((self.n, 3)), np.zeros((self.n, 3))
+        for j, p in enumerate(self.paths):
+            g = p.goal(np.array([t]))
+            goal[j] = [g["x"][0], g["y"][0], g["z"][0]]
+            goal_v[j] = [g["vx"][0], g["vy"][0], g["vz"][0]]
+            # delta at t from the last interval's polynomial (0 before the first update)
+            tau = t - p.t0
+            delta[j] = p.delta + p.delta_vel * tau + 0.5 * p.delta_acc * tau * tau
+            delta_v[j] = p.delta_vel + p.delta_acc * tau
+        acc = rule_accelerations(
+            self.pos, self.vel, goal, goal_v, delta, delta_v, self.cfg, self.gravity, t
+        )
+        for j, p in enumerate(self.paths):
+            if not p.lateral:  # flown by the straight loop, which holds y
+                acc[j, 1] = 0.0
+            p.set_steering(t, delta[j], delta_v[j], acc[j])
+        self.updates += 1
+
+
+def run_lockstep(fly_one: Any, lock: Lockstep) -> list[Any]:
+    """Run ``fly_one(i, control_hook)`` for every bird in lockstep (one thread each, one
+    running at a time); their results in order.
+
+    Raises:
+        BirdsimError: the first bird's error (one line naming the bird).
+    """
+    results: list[Any] = [None] * lock.n
+    errors: list[tuple[int, BaseException]] = []
+
+    def run(i: int) -> None:
+        try:
+            lock.wait_turn(i)
+            results[i] = fly_one(i, lock.hook(i))
+        except _Aborted:
+            return
+        except BaseException as exc:  # noqa: BLE001 (re-raised in the caller's thread)
+            mujoco.set_mjcb_passive(None)
+            errors.append((i, exc))
+            lock.fail(f"bird {i}: {exc}")
+            return
+        lock.pass_turn(i)
+
+    threads = [threading.Thread(target=run, args=(i,), daemon=True) for i in range(lock.n)]
+    for th in threads:
+        th.start()
+    for th in threads:
+        th.join()
+    if errors:
+        i, exc = errors[0]
+        if isinstance(exc, BirdsimError):
+            raise BirdsimError(f"bird {i}: {exc}") from None
+        raise exc
+    return results
+
+
+__all__ = ["Lockstep", "run_lockstep"]
