@@ -144,6 +144,12 @@ def run(args: argparse.Namespace) -> int:
                 raise BirdsimError(
                     f"{arg} does not apply to a flight log (it records its bird, model and flight); allowed: omit {arg}"
                 )
+        from birdsim.flight.flock_log import is_flock_log
+
+        if is_flock_log(args.source):  # every bird (issue 27): birdsim.commands.export_flock
+            from birdsim.commands.export_flock import export_flock_log
+
+            return export_flock_log(args, fps, rate_for, metres)
         log = read_flight_log(args.source)
         if args.model and args.model != str(log["model"]):
             raise BirdsimError(
