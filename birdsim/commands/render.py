@@ -176,8 +176,12 @@ def _beat_rate(args: argparse.Namespace, fps: int | float | None) -> float:
     check_time_flags(args.beat_rate, args.slow_motion)
     if is_log(args.manoeuvre):
         from birdsim.flight.flightlog import load_log
+        from birdsim.flight.flock_log import is_flock_log, load_flock_log
 
-        bird = load_log(args.manoeuvre, "LOG")["bird_obj"]
+        if is_flock_log(args.manoeuvre):  # a flock's birds share their period
+            bird = load_flock_log(args.manoeuvre, "LOG")[1][0]["bird_obj"]
+        else:
+            bird = load_log(args.manoeuvre, "LOG")["bird_obj"]
     else:
         bird = bird_from_args(args)
     rate, words = beat_rate_for(bird, args.beat_rate, args.slow_motion)

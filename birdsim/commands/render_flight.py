@@ -181,6 +181,12 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
     from birdsim.render.gl import select_gl
 
     options = options_from_args(args)
+    from birdsim.flight.flock_log import is_flock_log
+
+    if is_flock_log(args.manoeuvre):  # every bird of a flock (issue 27)
+        from birdsim.commands.render_flock import run_flock_log
+
+        return run_flock_log(args, options)
     if is_log(args.manoeuvre):
         if args.gust or args.open_loop or args.attitude:
             raise BirdsimError(

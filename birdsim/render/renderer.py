@@ -55,6 +55,7 @@ def render_states(
     *,
     force: bool = False,
     log: Any = None,
+    make_scene: Any = None,
 ) -> RenderResult:
     """Render every frame of ``states`` to the MP4 ``out``.
 
@@ -65,6 +66,8 @@ def render_states(
             ``beats_per_second`` are not used: the states fix the frames).
         force: overwrite an existing ``out``.
         log: where the clip note and the progress bar go (default stderr).
+        make_scene: a factory ``(states, options) -> Scene`` (default: Scene; a flock's:
+            :func:`birdsim.render.flock_scene.scene_factory`).
 
     Returns:
         A :class:`RenderResult` (frames, wall and render seconds, back-end).
@@ -85,7 +88,7 @@ def render_states(
 
     render_s = 0.0
     with (
-        Scene(states, options) as scene,
+        (make_scene or Scene)(states, options) as scene,
         mp4_writer(
             out, options.width, options.height, options.fps, crf=options.crf, preset=options.preset
         ) as writer,

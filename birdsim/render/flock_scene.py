@@ -1,0 +1,95 @@
+"""A flock in one picture: the leader drawn as :class:`birdsim.render.scene.Scene` draws a
+bird (overlay, reference path, trails, forces, shadows), every other bird of the flock
+added to the same MuJoCo scene each frame (``mjv_addGeoms`` of the same model posed at
+that bird's state: only the dynamic geoms, so the floor and the perch are drawn once),
+and the cameras framing the whole flock (its centre, and a span that holds every bird).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from birdsim.render.camera import camera_path
+from birdsim.render.options import RenderOptions
+from birdsim.render.scene import Scene
+from birdsim.render.states import StateSequence
+
+
+class FlockScene(Scene):
+    """``FlockScene(leader, options, others)``: ``others`` the other birds' state
+    sequences (the same model and bird, the same instants as the leader's)."""
+
+    def __init__(self, states: StateSequence, options: RenderOptions, others: list):
+        self.others = list(others)
+        for o in self.others:
+            if o.qpos.shape != states.qpos.shape:
+                raise ValueError(
+                    f"a bird's states {o.qpos.shape} differ from the leader's {states.qpos.shape}"
+                )
+        super().__init__(states, options)
+        mj = self._mj
+        self._od = mj.MjData(self.m)
+        self._perturb = mj.MjvPerturb()
+        old = self.renderer  # room for every bird's geoms
+        self.renderer = mj.Renderer(
+            self.m, options.height, options.width, max_geom=4000 + self.m.ngeom * len(others)
+        )
+        self.renderer.scene.flags[:] = old.scene.flags[:]
+        old.close()
+
+    def positions(self) -> np.ndarray:
+        """Every bird's torso origin at every instant (birds, instants, 3)."""
+        return np.stack([self.torso_path] + [o.qpos[:, :3] for o in self.others])
+
+    def _camera_poses(self, name: str) -> list:
+        """The one-bird cameras, aimed at the flock's centre with a span holding it."""
+        pos = self.positions()
+        centre = pos.mean(axis=0)
+        reach = float(np.max(np.linalg.norm(pos - centre[None], axis=-1)))
+        span = 2.0 * reach + 2.0 * self.states.bird.semispan
+        extra = pos.reshape(-1, 3)[:: max(1, pos.shape[1] // 50)]
+        if self.states.reference_path is not None:
+            extra = np.vstack([extra, self.states.reference_path])
+        poses = camera_path(
+            name,
+            centre,
+            self.heading,
+            self.states.t_beats,
+            span,
+            float(self.m.vis.global_.fovy),
+            self.options.width / self.options.height,
+            extra,
+        )
+        return [poses[self.instant(i)] for i in range(self.frames)]
+
+    def update(self, i: int) -> None:
+        """The leader's frame (Scene.update), then every other bird's geoms."""
+        super().update(i)
+        mj, k, scn = self._mj, self.instant(i), self.renderer.scene
+        for o in self.others:
+            self._od.qpos[:] = o.qpos[k]
+            if self._tail_poser is not None and o.tail is not None:
+                self._tail_poser.pose(float(o.tail[k, 0]), float(o.tail[k, 2]))
+            if self._fan is not None:
+                self._fan.pose(self._od.qpos)
+            mj.mj_kinematics(self.m, self._od)
+            mj.mjv_addGeoms(
+                self.m, self._od, self.option, self._perturb, mj.mjtCatBit.mjCAT_DYNAMIC, scn
+            )
+
+
+def flock_states(birds: list[dict], options: Any, title: str = "") -> list[StateSequence]:
+    """Each bird's StateSequence (:func:`birdsim.flight.flightstates.flight_states`)."""
+    from birdsim.flight.flightstates import flight_states
+
+    return [flight_states(b, options, title=title) for b in birds]
+
+
+def scene_factory(others: list) -> Any:
+    """A ``Scene``-like factory for :func:`birdsim.render.renderer.render_states`."""
+    return lambda states, options: FlockScene(states, options, others)
+
+
+__all__ = ["FlockScene", "flock_states", "scene_factory"]
