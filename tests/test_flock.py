@@ -20,6 +20,7 @@ from birdsim.flight.flock_fly import (
     jobs_for,
     stack_logs,
 )
+from birdsim.flight.path_file import get_flight
 
 SEED = 5.0  # the seed bird's period (its time unit): seconds per wingbeat
 
@@ -93,12 +94,17 @@ def test_stacking_and_unstacking_keeps_a_birds_log(tmp_path):
             assert np.array_equal(one[k], v), k
 
 
-def test_the_flock_preset_parses():
-    assert "flock" in preset_names()
+def test_the_flock_presets_parse():
+    """`flock`: 12 seed birds steered on a turning path (attitude free); `flock-v`: 12
+    pigeons in a straight V (posed)."""
+    assert {"flock", "flock-v"} <= set(preset_names())
     flock = load_flock("flock")
-    assert flock.n_birds == 12
-    birds = load_birds(flock)
-    assert {b.name for b in birds} == {"pigeon"}
+    assert flock.n_birds == 12 and flock.rule == "steer" and flock.attitude == "free"
+    assert {b.name for b in load_birds(flock)} == {"seed"}
+    assert get_flight(flock.path, turning=True).is_3d
+    v = load_flock("flock-v")
+    assert v.n_birds == 12 and v.rule == "offsets"
+    assert {b.name for b in load_birds(v)} == {"pigeon"}
 
 
 @pytest.mark.parametrize(
@@ -132,13 +138,40 @@ def test_a_bird_file_that_does_not_parse_is_named_with_its_index(tmp_path, capsy
     assert not out.exists()
 
 
-def test_a_flock_log_is_refused_in_one_line_by_render(tmp_path, capsys):
+def test_render_and_export_take_a_flock_log_with_every_bird(tmp_path, capsys):
+    """A two-bird flock's log: `render --still` draws both birds (the still differs from
+    the leader's alone); `export --format bvh` writes one file per bird whose root
+    positions are each bird's own; `view` refuses it in one line."""
+    from birdsim.flight.flock_log import load_flock_log
+
     src = _flock(tmp_path, [(0.0, 0.0, 0.0), (0.0, 2.0, 0.0)])
     out = tmp_path / "flock.npz"
     assert main(["fly", src, "--quiet", "--seconds", str(0.2 * SEED), "--out", str(out)]) == 0
-    assert main(["render", str(out), "--still", str(tmp_path / "a.png")]) == 2
+    data, birds = load_flock_log(out)
+    assert len(birds) == 2 and birds[1]["bird_obj"].name == birds[0]["bird_obj"].name
+    png = tmp_path / "a.png"
+    assert main(["render", str(out), "--still", str(png), "--at", "0.1", "--camera", "top"]) == 0
+    assert png.stat().st_size > 0
+    bvh = tmp_path / "f.bvh"
+    assert main(["export", str(out), "--format", "bvh", "--out", str(bvh)]) == 0
+    files = sorted(tmp_path.glob("f-bird*.bvh"))
+    assert [f.name for f in files] == ["f-bird00.bvh", "f-bird01.bvh"]
+    assert not bvh.exists()
+    # the second bird's root starts 2 semispans (its offset) to the left of the first's
+    # (BVH: X forward, Y up, Z right; to the file's 6 decimals)
+    roots = [_first_root(f) for f in files]
+    assert roots[1] == pytest.approx([roots[0][0], roots[0][1], roots[0][2] - 2.0], abs=1e-5)
+    # every output checked before anything is written: an existing one refuses all
+    capsys.readouterr()
+    assert main(["export", str(out), "--format", "bvh", "--out", str(bvh)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 1 and "flock" in err[0], err
+    assert len(err) == 1 and "f-bird00.bvh" in err[0] and "exists" in err[0], err
+
+
+def _first_root(path: Path) -> list[float]:
+    lines = path.read_text().splitlines()
+    i = lines.index("MOTION")
+    return [float(v) for v in lines[i + 3].split()[:3]]
 
 
 def test_a_bird_with_its_own_path_flies_it(tmp_path):

@@ -91,10 +91,10 @@ def rule_accelerations(
     mean_v = np.where(has[:, None], nbr @ err_v / np.maximum(count, 1)[:, None], err_v)
     acc = w * w * (cfg.separation * sep + cfg.cohesion * (mean_e - err) - delta)
     acc += w * (cfg.alignment * (mean_v - err_v) - 2.0 * delta_vel)
-    acc *= min(1.0, t / (cfg.start_beats * TWO_PI)) if cfg.start_beats > 0 else 1.0
     limit = cfg.max_accel * gravity
     mag = np.linalg.norm(acc, axis=1)
     scale = np.where(mag > limit, limit / np.maximum(mag, 1e-300), 1.0)
+    scale *= min(1.0, t / (cfg.start_beats * TWO_PI)) if cfg.start_beats > 0 else 1.0
     return acc * scale[:, None] if n else acc
 
 

@@ -38,6 +38,21 @@ class FlockScene(Scene):
         )
         self.renderer.scene.flags[:] = old.scene.flags[:]
         old.close()
+        # the sun's shadow box around the whole flock, centred on it (pose_instant)
+        pos = self.positions()
+        self._centre = pos.mean(axis=0)
+        reach = float(np.max(np.linalg.norm(pos - self._centre[None], axis=-1)))
+        self.m.vis.map.shadowclip = (reach + 3.0 * self._s) / float(self.m.stat.extent)
+        self._reach = reach
+
+    def pose_instant(self, k: int) -> None:
+        """As Scene's, with the sun's shadow box centred on the flock's centre."""
+        super().pose_instant(k)
+        centre = getattr(self, "_centre", None)
+        if centre is not None and self._sun >= 0:
+            self.d.light_xpos[self._sun] = (
+                centre[k] - self.d.light_xdir[self._sun] * (4.0 * self._s + self._reach)
+            )
 
     def positions(self) -> np.ndarray:
         """Every bird's torso origin at every instant (birds, instants, 3)."""
