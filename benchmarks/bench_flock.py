@@ -1,29 +1,90 @@
-"""Issue 27's flock: the shipped ``flock`` preset (12 pigeons, 10 s, m3, posed attitude)
-flown in this process, bird after bird: wall and CPU time (target: within 30 s), the
-worst bird's path RMS (target: within 0.2 semispan), the smallest separation (target: at
-least one semispan) and the saturated samples (target: none)."""
+"""Issue 27's flocks, flown in this process:
+
+* the shipped ``flock`` preset (12 seed birds, 36 wingbeats, m3, attitude free, turning
+  90 degrees, steered by Reynolds' rules, the birds in lockstep): wall and CPU time
+  (target: 12 birds within 30 s), the worst bird's path RMS against its own reference
+  (target: within 0.2 semispan), the smallest separation (target: at least one semispan),
+  the saturated samples (target: none), the steering's largest displacement;
+* the lockstep's cost: the preset's first 8 wingbeats steered (lockstep) and under the
+  rule ``offsets`` (the same birds one after another, no rules), CPU side by side;
+* ``flock-v`` (12 pigeons in a straight V, 10 s, posed): as before the rules.
+
+``python benchmarks/bench_flock.py --birds N`` flies N seed birds (rows of 10, 3 semispans
+apart) on the preset's path instead (issue 27: 100 birds within 5 minutes).
+"""
 
 from __future__ import annotations
 
+import math
+import sys
+import tempfile
 import time
+from pathlib import Path
 
-from birdsim.flight.flock import load_birds
+import numpy as np
+
+from birdsim.flight.flock import PRESET_FOLDER, load_birds
 from birdsim.flight.flock_fly import flock_summary, fly_flock, jobs_for
 
 
-def main() -> None:
-    flock, jobs = jobs_for("flock", "m3")
+def _fly(source: str, seconds: float | None = None) -> tuple[dict, float, float, dict]:
+    flock, jobs = jobs_for(source, "m3", seconds=seconds)
     w0, c0 = time.perf_counter(), time.process_time()
     arrays = fly_flock(jobs)
     wall, cpu = time.perf_counter() - w0, time.process_time() - c0
-    info = flock_summary(arrays, load_birds(flock)[0].semispan)
-    print(
-        f"flock preset ({info['n_birds']} pigeons, {info['seconds']:.1f} s, m3 posed): "
-        f"{wall:.1f} s wall, {cpu:.1f} s CPU (target 30 s); worst path RMS "
+    return flock_summary(arrays, load_birds(flock)[0].semispan), wall, cpu, arrays
+
+
+def _line(name: str, info: dict, wall: float, cpu: float, arrays: dict) -> str:
+    steer = float(np.abs(arrays["steer"]).max()) if "steer" in arrays else 0.0
+    return (
+        f"{name}: {info['n_birds']} birds x {info['seconds']:.4g} s: {wall:.1f} s wall, "
+        f"{cpu:.1f} s CPU (target 30 s for 12); worst path RMS "
         f"{info['worst_rms_error_after_start_semispans']:.4f} semispan (target 0.2); closest "
         f"two birds {info['min_separation_semispans']:.2f} semispan (target >= 1); "
-        f"{info['saturated_samples']} saturated samples"
+        f"{info['saturated_samples']} saturated samples; largest steering {steer:.3f}"
     )
+
+
+def block(n: int, spacing: float = 3.0, per_row: int = 10) -> str:
+    """A flock file of ``n`` seed birds on the preset's path, steered: rows of
+    ``per_row`` birds ``spacing`` semispans apart (side by side and row behind row),
+    centred on the leader's track."""
+    text = (
+        f'path = "{PRESET_FOLDER / "paths" / "turning.toml"}"\nmodel = "m3"\n'
+        'attitude = "free"\nrule = "steer"\n'
+    )
+    for i in range(n):
+        row, j = divmod(i, per_row)
+        width = min(per_row, n - row * per_row)
+        y = (j - 0.5 * (width - 1)) * spacing
+        text += f"[[bird]]\noffset = [{-row * spacing}, {y}, 0.0]\n"
+    return text
+
+
+def main(argv: list[str] | None = None) -> None:
+    argv = sys.argv[1:] if argv is None else argv
+    if argv[:1] == ["--birds"]:
+        n = int(argv[1])
+        with tempfile.TemporaryDirectory() as tmp:
+            p = Path(tmp) / f"block-{n}.toml"
+            p.write_text(block(n))
+            print(_line(f"block of {n} seed birds (steered)", *_fly(str(p))))
+        return
+    print(_line("flock preset (seed birds, turning, steered)", *_fly("flock")))
+    beats8 = 8 * 2 * math.pi  # the seed bird's 8 wingbeats in its time unit
+    s_info, s_wall, s_cpu, _ = _fly("flock", beats8)
+    text = (PRESET_FOLDER / "flock.toml").read_text().replace('rule = "steer"', "")
+    text = text.replace('path = "paths/', f'path = "{PRESET_FOLDER}/paths/')
+    with tempfile.TemporaryDirectory() as tmp:
+        p = Path(tmp) / "offsets.toml"
+        p.write_text(text)
+        o_info, o_wall, o_cpu, _ = _fly(str(p), beats8)
+    print(
+        f"lockstep cost (flock, 8 wingbeats): steered in lockstep {s_cpu:.1f} s CPU, "
+        f"one by one (rule offsets) {o_cpu:.1f} s CPU: {s_cpu / o_cpu - 1:+.1%}"
+    )
+    print(_line("flock-v preset (pigeons, straight V, posed)", *_fly("flock-v")))
 
 
 if __name__ == "__main__":
