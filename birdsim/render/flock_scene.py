@@ -11,10 +11,13 @@ from typing import Any
 
 import numpy as np
 
-from birdsim.render.camera import camera_path
+from birdsim.render.camera import SPAN_FRACTION, camera_path
 from birdsim.render.options import RenderOptions
 from birdsim.render.scene import Scene
 from birdsim.render.states import StateSequence
+
+#: The fraction of the frame's narrower side the flock's diameter takes.
+FLOCK_FRACTION = 0.8
 
 
 class FlockScene(Scene):
@@ -50,8 +53,8 @@ class FlockScene(Scene):
         super().pose_instant(k)
         centre = getattr(self, "_centre", None)
         if centre is not None and self._sun >= 0:
-            self.d.light_xpos[self._sun] = (
-                centre[k] - self.d.light_xdir[self._sun] * (4.0 * self._s + self._reach)
+            self.d.light_xpos[self._sun] = centre[k] - self.d.light_xdir[self._sun] * (
+                4.0 * self._s + self._reach
             )
 
     def positions(self) -> np.ndarray:
@@ -63,7 +66,9 @@ class FlockScene(Scene):
         pos = self.positions()
         centre = pos.mean(axis=0)
         reach = float(np.max(np.linalg.norm(pos - centre[None], axis=-1)))
-        span = 2.0 * reach + 2.0 * self.states.bird.semispan
+        # the one-bird cameras fit a span into SPAN_FRACTION (0.45) of the frame: the
+        # flock's diameter (and a wingspan) into FLOCK_FRACTION of it
+        span = (2.0 * reach + 2.0 * self.states.bird.semispan) * SPAN_FRACTION / FLOCK_FRACTION
         extra = pos.reshape(-1, 3)[:: max(1, pos.shape[1] // 50)]
         if self.states.reference_path is not None:
             extra = np.vstack([extra, self.states.reference_path])
