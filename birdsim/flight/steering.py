@@ -30,6 +30,10 @@ from typing import Any
 import numpy as np
 
 TWO_PI = 2.0 * math.pi
+#: Samples per wingbeat of a turned place's heading-acceleration table, and how far past
+#: the path (wingbeats) it reaches.
+GRID_PER_BEAT = 256
+RATE_MARGIN_BEATS = 4.0
 
 
 @dataclass(frozen=True)
@@ -123,6 +127,11 @@ class FlockPath:
             if not v0 > 1e-6:
                 raise ValueError("a turning leader path that starts at rest: no heading")
             self.lag = float(self.offset[0]) / v0
+            # the heading's acceleration tabulated (central differences of the exact
+            # rate, GRID_PER_BEAT a wingbeat) over the path and RATE_MARGIN_BEATS beyond
+            span = float(base.duration_beats) + abs(self.lag) / TWO_PI + RATE_MARGIN_BEATS
+            tg = np.arange(-span, span + 1e-9, 1.0 / GRID_PER_BEAT) * TWO_PI
+            self._grid = (tg, np.gradient(self._rate(tg), tg))
         else:
             self.lag = 0.0
         self.lateral = bool(getattr(base, "is_3d", True))
@@ -170,9 +179,14 @@ class FlockPath:
         # heading psi, its rate and acceleration; T = (c, s), n = (-s, c) the left normal
         vx, vy = s["vx"], s["vy"]
         psi = np.arctan2(vy, vx)
-        rate = self._rate(q)
-        dt = 1e-3 * TWO_PI
-        rate_dot = (self._rate(q + dt) - self._rate(q - dt)) / (2.0 * dt)
+        rate = (vx * s["ay"] - vy * s["ax"]) / np.maximum(vx * vx + vy * vy, 1e-12)
+        tg, rate_dots = self._grid
+        rate_dot = np.interp(q, tg, rate_dots)
+        outside = (q < tg[0]) | (q > tg[-1])
+        if np.any(outside):  # beyond the table: central differences of the exact rate
+            dt = 1e-3 * TWO_PI
+            fd = (self._rate(q + dt) - self._rate(q - dt)) / (2.0 * dt)
+            rate_dot = np.where(outside, fd, rate_dot)
         c, sn = np.cos(psi), np.sin(psi)
         # p = L + oy n; p' = v - oy psi' T; p'' = a - oy (psi'' T + psi'^2 n)
         out["x"], out["y"] = out["x"] - oy * sn, out["y"] + oy * c
