@@ -118,9 +118,11 @@ def test_the_flock_presets_parse():
 )  # fmt: skip
 def test_bad_flock_input_is_one_line(tmp_path, capsys, offsets, extra, words):
     src = _flock(tmp_path, offsets, extra, "take-off" if "perch" in words else "cruise")
-    assert main(["fly", src, "--quiet"]) == 2
+    out = tmp_path / "log.npz"
+    assert main(["fly", src, "--quiet", "--out", str(out)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and words in err[0], err
+    assert not out.exists() and sorted(p.name for p in tmp_path.iterdir()) == ["f.toml"]
 
 
 def test_a_bird_file_that_does_not_parse_is_named_with_its_index(tmp_path, capsys):
