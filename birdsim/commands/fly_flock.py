@@ -1,6 +1,7 @@
-"""``birdsim fly FLOCK``: a flock file or the ``flock`` preset (:mod:`birdsim.flight.flock`),
-every bird flown along the leader's path with its offset, one log with a leading bird
-axis (``--out``), a JSON summary (``--json``: per-bird path RMS, the smallest separation,
+"""``birdsim fly FLOCK``: a flock file or a flock preset (:mod:`birdsim.flight.flock`),
+every bird flown at its place by the leader's path (rule ``offsets``) or steered by
+Reynolds' rules in lockstep (rule ``steer``), one log with a leading bird axis
+(``--out``), a JSON summary (``--json``: per-bird path RMS, the smallest separation,
 wall and CPU time)."""
 
 from __future__ import annotations
@@ -43,6 +44,11 @@ def run_flock(args: argparse.Namespace, source: str, seconds: float | None) -> i
     flock, jobs = jobs_for(source, model, args.attitude, seconds)
     get_model(jobs[0].model)
     n_jobs = _jobs_arg(args.jobs)
+    if flock.rule == "steer" and n_jobs not in (None, 1):
+        raise BirdsimError(
+            f"--jobs {args.jobs} with the steered flock {flock.name!r}; allowed: no --jobs "
+            "(its birds fly in lockstep in one process)"
+        )
     wall0, cpu0 = time.perf_counter(), time.process_time()
     if n_jobs is None or n_jobs == 1:
 
