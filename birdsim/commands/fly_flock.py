@@ -53,7 +53,12 @@ def run_flock(args: argparse.Namespace, source: str, seconds: float | None) -> i
     if n_jobs is None or n_jobs == 1:
 
         def progress(done: int) -> None:
-            if not (args.quiet or args.json):
+            if args.quiet or args.json:
+                return
+            if done < 0:  # a steered flock: every bird -done wingbeats (lockstep)
+                if -done % 4 == 0:
+                    print(f"fly {flock.name}: {-done} wingbeats, every bird", file=sys.stderr)
+            else:
                 print(f"fly {flock.name}: bird {done}/{len(jobs)}", file=sys.stderr)
 
         arrays = fly_flock(jobs, progress=progress)

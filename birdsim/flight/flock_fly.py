@@ -152,9 +152,9 @@ def fly_bird(job: FlockJob) -> dict[str, Any]:
         return {"index": job.index, "error": str(exc)}
 
 
-def fly_steered(jobs: list[FlockJob]) -> dict:
+def fly_steered(jobs: list[FlockJob], progress: Any = None) -> dict:
     """Fly every bird of a steered flock in lockstep (:mod:`birdsim.flight.flock_lockstep`)
-    and stack their logs."""
+    and stack their logs; ``progress(beats_done, beats)`` after every wingbeat."""
     from birdsim.flight.flock_lockstep import Lockstep, run_lockstep
     from birdsim.flight.simulate import SimConfig
     from birdsim.physics.units import reduced_bird
@@ -165,6 +165,9 @@ def fly_steered(jobs: list[FlockJob]) -> dict:
     dt = 2.0 * math.pi / cfg.control_per_beat
     gravity = reduced_bird(setups[0].bird).gravity
     lock = Lockstep([s.reference for s in setups], flock.steering, gravity, dt)
+    if progress is not None:
+        per_beat, beats = cfg.control_per_beat, setups[0].beats
+        lock.on_update = lambda k: (k + 1) % per_beat or progress((k + 1) // per_beat, beats)
     results = run_lockstep(lambda i, hook: fly_setup(setups[i], jobs[i].model, hook), lock)
     return stack_logs([r["arrays"] for r in results], flock)
 
@@ -183,14 +186,15 @@ def jobs_for(
 
 def fly_flock(jobs: list[FlockJob], executor: Any = None, progress: Any = None) -> dict:
     """Fly every bird (in this process, or on ``executor``) and stack their logs; a
-    steered flock in lockstep in this process (:func:`fly_steered`)."""
+    steered flock in lockstep in this process (:func:`fly_steered`).  ``progress(n)``:
+    n birds flown, or (steered) -n wingbeats flown by every bird."""
     if load_flock(jobs[0].source).rule == "steer":
         if executor is not None:
             raise FlockError(
                 "--jobs with a steered flock (rule 'steer'); allowed: one process (its "
                 "birds fly in lockstep)"
             )
-        return fly_steered(jobs)
+        return fly_steered(jobs, None if progress is None else lambda b, n: progress(-b))
     if executor is None:
         results = []
         for job in jobs:

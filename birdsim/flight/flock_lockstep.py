@@ -52,6 +52,8 @@ class Lockstep:
         self.failed: str | None = None
         self.cond = threading.Condition()
         self.updates = 0
+        #: optional callable(k) after the rules of control update k
+        self.on_update: Any = None
 
     # ---- turns -----------------------------------------------------------------------
 
@@ -113,6 +115,8 @@ class Lockstep:
             if not p.lateral:  # flown by the straight loop, which holds y
                 acc[j, 1] = 0.0
             p.set_steering(t, delta[j], delta_v[j], acc[j])
+        if self.on_update is not None:
+            self.on_update(self.updates)
         self.updates += 1
 
 
