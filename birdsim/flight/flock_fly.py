@@ -284,6 +284,8 @@ def flock_summary(arrays: dict[str, np.ndarray], semispan: float) -> dict[str, A
         "min_separation_pair": [a, b] if n > 1 else None,
         "min_separation_time": float(arrays["t"][0, k]) if n > 1 else None,
         "birds": birds,
+        # a steered flock: the largest displacement of a reference by the rules
+        "max_steering": float(np.abs(arrays["steer"]).max()) if "steer" in arrays else None,
     }
 
 
