@@ -84,7 +84,7 @@ def rule_accelerations(
     np.fill_diagonal(dist, np.inf)
     # separation: away from every bird inside the radius, linearly stronger to contact
     push = np.clip(1.0 - dist / cfg.separation_radius, 0.0, None)
-    unit = diff / np.where(np.isfinite(dist), dist, 1.0)[..., None]
+    unit = diff / np.maximum(np.where(np.isfinite(dist), dist, 1.0), 1e-12)[..., None]
     sep = np.einsum("ij,ijk->ik", push, unit)
     # alignment and cohesion: the neighbours' mean formation error minus the bird's own
     nbr = dist < cfg.neighbour_radius
