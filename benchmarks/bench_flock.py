@@ -9,8 +9,11 @@
   rule ``offsets`` (the same birds one after another, no rules), CPU side by side;
 * ``flock-v`` (12 pigeons in a straight V, 10 s, posed): as before the rules.
 
-``python benchmarks/bench_flock.py --birds N`` flies N seed birds (rows of 10, 3 semispans
-apart) on the preset's path instead (issue 27: 100 birds within 5 minutes).
+``python benchmarks/bench_flock.py --birds N`` flies N seed birds (rows of 5, 3 semispans
+apart: 20 rows for 100) on the preset's path instead (issue 27: 100 birds within 5
+minutes).  Rows of 10 put the inner birds 13.5 semispans inside the leader's radius of
+50 (speed 0.365 omega s): those saturated in the turn and diverged (measured:
+docs/fast-flight.md).
 """
 
 from __future__ import annotations
@@ -46,7 +49,7 @@ def _line(name: str, info: dict, wall: float, cpu: float, arrays: dict) -> str:
     )
 
 
-def block(n: int, spacing: float = 3.0, per_row: int = 10) -> str:
+def block(n: int, spacing: float = 3.0, per_row: int = 5) -> str:
     """A flock file of ``n`` seed birds on the preset's path, steered: rows of
     ``per_row`` birds ``spacing`` semispans apart (side by side and row behind row),
     centred on the leader's track."""
