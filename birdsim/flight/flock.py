@@ -1,4 +1,4 @@
-"""Flock files (issue 27, item 2): N birds flying one leader path with offsets.
+"""Flock files (issue 27, item 2): N birds by one leader path, at offsets or steered.
 
 A flock file (TOML; lengths in the birds' own length unit, e.g. metres)::
 
@@ -9,25 +9,31 @@ A flock file (TOML; lengths in the birds' own length unit, e.g. metres)::
     model = "m3"                  # optional, as `birdsim fly --model`
     attitude = "posed"            # optional: posed or free (as `birdsim fly --attitude`)
     seconds = 10                  # optional: simulated time (default: the path's length)
+    rule = "offsets"              # optional: offsets (default) or steer (Reynolds' rules,
+                                  # the attitude free; birdsim.flight.steering)
+    [steering]                    # optional: SteeringConfig's fields (rule steer)
+    separation_radius = 2.5
     [[bird]]
     file = "../models/pigeon.toml"   # optional (default: the seed bird); relative to the file
-    offset = [0.0, 0.0, 0.0]         # the bird's offset from the leader's path: x forward,
-                                     # y left, z up
+    offset = [0.0, 0.0, 0.0]         # the bird's place by the leader's path: x forward, y
+                                     # left, z up (along its track on a turning path)
     path = "my-path.toml"            # optional: the bird's own path instead of the
                                      # leader's (then shifted by its offset)
     [[bird]]
     ...
 
-Group rule "follow the leader path with offsets": bird ``i`` flies the leader's path
-shifted by its offset (its start position is the path's start plus the offset); a bird
-with its own ``path`` flies that one, shifted by its offset.  Every bird flies for the
-flock's ``seconds`` (default: the leader path's length).  The
-birds of one flock share their semispan and wingbeat period (the path is written in
-reduced units, semispans and wingbeats: the same path in the world for every bird); their
-masses, inertia and tails may differ.  Bad input is one line naming the entry
-(:class:`FlockError`): more than :data:`MAX_BIRDS` birds, two start positions closer than
-:data:`MIN_START_SEPARATION` semispans, a bird file that does not parse (named with its
-index), a perched or force-keyframe leader path.
+Rule "offsets": bird ``i`` flies its place by the leader's path (its start is the
+path's start plus the offset); a bird with its own ``path`` flies that one, shifted by
+its offset.  Rule "steer": that place is the goal of Reynolds' steering
+(:mod:`birdsim.flight.steering`), the birds in lockstep
+(:mod:`birdsim.flight.flock_lockstep`).  Every bird flies for the flock's ``seconds``
+(default: the leader path's length).  The birds of one flock share their semispan and
+wingbeat period (the path is written in reduced units, semispans and wingbeats: the same
+path in the world for every bird); their masses, inertia and tails may differ.  Bad
+input is one line naming the entry (:class:`FlockError`): more than :data:`MAX_BIRDS`
+birds, two start positions closer than :data:`MIN_START_SEPARATION` semispans, a bird
+file that does not parse (named with its index), a perched or force-keyframe leader
+path, an unknown rule or steering key, the rule steer with the posed attitude.
 """
 
 from __future__ import annotations

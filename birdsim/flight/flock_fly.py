@@ -1,18 +1,16 @@
-"""Flying a flock (:mod:`birdsim.flight.flock`): every bird its own free flight along the
-leader's path shifted by its offset, and the flock's log with a leading bird axis.
+"""Flying a flock (:mod:`birdsim.flight.flock`): every bird its own free flight at its
+place by the leader's path (rule ``offsets``: one after another in this process or one
+task per bird on the batch executor, :mod:`birdsim.flight.batch`) or steered by Reynolds'
+rules in lockstep (rule ``steer``: :func:`fly_steered`), and the flock's log with a
+leading bird axis.
 
-Each bird is flown by :func:`birdsim.flight.freeflight.fly` (its own MuJoCo model, its
-own controller), one after another in this process or one task per bird on the batch
-executor (:mod:`birdsim.flight.batch`, fresh worker processes).  The birds do not act on
-one another in the "follow the leader path with offsets" rule (no contacts in free
-flight, no wake interaction in the quasi-steady aerodynamics), so flying them in turn or
-in lockstep gives the same flights.
-
-Offsets: x and z shift the path itself (the bird flies from and along the shifted path);
-y is applied by translation of the flown state (``y``, ``y_ref``, ``qpos[..., 1]``): the
-free-flight loop flies paths in the x-z plane at y = 0 (a path with a side offset is a
-3-D path, flown by the turning loop with the attitude free), and nothing in free flight
-depends on y (uniform gravity and wind, contacts off), so this is exact.
+Places: on a planar leader path x and z shift the path itself (the bird flies from and
+along the shifted path) and y is applied by translation of the flown state (``y``,
+``y_ref``, ``qpos[..., 1]``): the free-flight loop flies paths in the x-z plane at y = 0,
+and nothing in free flight depends on y (uniform gravity and wind, contacts off), so this
+is exact.  On a turning leader path (or with the rule ``steer``) the bird flies a
+:class:`birdsim.flight.steering.FlockPath` (its place along the leader's track, the
+steering's displacement added), started at y = 0 and moved back by the same translation.
 """
 
 from __future__ import annotations
