@@ -8,9 +8,10 @@ until its next control update (``fly``'s ``control_hook``), publishes its positi
 velocity there, and hands the turn to bird ``i + 1``; the last bird, having seen every
 bird's state at the same time ``t_k``, computes the rules for all of them and sets each
 bird's steering for the interval ``[t_k, t_k+1)``; then bird 0 flies that interval, and
-so on.  One thread runs at a time (the turn is a condition variable), so the birds'
-simulations are exactly those of one process flying them one after another with the
-references the rules set: the threads are coroutines, not parallelism.  MuJoCo's
+so on.  One thread runs at a time (one ``threading.Event`` per bird: a hand-over wakes
+the next bird only), so the birds' simulations are exactly those of one process flying
+them one after another with the references the rules set: the threads are coroutines,
+not parallelism.  MuJoCo's
 passive callback is process-wide: the bird holding the turn installs its own and
 removes it when it hands the turn on.
 
@@ -48,9 +49,11 @@ class Lockstep:
         self.pos = np.zeros((n, 3))
         self.vel = np.zeros((n, 3))
         self.time = np.zeros(n)
-        self.turn = 0
+        # one event per bird: handing the turn on wakes the next bird only (a shared
+        # condition variable woke every waiting bird at every hand-over)
+        self.events = [threading.Event() for _ in range(n)]
+        self.events[0].set()
         self.failed: str | None = None
-        self.cond = threading.Condition()
         self.updates = 0
         #: optional callable(k) after the rules of control update k
         self.on_update: Any = None
@@ -58,21 +61,19 @@ class Lockstep:
     # ---- turns -----------------------------------------------------------------------
 
     def wait_turn(self, i: int) -> None:
-        with self.cond:
-            self.cond.wait_for(lambda: self.turn == i or self.failed is not None)
-            if self.failed is not None:
-                raise _Aborted(self.failed)
+        self.events[i].wait()
+        self.events[i].clear()
+        if self.failed is not None:
+            raise _Aborted(self.failed)
 
     def pass_turn(self, i: int) -> None:
-        with self.cond:
-            self.turn = (i + 1) % self.n
-            self.cond.notify_all()
+        self.events[(i + 1) % self.n].set()
 
     def fail(self, message: str) -> None:
-        with self.cond:
-            if self.failed is None:
-                self.failed = message
-            self.cond.notify_all()
+        if self.failed is None:
+            self.failed = message
+        for e in self.events:
+            e.set()
 
     # ---- the control update ----------------------------------------------------------
 
