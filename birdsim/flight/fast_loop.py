@@ -56,6 +56,7 @@ def _run_steps(
     site_xpos,
     site_xmat,
     areas,
+    fold,
     wind,
     fl,
     ints,
@@ -88,8 +89,8 @@ def _run_steps(
             qvel[pv0 + i] = pres_v[k, i]
         capi.mj_step1(m, d)
         aero_kernel.apply_aero(
-            m, d, passive, site_ids, body_ids, site_xpos, site_xmat, areas, wind, fl, ints,
-            frame, tail_out,
+            m, d, passive, site_ids, body_ids, site_xpos, site_xmat, areas, fold, qpos, wind,
+            fl, ints, frame, tail_out,
         )  # fmt: skip
         capi.mj_fullM(m, d, M.ctypes.data)
         step_kernel.free_step(
@@ -155,7 +156,8 @@ class _Plan:
         )  # fmt: skip
         self.sites = (
             np.ascontiguousarray(cb.site_ids), np.ascontiguousarray(cb.body_ids), d.site_xpos,
-            d.site_xmat, np.ascontiguousarray(cb.areas[:, 0]), m.opt.wind,
+            d.site_xmat, np.ascontiguousarray(cb.areas[:, 0]), aero_kernel.fold_addresses(cb),
+            m.opt.wind,
         )  # fmt: skip
         self.aero_for: tuple | None = None
         self.aero: tuple = ()
