@@ -170,6 +170,9 @@ def test_bounded_lsq_is_lsq_linear():
         x, mask = bounded_lsq(a, b, lb, ub)
         ref = lsq_linear(a, b, bounds=(lb, ub))
         assert np.array_equal(x, ref.x) and np.array_equal(mask, ref.active_mask)
+    for rows in (3, 5, 8):  # numpy's LAPACK call made directly: np.linalg.lstsq's numbers
+        a, b = rng.normal(size=(rows, 3)), rng.normal(size=rows)
+        assert np.array_equal(bounded_lsq_module._lstsq(a, b), np.linalg.lstsq(a, b, rcond=-1)[0])
 
 
 def test_compiled_table_lookup_is_scipys():
