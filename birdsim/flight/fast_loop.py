@@ -161,6 +161,14 @@ class _Plan:
         )  # fmt: skip
         self.aero_for: tuple | None = None
         self.aero: tuple = ()
+        self._weight: tuple | None = None
+
+    def weight(self, fb) -> np.ndarray:
+        """``fb.total_mass * gravity`` (world), made again only when either changes."""
+        key = (fb.total_mass, *fb.m.opt.gravity.tolist())
+        if self._weight is None or self._weight[0] != key:
+            self._weight = (key, fb.total_mass * np.array(fb.m.opt.gravity))
+        return self._weight[1]
 
     def aero_arguments(self, cb) -> tuple:
         key = (cb.tail_controls, cb.enabled, cb.body_drag)
@@ -201,7 +209,7 @@ def step(fb, pres, wind: np.ndarray, record: list | None, every: int) -> bool:
         return False
     m, cb, h = fb.m, fb.cb, fb.h
     m.opt.wind[:] = wind
-    weight = fb.total_mass * np.array(m.opt.gravity)
+    weight = plan.weight(fb)
     Pq, P = plan.Pq, plan.P
     pres_q = np.ascontiguousarray(pres.qpos[:, Pq])
     pres_v = np.ascontiguousarray(pres.qvel[:, P])
@@ -238,9 +246,10 @@ def step(fb, pres, wind: np.ndarray, record: list | None, every: int) -> bool:
         cb.tail_alpha = float(tail[3])
     if record is not None:
         power = rec_out[:, 6].tolist()
-        for j in range(samples):
-            r = rec_out[j]
-            record.append((times[j], rec_q[j], rec_v[j], r[0:3], r[3:6], power[j], r[7:10]))
+        moment, force, tail_f = rec_out[:, 0:3], rec_out[:, 3:6], rec_out[:, 7:10]
+        record.extend(
+            zip(times, rec_q, rec_v, moment, force, power, tail_f)
+        )  # one tuple per sample, as the reference appends them
     if fb.config.momentum_projection and n:
         fb.projection_max = max(fb.projection_max, float(stats[0]), float(stats[1]) * h)
     fb._check_finite()

@@ -328,7 +328,8 @@ def wing_rows(
     f = np.ascontiguousarray
     use_sh = shoulder is not None
     sh = shoulder if use_sh else (np.zeros((t, 4)),) * 3
-    qpos = np.tile(m.qpos0, (t, 1))
+    qpos = np.empty((t, m.nq))
+    qpos[:] = m.qpos0  # np.tile(m.qpos0, (t, 1))
     qvel = np.zeros((t, m.nv))
     qacc = np.zeros((t, m.nv))
     prescribe_kernel(
