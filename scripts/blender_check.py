@@ -274,24 +274,22 @@ def check(out: Path) -> int:
         )
         angles.append(elevation(span))
     report("bvh wing: one wingbeat per period", one_beat_per_period(angles, exp["frames_per_beat"]))
-    failures += check_turn(out, report, close)
+    check_turn(out, report, close)  # counted by report
     print(f"{failures} failed" if failures else "all Blender checks passed")
     return 1 if failures else 0
 
 
-def check_turn(out: Path, report, close) -> int:
+def check_turn(out: Path, report, close) -> None:
     """The turn's USD and BVH in Blender: the body's position at three frames (1e-4
-    semispan) and its heading change from frame 0 (HEADING_TOL_DEG); returns the number of
-    failed checks (each also printed by ``report``)."""
+    semispan) and its heading change from frame 0 (HEADING_TOL_DEG), each through
+    ``report`` (which counts the failures)."""
     import bpy
     from mathutils import Vector
 
     exp = json.loads((out / "turn.json").read_text())
     x0 = Vector(exp["x_axis_0"])
-    failed = 0
 
     def turn_check(label: str, matrices: dict[int, object], positions: dict[int, list]) -> None:
-        nonlocal failed
         r0 = matrices[0].to_quaternion().to_matrix()
         for k in map(int, exp["body"]):
             close(f"{label} turn: body at frame {k}", positions[k], exp["body"][str(k)], mpu)
@@ -302,13 +300,11 @@ def check_turn(out: Path, report, close) -> int:
             got = (got + 180.0) % 360.0 - 180.0
             want = exp["heading_change_deg"][str(k)]
             bad = abs(got - want) > HEADING_TOL_DEG
-            failed += bad
             report(
                 f"{label} turn: heading change at frame {k} ({want:.2f} deg)",
                 f"{got:.5f} deg, expected {want:.5f}" if bad else "",
             )
         last = exp["heading_change_deg"][str(max(map(int, exp["body"])))]
-        failed += abs(last) < MIN_TURN_DEG
         report(
             f"{label} turn: turns", "" if abs(last) >= MIN_TURN_DEG else f"only {last:.1f} deg"
         )
@@ -320,7 +316,6 @@ def check_turn(out: Path, report, close) -> int:
     body = bpy.data.objects.get("birdsim_body")
     if body is None:
         report("usd turn: birdsim_body", "not imported")
-        failed += 1
     else:
         mats, pos = {}, {}
         for k in map(int, exp["body"]):
@@ -336,7 +331,7 @@ def check_turn(out: Path, report, close) -> int:
     rig = next((o for o in bpy.data.objects if o.type == "ARMATURE"), None)
     if rig is None:
         report("bvh turn: armature", "not imported")
-        return failed + 1
+        return
     mats, pos = {}, {}
     for k in map(int, exp["body"]):
         scene.frame_set(scene.frame_start + k)
@@ -344,7 +339,6 @@ def check_turn(out: Path, report, close) -> int:
         mats[k] = rig.matrix_world @ root.matrix
         pos[k] = list(rig.matrix_world @ root.head)
     turn_check("bvh", mats, pos)
-    return failed
 
 
 if __name__ == "__main__":
