@@ -45,6 +45,9 @@ def is_three_d(reference: Any, t_end: float) -> bool:
 SLOW_TURN_SPEED = 0.3
 #: Wingbeats over which the slow turn's posture is taken before the turn and left after.
 POSTURE_BEATS = 2.0
+#: Wingbeats the posture is held after the last slow turn before it is left (the
+#: u-turn's lateral loop settles the keyhole's exit in it before braking).
+POSTURE_HOLD_BEATS = 6.0
 
 
 def _posture_weight(
@@ -52,9 +55,10 @@ def _posture_weight(
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The weight (0..1) of the slow-turn posture on the grid ``t`` with its rate and
     acceleration: 1 where the path turns (``turn_rate`` not 0) below
-    :data:`SLOW_TURN_SPEED`, falling to 0 within :data:`POSTURE_BEATS` of such a
-    sample (the quintic smootherstep of the time to it, so taken before the turn, left
-    after it, with continuous rate and acceleration)."""
+    :data:`SLOW_TURN_SPEED` and for :data:`POSTURE_HOLD_BEATS` after the last such
+    sample, falling to 0 over :data:`POSTURE_BEATS` (the quintic smootherstep of the
+    time, so taken before the turn, left after it, with continuous rate and
+    acceleration)."""
     slow_turn = (np.abs(turn_rate) > 1e-9) & (speed < SLOW_TURN_SPEED)
     if not slow_turn.any():
         zero = np.zeros_like(t)
@@ -64,6 +68,7 @@ def _posture_weight(
     before, after = ts[np.clip(i - 1, 0, len(ts) - 1)], ts[np.clip(i, 0, len(ts) - 1)]
     gap = np.minimum(np.abs(t - before), np.abs(t - after))  # time to the nearest
     gap = np.where(slow_turn, 0.0, gap)
+    gap = np.where(t > ts[-1], np.maximum(gap - POSTURE_HOLD_BEATS * TWO_PI, 0.0), gap)
     u = np.clip(1.0 - gap / (POSTURE_BEATS * TWO_PI), 0.0, 1.0)
     w = u**3 * (10.0 - 15.0 * u + 6.0 * u * u)
     dw = np.gradient(w, t)
@@ -208,6 +213,7 @@ class TrackFrame:
 __all__ = [
     "HOLD_SPEED",
     "POSTURE_BEATS",
+    "POSTURE_HOLD_BEATS",
     "SLOW_TURN_SPEED",
     "TrackFrame",
     "TrackState",

@@ -118,6 +118,13 @@ U_BRAKING = ((0.0, SLOW_SPEED, 2.0), (5.0, 0.12, 1.8), (10.0, 0.04, 1.7), (16.0,
 #: Straight flight at slow speed before the keyhole and after it (wingbeats, before the
 #: outbound one is lengthened to bring the bird back to its perch).
 U_STRAIGHT = 1.0
+#: Straight flight at slow speed between the keyhole and the braking (wingbeats): the
+#: lateral loop settles the keyhole's exit in the slow-turn posture (held
+#: ``track.POSTURE_HOLD_BEATS`` after the turn) before the braking pitches the body up to
+#: 80 degrees, where a bank is mostly a rotation about the body's z axis again
+#: (measured: 1 wingbeat -> path RMS 1.17, drifting 5 semispans sideways in the braking;
+#: 5 with the posture held 4 -> 0.44; 7 and 6 -> 0.18; docs/turning.md).
+U_BACK = 7.0
 U_RAMP_BEATS = RAMP_BEATS
 
 
@@ -127,13 +134,16 @@ def _u_turn(theta: float, out_beats: float, perch: bool) -> FlightPath:
     t0 = U_TAKE_OFF[-1][0] + out_beats
     # the side turns at the keyhole's rate, their ramps as long as the angle lets them
     # (a steady part of 5 % of it), the middle one with the slow turns' ramps
-    side = min(U_RAMP_BEATS, 0.95 * theta / (v / r) / TWO_PI)
-    turn = turn_keyframes(t0, 0.0, -theta, v, r, side, zt)
+    # the side turns with the slow turns' ramps: on a wider radius, their steady part 5 %
+    # of the angle (on the keyhole's radius their ramps would be 2.5 wingbeats: path RMS
+    # 0.18 against 0.067)
+    side, r_side = U_RAMP_BEATS, v * 1.05 * U_RAMP_BEATS * TWO_PI / theta
+    turn = turn_keyframes(t0, 0.0, -theta, v, r_side, side, zt)
     turn += turn_keyframes(turn[-1].t, -theta, math.pi + 2 * theta, v, r, U_RAMP_BEATS, zt)[1:]
-    turn += turn_keyframes(turn[-1].t, math.pi + theta, -theta, v, r, side, zt)[1:]
+    turn += turn_keyframes(turn[-1].t, math.pi + theta, -theta, v, r_side, side, zt)[1:]
     turn[0] = _K(turn[0].t, zt, V=v, heading=0.0, turn_rate=0.0, regime="keyhole turn")
     ks += turn
-    tb = turn[-1].t + U_STRAIGHT
+    tb = turn[-1].t + U_BACK
     for i, (dt, s, z) in enumerate(U_BRAKING):
         label = ("braking", "", "approach", "perched")[i]
         ks.append(_K(tb + dt, z, V=s, heading=math.pi, regime=label))

@@ -97,7 +97,9 @@ def turn_readings(log: dict[str, Any]) -> dict[str, float]:
     period = 2 * math.pi / omega
     speed = np.array([np.hypot(*vel[beat == b].mean(axis=0)) for b in range(n)])
     dpsi = np.gradient(series["psi"]) / period
-    steady = series["steady"] if series["steady"].any() else turning
+    # (the turn-90 has hardly a steady wingbeat: its 5-wingbeat ramps take 80 % of the
+    # heading change; the wingbeats within 10 % of the largest rate stand for it)
+    steady = series["steady"] if series["steady"].any() else rate_ref > 0.9 * rate_ref.max()
     radius = float(np.mean(speed[steady] / np.abs(dpsi[steady])))
     # heading change per wingbeat against the bank at mid-downstroke (seed: right wing
     # down > 0, so a left turn banks < 0): signed by the turn's direction
