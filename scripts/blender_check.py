@@ -305,9 +305,7 @@ def check_turn(out: Path, report, close) -> None:
                 f"{got:.5f} deg, expected {want:.5f}" if bad else "",
             )
         last = exp["heading_change_deg"][str(max(map(int, exp["body"])))]
-        report(
-            f"{label} turn: turns", "" if abs(last) >= MIN_TURN_DEG else f"only {last:.1f} deg"
-        )
+        report(f"{label} turn: turns", "" if abs(last) >= MIN_TURN_DEG else f"only {last:.1f} deg")
 
     mpu = exp["metres_per_unit"]
     bpy.ops.wm.read_factory_settings(use_empty=True)
