@@ -59,8 +59,9 @@ TURN_AXIS_BEATS = (1.25, 3.0, 2.0)
 #: lowered posture (:func:`turn_pitch`) the heading's rotation is mostly about the body's
 #: z axis, whose authority in flight is about a quarter of the held body's Jacobian
 #: (docs/free-body.md); asked at 2 wingbeats the yaw takes the differential inputs the
-#: roll needs.  Measured (slow turn, R = 4 / 4.5 semispans, 4-wingbeat ramps): yaw 2 ->
-#: path RMS 0.60 / 0.31, 3 -> 0.25 / -, 4 -> 0.19 / 0.16 (docs/turning.md).
+#: roll needs.  Measured (slow turn, R = 4 / 4.5 semispans, 4-wingbeat ramps, roll 1.25):
+#: yaw 2 -> path RMS 0.60 / 0.31, 3 -> 0.25 / -, 4 -> 0.19 / 0.16; then roll 1 instead of
+#: 1.25 (R = 5, 5-wingbeat ramps): 0.079 against 0.108 (docs/turning.md).
 SLOW_TURN_AXIS_BEATS = (1.0, 3.0, 4.0)
 #: Plan the body's pitch command along the turn (:class:`birdsim.flight.pitch_plan.PitchPlan`
 #: from the table's pitch for the track's banked-plane force), as straight flight does,
@@ -72,8 +73,10 @@ TURN_PITCH_PLAN = True
 
 #: The body's pitch in a slow turn (rad, 21 degrees): see :func:`turn_pitch`.
 #: (Measured on the seed bird's slow 90-degree turn, R = 4 semispans, 4-wingbeat ramps,
-#: lowering the body's pitch command from the table's 58 degrees by 0.45 / 0.65 / 0.8
-#: rad: heading change 66 / 96.5 / 121 degrees, path RMS 2.2 / 0.18 / 0.56; docs/turning.md.)
+#: the attitude loop of the cruise turns: the body's pitch command lowered by 0.65 / 0.8
+#: rad from the table's 58 degrees: heading change 96.5 / 121 degrees, path RMS 0.18 /
+#: 0.56; held at 0.30 / 0.37 / 0.45 rad: 0.27 (saturated) / 0.60 / 1.45; the settings of
+#: SLOW_TURN_AXIS_BEATS then made 0.37 fly; docs/turning.md.)
 SLOW_TURN_PITCH = 0.37
 
 
@@ -99,6 +102,14 @@ def turn_pitch(
         return pitch
     e = p - SLOW_TURN_PITCH
     return p - w * e, dp - dw * e - w * dp, ddp - ddw * e - 2.0 * dw * dp - w * ddp
+
+
+def axis_beats(track: Any) -> dict[str, tuple[float, float, float]]:
+    """The attitude loop's time constants for a flight on ``track`` (None: straight
+    flight, the loop's own), as keyword arguments of ``AttitudeLoop``."""
+    if track is None:
+        return {}
+    return {"beats": SLOW_TURN_AXIS_BEATS if track.slow_turn else TURN_AXIS_BEATS}
 
 
 def turn_command(
@@ -146,6 +157,7 @@ __all__ = [
     "SLOW_TURN_AXIS_BEATS",
     "SLOW_TURN_PITCH",
     "TURN_PITCH_PLAN",
+    "axis_beats",
     "turn_command",
     "turn_pitch",
 ]
