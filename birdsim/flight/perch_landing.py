@@ -25,7 +25,7 @@ from typing import Any
 
 import numpy as np
 
-from birdsim.flight.contact import REST_WINGS, ContactBird
+from birdsim.flight.contact import REST_WINGS, STEPS_PER_BEAT, ContactBird
 from birdsim.flight.freeflight import FlightResult, fly
 from birdsim.flight.leg_motion import LegMotion, LegPlan
 from birdsim.flight.legwork import touchdown, touchdown_speed
@@ -47,7 +47,11 @@ from birdsim.physics.units import reduced_bird
 
 TWO_PI = 2.0 * math.pi
 #: Wingbeats of the contact phase after the touchdown.
-STAND_BEATS = 8.0
+STAND_BEATS = 18.0
+#: The hips lower the body to the standing pitch over this long after the braking
+#: (wingbeats; over 5 the torso moved at 0.002-0.004 omega s, above 1 % of the
+#: perch-to-perch cruise speed 0.2, for 5 wingbeats)
+LOWER_BEATS = 16.0
 #: The legs reach out from tucked over the hover's last REACH_BEATS (wingbeats).
 REACH_BEATS = 0.5
 
@@ -175,6 +179,7 @@ def land(
             None,
             STAND_BEATS,
             pitch_to=STAND_PITCH,
+            rise_beats=LOWER_BEATS,
             fold=(stopped, REST_WINGS),
             balance=config.attitude == "free",
         )
@@ -188,12 +193,23 @@ def land(
     e = np.hypot(flight["x"] - flight["x_ref"], flight["z"] - flight["z_ref"])
     skip = t_beats[: i + 1] >= 2.0
     meta = dict(result.meta)
-    # at rest against the approach's speed (the preset's first keyframe: cruise)
-    v_app = float(preset.keyframes[0].V or 0.0) or float(np.hypot(a["vx"][0], a["vz"][0]))
-    first = int(np.argmax(rows["on_perch"]))
-    sp = np.linalg.norm(rows["qvel"][:, :3], axis=1)[first:]
+    # at rest against the approach's speed: the path's fastest (the landing preset's
+    # cruise, 0.5; a take-off's flight into a landing, its cruise between the perches)
+    v_app = float(
+        np.max(
+            np.hypot(
+                flight["x_ref"][1:] - flight["x_ref"][:-1],
+                flight["z_ref"][1:] - flight["z_ref"][:-1],
+            )
+            / np.diff(flight["t"])
+        )
+    )
+    # the whole bird's centre of mass, every step from the first contact (the torso's
+    # origin also swings about the hips as they lower the body: 0.002-0.003 omega s)
+    first = int(np.argmax(td.record["foot_normal"] > 0.0))
+    sp = td.record["com_speed"][first:]
     above = np.nonzero(sp >= 0.01 * v_app)[0]
-    per_beat = config.log_per_beat
+    per_beat = STEPS_PER_BEAT
     meta["legs"] = {
         "approach_speed": v_app,
         "rest_beats_vs_approach": (above[-1] + 1 if len(above) else 0) / per_beat,
