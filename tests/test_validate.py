@@ -241,8 +241,8 @@ PINNED = {
     "E00_leg_share": (100.1, 0.01),
     "E00_peak_force_starling": (4.056, 0.02),
     "E00_peak_force_quail": (4.056, 0.02),
-    "P14_touchdown_speed": (0.962, 0.03),
-    "P14_landing_force_ratio": (0.861, 0.03),
+    "P14_touchdown_speed": (0.997, 0.03),
+    "P14_landing_force_ratio": (0.853, 0.03),
 }
 VERDICTS = {
     "E00_peak_force_quail": "not",
