@@ -91,14 +91,15 @@ def _means_rate_kernel(
     ct, stt = np.cos(phases), np.sin(phases)
     cq = np.empty(J)
     sq = np.empty(J)
+    cph, sph = np.empty(J), np.empty(J)
     qv = np.empty(J)
     qd = np.empty(J)
     fxs, fys, fzs = np.empty(K), np.empty(K), np.empty(K)
     ps = np.empty(K)
     TQ, TD, TC, TS = np.empty((N, J)), np.empty((N, J)), np.empty((N, J)), np.empty((N, J))
     for b in range(lo, hi):
-        cph = np.cos(phase[b])
-        sph = np.sin(phase[b])
+        for j in range(J):
+            cph[j], sph[j] = math.cos(phase[b, j]), math.sin(phase[b, j])
         cp, sp = math.cos(pitch[b]), math.sin(pitch[b])
         # the body relative to the air, body axes: ((V, 0, -climb) - w_air) by the pitch
         rx, ry, rz = speed[b] - air_earth[b, 0], -air_earth[b, 1], -climb[b] - air_earth[b, 2]
