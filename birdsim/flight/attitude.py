@@ -60,10 +60,18 @@ from birdsim.mujoco.tail import TailControls
 #: best (cruise, hover within 3 degrees of pitch; take-off and landing the least
 #: saturated); 4 loses cruise's pitch again (docs/free-body.md).
 ATTITUDE_BEATS = 2.0
-#: ... per axis (roll, pitch, yaw): the lateral axes keep 2 wingbeats, with which a side
-#: gust's roll and yaw are back within 2 degrees in 4 wingbeats (3: 5 and 3 degrees
-#: still after 8).
-AXIS_BEATS = (2.0, ATTITUDE_BEATS, 2.0)
+#: Wingbeats per time constant of the roll loop in straight flight.  The yaw excursion a
+#: side gust leaves (about 10 degrees) is flown back through the roll-yaw coupling of the
+#: flapping (dL/dr, dN/dp) and of the differential inputs; with the roll loop at 2
+#: wingbeats that swing rang for 10 wingbeats (roll and yaw 5 degrees 8 wingbeats after
+#: the gust).  Measured (seed bird, cruise, 30 % side gust, lateral loop at
+#: LATERAL_PER_ROLL times this; roll / yaw at most over wingbeats 12-15, path error):
+#: 2: 4.2 / 2.4 deg, 0.042; 1.5: 2.2 / 2.2, 0.046; 1.25: 1.3 / 2.4, 0.037; 1: 0.8 / 1.8,
+#: 0.035 (within 0.05 semispan and 2 degrees from 7 wingbeats after the gust); 0.75
+#: (lateral 3 wingbeats): 1.2 / 2.9, 0.057 (docs/free-body.md, "Gusts").
+ROLL_BEATS = 1.0
+#: ... per axis (roll, pitch, yaw); yaw keeps 2 wingbeats (1.5 was worse, second stage).
+AXIS_BEATS = (ROLL_BEATS, ATTITUDE_BEATS, 2.0)
 #: The moment rows and the inputs of the two allocations: pitch by the symmetric inputs
 #: (sweep, tail elevation), roll and yaw by the differential ones.
 SYM_ROWS, SYM_INPUTS = [1], [2, 3, 6]
@@ -362,6 +370,7 @@ class AttitudeLoop:
 __all__ = [
     "ATTITUDE_BEATS",
     "AXIS_BEATS",
+    "ROLL_BEATS",
     "INPUTS",
     "AttitudeLoop",
     "attitude_gains",
