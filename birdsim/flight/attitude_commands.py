@@ -17,10 +17,13 @@ TWO_PI = 2.0 * math.pi
 #: (2 pi LATERAL_BEATS)``), delivered by banking: roll = atan(a_y / g), at most
 #: LATERAL_ROLL_MAX (rad).  Its time constant is LATERAL_PER_ROLL times the roll loop's
 #: (:data:`birdsim.flight.attitude.ROLL_BEATS`), so that the roll loop inside it is the
-#: faster; measured with the roll loop at 1 wingbeat (side gust, wingbeats after it until
-#: within 0.05 semispan and 2 degrees): lateral 2.5: 10, 3: 7, 3.5: 8, 4: 9 wingbeats
+#: faster.  Measured with the roll loop at 1 wingbeat (30 % side gust from wingbeat 3,
+#: wingbeats after it until within 0.05 semispan and 2 degrees): lateral 2.5: 10, 3: 7,
+#: 3.5: 8, 4: 9 wingbeats; with the lateral integral bounded
+#: (:data:`birdsim.flight.attitude.LATERAL_INTEGRAL_RAD`) and the gust from wingbeat 3,
+#: 3.25, 3.5, 3.75: lateral 3: 8, 8, 9, 9; 3.5: 8, 8, 8, 8; 4: -, 7, 8, 8
 #: (docs/free-body.md, "Gusts").
-LATERAL_PER_ROLL = 3.0
+LATERAL_PER_ROLL = 3.5
 LATERAL_BEATS = LATERAL_PER_ROLL * ROLL_BEATS
 LATERAL_ROLL_MAX = math.radians(30.0)
 

@@ -207,7 +207,9 @@ def fly(
         fb.start(pos0, vel0, pres, pitch=float(pres.pitch[0]) - d_pitch0, omega_body=omega0)
         att = AttitudeLoop(fb, enabled=free and attitude_loop)
         if track is not None:  # turning: the attitude loop's time constants of a turn
-            att = AttitudeLoop(fb, enabled=free and attitude_loop, beats=TURN_AXIS_BEATS)
+            att = AttitudeLoop(
+                fb, enabled=free and attitude_loop, beats=TURN_AXIS_BEATS, lateral_integral_rad=None
+            )
         if free and trim and hasattr(fb, "start_moment"):
             att.preset_integral(fb.start_moment, cmd.params, float(pres.pitch[0]), float(ref0.vx))
         compensate = free and stroke_compensation and "stroke_plane" in names
