@@ -27,7 +27,7 @@ from birdsim.flight.pitch_plan import PitchPlan, feedforward_pitch
 from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
 from birdsim.flight.track import TrackFrame, is_three_d
 from birdsim.flight.trim import sample_reference, trim_start
-from birdsim.flight.turning import TURN_AXIS_BEATS, TURN_PITCH_PLAN, turn_command
+from birdsim.flight.turning import TURN_PITCH_PLAN, axis_beats, turn_command, turn_pitch
 from birdsim.flight.wingbeat import INPUT_SMOOTHING_BEATS, WingbeatSchedule
 from birdsim.physics.bird import Bird
 from birdsim.physics.units import reduced_bird, scales
@@ -205,11 +205,7 @@ def fly(
         pres = fb.schedule.prescribe(np.zeros(1), cmd.params[None, :], zeros, zeros)
         omega0, d_pitch0 = getattr(fb, "start_rotation", (None, 0.0))
         fb.start(pos0, vel0, pres, pitch=float(pres.pitch[0]) - d_pitch0, omega_body=omega0)
-        att = AttitudeLoop(fb, enabled=free and attitude_loop)
-        if track is not None:  # turning: the attitude loop's time constants of a turn
-            att = AttitudeLoop(
-                fb, enabled=free and attitude_loop, beats=TURN_AXIS_BEATS, lateral_integral_rad=None
-            )
+        att = AttitudeLoop(fb, enabled=free and attitude_loop, **axis_beats(track))
         if free and trim and hasattr(fb, "start_moment"):
             att.preset_integral(fb.start_moment, cmd.params, float(pres.pitch[0]), float(ref0.vx))
         compensate = free and stroke_compensation and "stroke_plane" in names
@@ -268,6 +264,9 @@ def fly(
                     pitch_ref, pitch_rate_ref, pitch_acc_ref = command_filter(
                         pitch_ref, pitch_rate_ref, pitch, tau_ref, dt_ctl
                     )
+                if track is not None and plan is not None:  # a slow turn's lowered body
+                    pitch3 = turn_pitch(track, t, (pitch_ref, pitch_rate_ref, pitch_acc_ref))
+                    pitch_ref, pitch_rate_ref, pitch_acc_ref = pitch3
                 turn_cmd = None
                 if track is None:
                     roll_cmd = bank_command(lat_window, config.log_per_beat, red.gravity)
