@@ -60,10 +60,12 @@ from birdsim.mujoco.tail import TailControls
 #: best (cruise, hover within 3 degrees of pitch; take-off and landing the least
 #: saturated); 4 loses cruise's pitch again (docs/free-body.md).
 ATTITUDE_BEATS = 2.0
-#: ... per axis (roll, pitch, yaw): the lateral axes keep 2 wingbeats, with which a side
-#: gust's roll and yaw are back within 2 degrees in 4 wingbeats (3: 5 and 3 degrees
-#: still after 8).
-AXIS_BEATS = (2.0, ATTITUDE_BEATS, 2.0)
+#: Wingbeats per time constant of the roll loop in straight flight: at 2 the yaw a side
+#: gust leaves rang through the flapping's roll-yaw coupling for 10 wingbeats (roll and
+#: yaw 5 degrees 8 wingbeats after the gust); 1.5, 1.25, 1 measured in docs/free-body.md.
+ROLL_BEATS = 1.0
+#: ... per axis (roll, pitch, yaw); yaw keeps 2 wingbeats (1.5 was worse, second stage).
+AXIS_BEATS = (ROLL_BEATS, ATTITUDE_BEATS, 2.0)
 #: The moment rows and the inputs of the two allocations: pitch by the symmetric inputs
 #: (sweep, tail elevation), roll and yaw by the differential ones.
 SYM_ROWS, SYM_INPUTS = [1], [2, 3, 6]
@@ -101,6 +103,11 @@ INTEGRAL_LIMIT_RAD = 0.5
 #: the seed bird's side gust came back more slowly; measured in docs/free-body.md ("The
 #: pigeon's attitude, third stage").
 INTEGRAL_AUTHORITY = False
+#: Straight flight: the roll and yaw integrals' share is bounded by this many radians
+#: times omega_a^2 (symmetric: no lateral bias to trim; at 0.5 a side gust's yaw wound it
+#: up into a lateral swing; 0.05 / 0.1 / 0.5 measured in docs/free-body.md, "Gusts").
+#: Turns keep INTEGRAL_LIMIT_RAD (their bank and yaw rate leave a bias to trim).
+LATERAL_INTEGRAL_RAD = 0.1
 
 
 def euler_zyx(quat: np.ndarray) -> np.ndarray:
@@ -205,8 +212,16 @@ def integral_bound(
 class AttitudeLoop:
     """The inner loop for one flight (see the module docstring)."""
 
-    def __init__(self, fb, *, enabled: bool = True, beats: object = AXIS_BEATS):
+    def __init__(
+        self,
+        fb,
+        *,
+        enabled: bool = True,
+        beats: object = AXIS_BEATS,
+        lateral_integral_rad: float | None = LATERAL_INTEGRAL_RAD,
+    ):
         self.fb = fb
+        self.lateral_integral_rad = lateral_integral_rad
         self.enabled = enabled
         self.gains = attitude_gains(fb.red.omega, beats)
         mujoco.mj_fwdPosition(fb.m, fb.d)
@@ -243,7 +258,11 @@ class AttitudeLoop:
         """Per axis bound of the integral's share (per unit inertia): :func:`integral_bound`
         with this loop's inertia and the inputs' bounds at ``params``."""
         lo, hi = self.bounds(params)
-        return integral_bound(omega_a, jac, lo, hi, self.inertia, INTEGRAL_AUTHORITY)
+        lim = integral_bound(omega_a, jac, lo, hi, self.inertia, INTEGRAL_AUTHORITY)
+        if self.lateral_integral_rad is not None:  # straight flight: no lateral bias
+            cap = self.lateral_integral_rad * np.asarray(omega_a, dtype=float) ** 2
+            lim = np.where([True, False, True], np.minimum(lim, cap), lim)
+        return lim
 
     def _measure(
         self, params: np.ndarray, pitch: float, speed: float, turn: np.ndarray | None
@@ -362,6 +381,8 @@ class AttitudeLoop:
 __all__ = [
     "ATTITUDE_BEATS",
     "AXIS_BEATS",
+    "LATERAL_INTEGRAL_RAD",
+    "ROLL_BEATS",
     "INPUTS",
     "AttitudeLoop",
     "attitude_gains",

@@ -104,12 +104,15 @@ def turn_pitch(
     return p - w * e, dp - dw * e - w * dp, ddp - ddw * e - 2.0 * dw * dp - w * ddp
 
 
-def axis_beats(track: Any) -> dict[str, tuple[float, float, float]]:
+def axis_beats(track: Any) -> dict[str, Any]:
     """The attitude loop's time constants for a flight on ``track`` (None: straight
-    flight, the loop's own), as keyword arguments of ``AttitudeLoop``."""
+    flight, the loop's own), as keyword arguments of ``AttitudeLoop``; a turn keeps the
+    roll and yaw integrals' full bound (its bank and yaw rate leave a bias to trim;
+    straight flight bounds them by ``attitude.LATERAL_INTEGRAL_RAD``)."""
     if track is None:
         return {}
-    return {"beats": SLOW_TURN_AXIS_BEATS if track.slow_turn else TURN_AXIS_BEATS}
+    beats = SLOW_TURN_AXIS_BEATS if track.slow_turn else TURN_AXIS_BEATS
+    return {"beats": beats, "lateral_integral_rad": None}
 
 
 def turn_command(
