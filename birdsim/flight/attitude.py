@@ -50,6 +50,7 @@ from birdsim.flight.attitude_jacobians import (
     measured_with_rocking,
     split_inputs,
 )
+from birdsim.flight.attitude_stiffness import measured_pitch_stiffness
 from birdsim.flight.bounded_lsq import bounded_lsq
 from birdsim.mujoco.tail import TailControls
 
@@ -88,19 +89,17 @@ LAMBDA = 1e-4
 #: The integral's share of the moment (per unit inertia) is bounded by this many radians
 #: times omega_a^2 (anti-windup) ...
 INTEGRAL_LIMIT_RAD = 0.5
-#: ... or, with INTEGRAL_AUTHORITY, by the moment the axis's inputs deliver at their
-#: bounds (per unit inertia) where that is larger (:func:`integral_bound`).  The bias the
-#: integral holds (the flown wingbeat-mean moment minus the held body's ``M_0``) is a
-#: moment, not an angle times the inertia: in the pigeon's free cruise (pitch inertia
-#: 0.78 reduced with the wings, a quarter of the seed's; pitch loop at 3 wingbeats) the
-#: flown wingbeat-mean pitching moment sat 0.002-0.008 table units below the held body's
-#: prediction (0.001-0.005 with a five times larger inertia), above the bound's 0.0025,
-#: and the integral was at its bound in 56 % of the control steps (landing 52 %; the
-#: seed bird's presets: never).  Off: with it the pigeon's cruise improved (0.0187 ->
-#: 0.0089 m, pitch 14.9 -> 6.6 deg RMS) but its landing did not (0.068 -> 0.101 m), and
-#: the seed bird's side gust came back more slowly; measured in docs/free-body.md ("The
-#: pigeon's attitude, third stage").
-INTEGRAL_AUTHORITY = False
+#: ... or, on the axes INTEGRAL_AUTHORITY marks (roll, pitch, yaw), by the moment the
+#: axis's inputs deliver at their bounds (per unit inertia) where that is larger
+#: (:func:`integral_bound`).  The bias the integral holds (the flown wingbeat-mean moment
+#: minus the held body's ``M_0``) is a moment, not an angle times the inertia: in the
+#: pigeon's free cruise the flown wingbeat-mean pitching moment sat 0.002-0.008 table
+#: units below the held body's prediction, above the radians' bound of 0.0025, and the
+#: integral sat at that bound in every control step while the body hung 3-13 degrees
+#: nose down (the seed bird's presets: never at the bound).  Pitch only: on roll and yaw
+#: the authority bound made the seed bird's side gust come back more slowly
+#: (docs/free-body.md, "The pigeon's attitude").
+INTEGRAL_AUTHORITY = (False, True, False)
 
 
 def euler_zyx(quat: np.ndarray) -> np.ndarray:
@@ -165,17 +164,25 @@ def attitude_gains(omega: float = 1.0, beats: object = AXIS_BEATS) -> AttitudeGa
     return AttitudeGains(wa, 3.0 * wa * wa, 3.0 * wa, wa**3)
 
 
-def damped_gains(omega_a: np.ndarray, damping: np.ndarray) -> AttitudeGains:
+def damped_gains(
+    omega_a: np.ndarray, damping: np.ndarray, stiffness: object = 0.0
+) -> AttitudeGains:
     """Per axis gains (per unit inertia) for a body whose wingbeat-mean rotation already
-    has the damping ``c`` (per unit inertia, >= 0; the flapping's, measured): closed-loop
-    poles at ``-p`` and a double pole at ``-omega_a``, ``p = max(c, omega_a)`` (the
-    natural pole kept where it is faster than the design): ``Kd = p + 2 omega_a - c``,
-    ``Kp = 2 p omega_a + omega_a^2``, ``Ki = p omega_a^2``; at ``c = 0`` the triple pole
-    of :func:`attitude_gains`."""
+    has the damping ``c`` and the restoring stiffness ``k`` (per unit inertia, >= 0; the
+    flapping's and the tail's, measured): closed-loop poles at ``-p``, ``p = max(c,
+    omega_a)`` (the natural pole kept where it is faster than the design), and the roots
+    of ``s^2 + 2 omega_a s + q``, ``q = max(omega_a^2, k)`` (a double pole at
+    ``-omega_a``, or, where the stiffness alone is stiffer than the design, the natural
+    frequency kept): ``Kd = p + 2 omega_a - c``, ``Kp = 2 p omega_a + q - k``, ``Ki = p
+    q``; at ``c = k = 0`` the triple pole of :func:`attitude_gains`."""
     wa = np.asarray(omega_a, dtype=float)
     c = np.asarray(damping, dtype=float)
+    k = np.asarray(stiffness, dtype=float)
     p = np.maximum(c, wa)
-    return AttitudeGains(wa, 2.0 * p * wa + wa * wa, p + 2.0 * wa - c, p * wa * wa)
+    stiff = k > wa * wa
+    q = np.where(stiff, k, wa * wa)
+    ki = np.where(stiff, p * k, p * wa * wa)
+    return AttitudeGains(wa, 2.0 * p * wa + q - k, p + 2.0 * wa - c, ki)
 
 
 def integral_bound(
@@ -184,22 +191,24 @@ def integral_bound(
     lo: np.ndarray,
     hi: np.ndarray,
     inertia: np.ndarray,
-    authority: bool = INTEGRAL_AUTHORITY,
+    authority: object = INTEGRAL_AUTHORITY,
 ) -> np.ndarray:
     """Per axis (roll, pitch, yaw) bound of the attitude integral's share of the demand,
-    per unit inertia (1 / time unit^2): :data:`INTEGRAL_LIMIT_RAD` ``omega_a^2``; with
-    ``authority`` the moment the axis's own inputs (:data:`SYM_INPUTS` for pitch,
-    :data:`LAT_INPUTS` for roll and yaw) deliver at their bounds, ``sum_j |J_ij| (hi_j -
-    lo_j) / 2``, divided by ``inertia``, where that is larger."""
+    per unit inertia (1 / time unit^2): :data:`INTEGRAL_LIMIT_RAD` ``omega_a^2``; on the
+    axes ``authority`` marks (a bool for all three, or three bools) the moment the axis's
+    own inputs (:data:`SYM_INPUTS` for pitch, :data:`LAT_INPUTS` for roll and yaw)
+    deliver at their bounds, ``sum_j |J_ij| (hi_j - lo_j) / 2``, divided by ``inertia``,
+    where that is larger."""
     lim = INTEGRAL_LIMIT_RAD * np.asarray(omega_a, dtype=float) ** 2
-    if not authority:
+    axes = np.broadcast_to(np.asarray(authority, dtype=bool), (3,))
+    if not axes.any():
         return lim
     half = (np.asarray(hi, dtype=float) - np.asarray(lo, dtype=float)) / 2
     auth = np.zeros(3)
     for rows, cols in ((SYM_ROWS, SYM_INPUTS), (LAT_ROWS, LAT_INPUTS)):
         for r in rows:
             auth[r] = float(np.abs(np.asarray(jac)[r, cols]) @ half[cols])
-    return np.maximum(lim, auth / np.asarray(inertia, dtype=float))
+    return np.where(axes, np.maximum(lim, auth / np.asarray(inertia, dtype=float)), lim)
 
 
 class AttitudeLoop:
@@ -222,6 +231,12 @@ class AttitudeLoop:
         self.rate_jac = np.zeros((3, 3))
         self._turn = np.zeros(3)  # the turning rates the Jacobians were measured at
         self.kinds = INPUTS
+        #: count the body's measured static pitch stiffness (the tail's) as part of the
+        #: plant (:mod:`birdsim.flight.attitude_stiffness`): only where M_0 is measured at
+        #: the commanded pitch (the free loop's straight paths), not where it follows the
+        #: estimated pitch (which cancels the stiffness in steps)
+        self.pitch_stiffness = False
+        self.stiffness = np.zeros(3)  # restoring stiffness per axis (>= 0, table units)
 
     def preset_integral(
         self, moment: np.ndarray, params: np.ndarray, pitch: float, speed: float
@@ -258,6 +273,9 @@ class AttitudeLoop:
             m0, jac = measured_jacobian(self.fb, params, pitch, v, turn)
             rate = measured_rate_derivatives(self.fb, params, pitch, v, turn)
         self.rate_jac = rate if RATE_CANCEL else np.zeros((3, 3))
+        if self.pitch_stiffness:
+            k = measured_pitch_stiffness(self.fb, params, pitch, v, m0)
+            self.stiffness = np.array([0.0, max(-k, 0.0), 0.0])
         return m0, jac
 
     def bounds(self, params: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -322,7 +340,7 @@ class AttitudeLoop:
         # damping) is cancelled with the estimated rates
         d_used = self.rate_jac if RATE_CANCEL else np.zeros((3, 3))
         damping = np.maximum(-np.diag(d_used), 0.0)
-        g = damped_gains(self.gains.omega_a, damping / self.inertia)
+        g = damped_gains(self.gains.omega_a, damping / self.inertia, self.stiffness / self.inertia)
         lim = self.integral_limit(g.omega_a, jac, params)
         if not self.saturated:  # anti-windup: frozen while the inputs are at their bounds
             self.integral = np.clip(self.integral + dt * g.ki * err, -lim, lim)
