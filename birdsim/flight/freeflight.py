@@ -44,8 +44,7 @@ PITCH_COMMAND_BEATS = 3.0
 SP_MARGIN = 0.8
 #: Wingbeats ahead the stroke plane's compensation predicts the body's pitch (the
 #: estimated pitch rate times this): the lag of the offset's smoothing, two cascaded
-#: filters of INPUT_SMOOTHING_BEATS.  Measured (take-off / landing path RMS): 0: 0.032 /
-#: 0.048, 0.2: 0.034 / 0.042, 0.25: 0.034 / 0.042, 0.375: 0.036 / 0.044 (docs/free-body.md).
+#: filters of INPUT_SMOOTHING_BEATS (measured in docs/free-body.md).
 SP_LEAD = 2.0 * INPUT_SMOOTHING_BEATS
 #: Measure the attitude loop's Jacobians and M_0 at the commanded pitch on a straight path
 #: (at the estimated pitch the pigeon's rocking made M_0 jump with the estimate's swings
@@ -105,8 +104,7 @@ def fly(
     Returns:
         FlightResult with arrays t, x, y, z, vx, vz, x_ref, z_ref, pitch, <params>,
         Fx_demand, Fz_demand, climb_demand (the table's climb; 0 for a level table),
-        V_air, saturated, pitch_moment, power, force_x, force_z,
-        qpos, qvel (reduced units).
+        V_air, saturated, pitch_moment, power, force_x, force_z, qpos, qvel (reduced units).
     Raises:
         BirdsimError: non-finite demands, a diverging simulation.
     """
@@ -294,15 +292,12 @@ def fly(
                     att_window, fb.d, config.log_per_beat, TWO_PI, zyx_pitch, roll_cmd, yaw_cmd
                 )
                 body_pitch = pitch_ref - float(err[1])  # the wingbeat-mean pitch
-                jac_pitch = pitch_ref if JAC_AT_COMMAND and turn_cmd is None else body_pitch
-                jac_params = None
+                at_cmd = JAC_AT_COMMAND and turn_cmd is None  # where the Jacobians are measured
+                jac_pitch, jac_params = (pitch_ref if at_cmd else body_pitch), None
                 if compensate:
-                    # the stroke plane turns by the difference between the table's pitch
-                    # and the body's, so the wings beat in the world as the table's
-                    # wingbeat at the table's pitch (m3/m4: stroke plane and body pitch
-                    # compose about one axis), within the stroke plane's bounds
+                    # the stroke plane turns by the table's pitch minus the body's (m3/m4:
+                    # they compose about one axis), the body's predicted SP_LEAD ahead
                     offset = np.zeros(len(names))
-                    # the body's pitch predicted SP_LEAD ahead (the estimate lags)
                     lead = float(rates[1]) * SP_LEAD * TWO_PI
                     # the table's pitch as its target (cmd.params), not the schedule's
                     # smoothed output, smoothed again (docs/free-body.md)
@@ -310,7 +305,7 @@ def fly(
                     sp = cmd.params[sp_index] + p_table - (body_pitch + lead)
                     offset[sp_index] = float(np.clip(sp, *sp_bounds)) - cmd.params[sp_index]
                     jac_params = cmd.params + offset
-                    if jac_pitch != body_pitch:  # the stroke plane compensated for it
+                    if at_cmd:  # the stroke plane compensated for the command
                         sp = cmd.params[sp_index] + p_table - jac_pitch
                         jac_params[sp_index] = float(np.clip(sp, *sp_bounds))
                 if turn_cmd is None:
