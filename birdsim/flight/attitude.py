@@ -50,6 +50,7 @@ from birdsim.flight.attitude_jacobians import (
     measured_with_rocking,
     split_inputs,
 )
+from birdsim.flight.attitude_pitch import WING_PITCH_BEATS, pitch_allocation
 from birdsim.flight.attitude_stiffness import measured_pitch_stiffness
 from birdsim.flight.bounded_lsq import bounded_lsq
 from birdsim.mujoco.tail import TailControls
@@ -90,16 +91,14 @@ LAMBDA = 1e-4
 #: times omega_a^2 (anti-windup) ...
 INTEGRAL_LIMIT_RAD = 0.5
 #: ... or, on the axes INTEGRAL_AUTHORITY marks (roll, pitch, yaw), by the moment the
-#: axis's inputs deliver at their bounds (per unit inertia) where that is larger
-#: (:func:`integral_bound`).  The bias the integral holds (the flown wingbeat-mean moment
-#: minus the held body's ``M_0``) is a moment, not an angle times the inertia: in the
-#: pigeon's free cruise the flown wingbeat-mean pitching moment sat 0.002-0.008 table
-#: units below the held body's prediction, above the radians' bound of 0.0025, and the
-#: integral sat at that bound in every control step while the body hung 3-13 degrees
-#: nose down (the seed bird's presets: never at the bound).  Pitch only: on roll and yaw
-#: the authority bound made the seed bird's side gust come back more slowly
-#: (docs/free-body.md, "The pigeon's attitude").
+#: axis's inputs deliver at their bounds where that is larger (:func:`integral_bound`):
+#: the bias it holds is a moment (the pigeon's cruise: 0.002-0.008 table units, above the
+#: radians' 0.0025, at which its integral sat in every control step).  Pitch only: on
+#: roll and yaw the seed bird's side gust came back more slowly (docs/free-body.md).
 INTEGRAL_AUTHORITY = (False, True, False)
+#: Allocate pitch by :func:`birdsim.flight.attitude_pitch.pitch_allocation` (else the
+#: symmetric inputs together, by least squares, as roll and yaw).
+PITCH_SPLIT = True
 
 
 def euler_zyx(quat: np.ndarray) -> np.ndarray:
@@ -354,11 +353,16 @@ class AttitudeLoop:
         demand += damping * (rate_err + np.asarray(rates, dtype=float) - turn)
         lo, hi = self.bounds(params)
         u = np.zeros(len(INPUTS))
-        miss = 0.0
-        active = False
+        miss, active, groups = 0.0, False, [(SYM_ROWS, SYM_INPUTS), (LAT_ROWS, LAT_INPUTS)]
+        if PITCH_SPLIT:  # pitch: the slow moment by the wings, the fast by the tail
+            a_lp = 1.0 - math.exp(-dt / (WING_PITCH_BEATS * self.fb.red.period))
+            slow = getattr(self, "_slow", None)
+            self._slow = demand[1] if slow is None else slow + a_lp * (demand[1] - slow)
+            up, miss, active = pitch_allocation(jac[1], demand[1], self._slow, lo, hi, LAMBDA)
+            u[SYM_INPUTS], groups = up[SYM_INPUTS], groups[1:]
         # a symmetric bird: the symmetric inputs pitch it, the differential ones roll and
         # yaw it (the measured cross terms are round-off and are not used)
-        for rows, cols in ((SYM_ROWS, SYM_INPUTS), (LAT_ROWS, LAT_INPUTS)):
+        for rows, cols in groups:
             cols = [c for c in cols if hi[c] > lo[c]]
             if not cols:
                 miss += float(np.linalg.norm(demand[rows]))
