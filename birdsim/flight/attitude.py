@@ -14,9 +14,9 @@ Every control step (``control_per_beat`` per wingbeat, like the path loop):
    wingbeat-mean moment of the table's wingbeat with every input at zero;
 3. allocation: ``min || J u - M ||^2 + lambda || u / u_max ||^2`` within the inputs'
    bounds (:func:`scipy.optimize.lsq_linear`), the inputs :data:`INPUTS`: the wings'
-   differential flap and twist amplitudes, a symmetric sweep offset (the force line fore
-   and aft), the tail's elevation and roll.  ``attitude_saturated`` when a bound binds
-   and the moment delivered misses the demand by more than 10 %.
+   differential flap and twist amplitudes, sweep and dihedral offsets, the tail's
+   elevation and roll (pitch: :mod:`birdsim.flight.attitude_pitch`).  ``attitude_saturated``
+   when a bound binds and the moment delivered misses the demand by more than 10 %.
 
 Gains (:func:`attitude_gains`): a triple pole at ``-omega_a``, ``omega_a = omega / (2 pi
 N_a)`` with :data:`ATTITUDE_BEATS` wingbeats per time constant (the design asked for
