@@ -8,6 +8,7 @@ from typing import Any
 
 import numpy as np
 
+from birdsim.flight import fast_estimate
 from birdsim.flight.attitude import FIT_BEATS, INPUTS, euler_zyx, wingbeat_fit_matrix
 from birdsim.flight.simulate import C_SEED
 
@@ -30,7 +31,9 @@ def attitude_estimate(
         window = [(np.array(d.qpos[3:7]), C_SEED * np.array(d.qvel[3:6]))]
     quat = np.array([w[0] for w in window])
     rate = np.array([w[1] for w in window])
-    err = error_rotvec(quat, pitch_cmd, roll_cmd, yaw_cmd)
+    err = fast_estimate.error_rotvec(quat, pitch_cmd, roll_cmd, yaw_cmd)  # compiled
+    if err is None:
+        err = error_rotvec(quat, pitch_cmd, roll_cmd, yaw_cmd)
     n = FIT_BEATS * per_beat
     if len(window) < n:
         pad = n - len(window)

@@ -27,7 +27,7 @@ from birdsim.flight.pitch_plan import PitchPlan, feedforward_pitch
 from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
 from birdsim.flight.track import TrackFrame, is_three_d
 from birdsim.flight.trim import sample_reference, trim_start
-from birdsim.flight.turning import TURN_AXIS_BEATS, TURN_PITCH_PLAN, turn_command
+from birdsim.flight.turning import TURN_PITCH_PLAN, axis_beats, turn_command, turn_pitch
 from birdsim.flight.wingbeat import INPUT_SMOOTHING_BEATS, WingbeatSchedule
 from birdsim.physics.bird import Bird
 from birdsim.physics.units import reduced_bird, scales
@@ -42,9 +42,8 @@ PITCH_COMMAND_BEATS = 3.0
 #: How far (rad) the compensated stroke plane may leave the table's bounds (those bound
 #: the optimiser's search, not the shoulder).
 SP_MARGIN = 0.8
-#: Wingbeats ahead the stroke plane's compensation predicts the body's pitch (the
-#: estimated pitch rate times this): the lag of the offset's smoothing, two cascaded
-#: filters of INPUT_SMOOTHING_BEATS (measured in docs/free-body.md).
+#: Wingbeats ahead the stroke plane's compensation predicts the body's pitch (the estimated
+#: pitch rate times this): the lag of its two cascaded smoothing filters (docs/free-body.md).
 SP_LEAD = 2.0 * INPUT_SMOOTHING_BEATS
 #: Measure the attitude loop's Jacobians and M_0 at the commanded pitch on a straight path
 #: (at the estimated pitch the pigeon's rocking made M_0 jump with the estimate's swings
@@ -207,9 +206,7 @@ def fly(
         pres = fb.schedule.prescribe(np.zeros(1), cmd.params[None, :], zeros, zeros)
         omega0, d_pitch0 = getattr(fb, "start_rotation", (None, 0.0))
         fb.start(pos0, vel0, pres, pitch=float(pres.pitch[0]) - d_pitch0, omega_body=omega0)
-        att = AttitudeLoop(fb, enabled=free and attitude_loop)
-        if track is not None:  # turning: the attitude loop's time constants of a turn
-            att = AttitudeLoop(fb, enabled=free and attitude_loop, beats=TURN_AXIS_BEATS)
+        att = AttitudeLoop(fb, enabled=free and attitude_loop, **axis_beats(track))
         att.pitch_stiffness = JAC_AT_COMMAND and track is None
         if free and trim and hasattr(fb, "start_moment"):
             att.preset_integral(fb.start_moment, cmd.params, float(pres.pitch[0]), float(ref0.vx))
@@ -269,6 +266,9 @@ def fly(
                     pitch_ref, pitch_rate_ref, pitch_acc_ref = command_filter(
                         pitch_ref, pitch_rate_ref, pitch, tau_ref, dt_ctl
                     )
+                if track is not None and plan is not None:  # a slow turn's lowered body
+                    pitch3 = turn_pitch(track, t, (pitch_ref, pitch_rate_ref, pitch_acc_ref))
+                    pitch_ref, pitch_rate_ref, pitch_acc_ref = pitch3
                 turn_cmd = None
                 if track is None:
                     roll_cmd = bank_command(lat_window, config.log_per_beat, red.gravity)
