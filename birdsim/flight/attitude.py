@@ -230,11 +230,10 @@ class AttitudeLoop:
         self.rate_jac = np.zeros((3, 3))
         self._turn = np.zeros(3)  # the turning rates the Jacobians were measured at
         self.kinds = INPUTS
-        #: count the body's measured static pitch stiffness (the tail's) as part of the
-        #: plant (:mod:`birdsim.flight.attitude_stiffness`): only where M_0 is measured at
-        #: the commanded pitch (the free loop's straight paths), not where it follows the
-        #: estimated pitch (which cancels the stiffness in steps)
-        self.pitch_stiffness = False
+        #: straight path: docs/free-body.md's fourth-stage pitch loop (the tail's stiffness
+        #: in the gains, M_0 measured at the command; pitch integral by authority; pitch
+        #: slow to fast); turns keep the second stage's (with it: circle 0.083 -> 0.096)
+        self.straight = False
         self.stiffness = np.zeros(3)  # restoring stiffness per axis (>= 0, table units)
 
     def preset_integral(
@@ -257,7 +256,8 @@ class AttitudeLoop:
         """Per axis bound of the integral's share (per unit inertia): :func:`integral_bound`
         with this loop's inertia and the inputs' bounds at ``params``."""
         lo, hi = self.bounds(params)
-        return integral_bound(omega_a, jac, lo, hi, self.inertia, INTEGRAL_AUTHORITY)
+        auth = INTEGRAL_AUTHORITY if self.straight else False
+        return integral_bound(omega_a, jac, lo, hi, self.inertia, auth)
 
     def _measure(
         self, params: np.ndarray, pitch: float, speed: float, turn: np.ndarray | None
@@ -272,7 +272,7 @@ class AttitudeLoop:
             m0, jac = measured_jacobian(self.fb, params, pitch, v, turn)
             rate = measured_rate_derivatives(self.fb, params, pitch, v, turn)
         self.rate_jac = rate if RATE_CANCEL else np.zeros((3, 3))
-        if self.pitch_stiffness:
+        if self.straight:
             k = measured_pitch_stiffness(self.fb, params, pitch, v, m0)
             self.stiffness = np.array([0.0, max(-k, 0.0), 0.0])
         return m0, jac
@@ -354,7 +354,7 @@ class AttitudeLoop:
         lo, hi = self.bounds(params)
         u = np.zeros(len(INPUTS))
         miss, active, groups = 0.0, False, [(SYM_ROWS, SYM_INPUTS), (LAT_ROWS, LAT_INPUTS)]
-        if PITCH_SPLIT:  # pitch: the slow moment by the wings, the fast by the tail
+        if PITCH_SPLIT and self.straight:  # pitch: slow moment by the wings, fast by the tail
             a_lp = 1.0 - math.exp(-dt / (WING_PITCH_BEATS * self.fb.red.period))
             slow = getattr(self, "_slow", None)
             self._slow = demand[1] if slow is None else slow + a_lp * (demand[1] - slow)
