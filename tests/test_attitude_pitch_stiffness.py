@@ -79,7 +79,7 @@ def test_pigeon_free_cruise_meets_the_targets_and_stays():
     wingbeat-mean pitch within 3 degrees RMS of the command after two wingbeats (1.58;
     main: 14.9), no attitude-saturated sample (main: 16), roll and yaw zero by symmetry,
     nothing on the root.  And it stays: flown for 20 wingbeats the rocking of wingbeats
-    15-20 is about 6 degrees (main's loop: growing past 45 degrees by wingbeat 11) and the
+    15-20 is about 6 degrees (before the slow-to-fast allocation: past 45 by wingbeat 11) and the
     wingbeat-mean pitch within 1 degree of the command (measured: 0.3)."""
     from birdsim.commands.fly import load_table_for
     from birdsim.flight.flightlog import log_arrays, summary
