@@ -26,7 +26,7 @@ from birdsim.flight.bounded_lsq import bounded_lsq
 #: pitch demand.  Measured (pigeon cruise / take-off / landing path RMS m, pitch deg):
 #: the integral alone as the wings' share 0.0064, 3.2 / 0.021, 14.8 / 0.045, 28.2; the
 #: mean over the last wingbeat 0.0062, 3.1 / 0.020, 14.6 / 0.069, 23.5; 0.25 wingbeats
-#: 0.0052, 1.6 / 0.020, 14.5 / 0.038, 16.4.
+#: 0.0052, 1.6 / 0.020, 14.5 / 0.037, 16.1 (the first two measured with a prototype).
 WING_PITCH_BEATS = 0.25
 
 
