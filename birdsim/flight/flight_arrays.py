@@ -9,7 +9,8 @@ from typing import Any
 import numpy as np
 
 from birdsim.flight import fast_estimate
-from birdsim.flight.attitude import FIT_BEATS, INPUTS, euler_zyx, wingbeat_fit_matrix
+from birdsim.flight.attitude_jacobians import INPUTS
+from birdsim.flight.body_attitude import FIT_BEATS, euler_zyx, wingbeat_fit_matrix
 from birdsim.flight.simulate import C_SEED
 
 
@@ -100,7 +101,7 @@ def _qmul(p: tuple, q: tuple) -> tuple:
 
 @functools.lru_cache(maxsize=4)
 def fit_matrix(n: int, period: float) -> np.ndarray:
-    """:func:`birdsim.flight.attitude.wingbeat_fit_matrix` over FIT_BEATS, cached."""
+    """:func:`birdsim.flight.body_attitude.wingbeat_fit_matrix` over FIT_BEATS, cached."""
     return wingbeat_fit_matrix(n, period, beats=FIT_BEATS)
 
 

@@ -9,7 +9,7 @@ from typing import Any
 
 import numpy as np
 
-from birdsim.flight.attitude import euler_zyx
+from birdsim.flight.body_attitude import euler_zyx
 from birdsim.flight.simulate import FreeBird, SimConfig
 
 
