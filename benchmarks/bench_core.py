@@ -72,6 +72,44 @@ def _kernel_vs_numpy(n: int = 64, count: int = 4096) -> None:
     print("target (issue 24): m5 kernel >= 4x its numpy reference")
 
 
+def _m5_interleaved(reps: int = 5, n: int = 64, count: int = 4096) -> None:
+    """Issue 24's m5 target side by side, interleaved ``reps`` times (kernel, then numpy,
+    on the same parameter sets), with the load average at each repetition: on a shared
+    machine one repetition's wall ratio follows how much CPU each side was given, so the
+    median, the range and the per-CPU-second ratio (process time, all threads) are printed."""
+    import os as _os
+    import time as _t
+
+    from birdsim.physics import kernel
+
+    params, speed = _params("m5", count)
+    for be in ("kernel", "numpy"):  # compile / warm up
+        _ = birdsim.evaluate_cycle("m5", params, speed, n=n, backend=be).mean
+    print(
+        f"m5 kernel vs numpy interleaved, {reps} x ({count} wingbeats x {n} samples), "
+        f"kernel threads = {kernel.threads()}"
+    )
+    wall, cpu = [], []
+    for r in range(reps):
+        row = []
+        for be in ("kernel", "numpy"):
+            t0, c0 = _t.perf_counter(), _t.process_time()
+            _ = birdsim.evaluate_cycle("m5", params, speed, n=n, backend=be).mean
+            row += [_t.perf_counter() - t0, max(_t.process_time() - c0, 1e-9)]
+        kw, kc, nw, nc = row
+        wall.append(nw / kw)
+        cpu.append(nc / kc)
+        print(
+            f"  rep {r}: kernel {kw * 1e3:6.0f} ms wall {kc * 1e3:5.0f} ms CPU | numpy "
+            f"{nw * 1e3:6.0f} ms wall {nc * 1e3:5.0f} ms CPU | wall ratio {nw / kw:4.1f}x, "
+            f"per CPU-s {nc / kc:4.1f}x | load {_os.getloadavg()[0]:.1f}"
+        )
+    print(
+        f"m5 wall ratio median {np.median(wall):.1f}x (range {min(wall):.1f}-{max(wall):.1f}), "
+        f"per CPU-s median {np.median(cpu):.1f}x; target (issue 24): >= 4x"
+    )
+
+
 def _default_samples(count: int = 4096, reference: int = 4096) -> None:
     """The default samples per wingbeat (``DEFAULT_SAMPLES``): its accuracy (share of
     random sets whose mean force, max(|dFx|, |dFz|), is within 1e-7 of n = ``reference``,
@@ -155,6 +193,7 @@ def _callback_cost() -> None:
 
 def main() -> None:
     _kernel_vs_numpy()
+    _m5_interleaved()
     _default_samples()
     _callback_cost()
     n = 64

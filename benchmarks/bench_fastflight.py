@@ -1,14 +1,17 @@
-"""Issue 27's fast free flight: m4, six degrees of freedom, period/128, side by side in one
-run: MuJoCo stepping the same model without aerodynamics (the limit of compiling the
-loop around it), the step loop alone (16 steps between two control updates, a fixed
-prescription; compiled :mod:`birdsim.flight.fast_loop` against the reference
-``step_kernel.free_loop`` with the Python callback) and whole closed-loop flights
-(``fly``: controller, attitude loop, prescription, logging; 20 wingbeats + the trim's
-probe wingbeats and the set-up, and 60 wingbeats), compiled against the reference: the
-Python loop with the Python callback, the prescription, the table lookup and the
-allocation of before (every switch of the compiled pieces off).  Process CPU time; each
-figure the best of three, the two paths alternated (one run's figure moves by up to
-30 % on the shared VM).  Target: >= 200 wingbeats per CPU second for the whole flight."""
+"""Issue 27's fast free flight (and issue 24's m5 free flight), period/128, side by side
+in one run, for m4 and m5: MuJoCo stepping the same model without aerodynamics (the
+limit of compiling the loop around it), the step loop alone (16 steps between two
+control updates, a fixed prescription; compiled :mod:`birdsim.flight.fast_loop` against
+the reference ``step_kernel.free_loop`` with the Python callback), whole closed-loop
+free flights (``fly``: controller, attitude loop, prescription, logging; 20 wingbeats +
+the trim's probe wingbeats and the set-up, and, for m4, 60 wingbeats) compiled against
+the reference (every switch of the compiled pieces off: the Python loop with the Python
+callback, the numpy prescription, scipy's lookup, path curves and ``lsq_linear``, the
+numpy attitude error), and the posed flight of the same path (the body's pitch
+prescribed; its own loop, with the compiled prescription, lookup and path curves).
+Process CPU time; each figure the best of three, the paths alternated (one run's figure
+moves by up to 30 % on the shared VM).  Targets: m4 free flight >= 200 wingbeats per CPU
+second (issue 27), m5 >= 30 (issue 24)."""
 
 from __future__ import annotations
 
@@ -17,7 +20,13 @@ import time
 import mujoco
 import numpy as np
 
-from birdsim.flight import bounded_lsq, fast_loop, fast_prescription
+from birdsim.flight import (
+    bounded_lsq,
+    fast_estimate,
+    fast_loop,
+    fast_path,
+    fast_prescription,
+)
 from birdsim.flight.freeflight import fly
 from birdsim.flight.path import FlightPath, PathKeyframe
 from birdsim.flight.simulate import FreeBird, SimConfig
@@ -63,17 +72,17 @@ def _switch(switches: tuple, on: bool) -> None:
         sw.ENABLED = on
 
 
-def main() -> None:
-    bird = Bird.from_toml("models/seed-bird.toml")
-    table = load_table("tables/m4.npz")
-    kin = get_model("m4")
+def _model_figures(model: str, bird: Bird, long: bool) -> dict[str, float]:
+    table = load_table(f"tables/{model}.npz")
+    kin = get_model(model)
     guess = kin.guess("cruise")
     params = np.array([guess[n] for n in kin.param_names])
     config = SimConfig(steps_per_beat=STEPS, control_per_beat=CONTROL, attitude="free")
+    posed = SimConfig(steps_per_beat=STEPS, control_per_beat=CONTROL, attitude="posed")
     path = FlightPath("cruise", BEATS, False, False, (PathKeyframe(0.0, 6.0, V=0.9),))
     long_path = FlightPath("cruise", LONG, False, False, (PathKeyframe(0.0, 6.0, V=0.9),))
     warm = FlightPath("warm", 1.0, False, False, (PathKeyframe(0.0, 6.0, V=0.9),))
-    switches = (fast_loop, fast_prescription, fast_lookup, bounded_lsq)
+    switches = (fast_loop, fast_prescription, fast_lookup, bounded_lsq, fast_path, fast_estimate)
     saved = [s.ENABLED for s in switches]
     best: dict[str, float] = {}
 
@@ -83,46 +92,71 @@ def main() -> None:
     try:
         for compiled in (True, False):  # compile / warm both
             _switch(switches, compiled)
-            fly(warm, table, bird, "m4", config=config)
+            fly(warm, table, bird, model, config=config)
+        fly(warm, table, bird, model, config=posed)
         for _ in range(REPEATS):
-            with FreeBird("m4", bird, params, config=config, aero=False) as fb:
+            with FreeBird(model, bird, params, config=config, aero=False) as fb:
                 mujoco.set_mjcb_passive(None)
                 keep("mujoco", _bare_mujoco(fb, 40))
             for compiled in (True, False):
                 _switch(switches, compiled)
                 name = "compiled" if compiled else "reference"
-                with FreeBird("m4", bird, params, config=config) as fb:
+                with FreeBird(model, bird, params, config=config) as fb:
                     keep(f"loop {name}", _step_loop(fb, 20, params))
                 c0 = time.process_time()
-                fly(path, table, bird, "m4", config=config)
-                c1 = time.process_time()
-                fly(long_path, table, bird, "m4", config=config)
-                c2 = time.process_time()
-                keep(f"fly {name}", BEATS / (c1 - c0))
-                keep(f"long {name}", LONG / (c2 - c1))
+                fly(path, table, bird, model, config=config)
+                keep(f"fly {name}", BEATS / (time.process_time() - c0))
+                if long:
+                    c0 = time.process_time()
+                    fly(long_path, table, bird, model, config=config)
+                    keep(f"long {name}", LONG / (time.process_time() - c0))
+            _switch(switches, True)
+            c0 = time.process_time()
+            fly(path, table, bird, model, config=posed)
+            keep("posed", BEATS / (time.process_time() - c0))
     finally:
         for sw, value in zip(switches, saved):
             sw.ENABLED = value
-    print(
-        f"m4 period/{STEPS} mj_step alone, no aerodynamics:  {best['mujoco']:7.1f} wingbeats "
-        f"per CPU second ({best['mujoco'] * STEPS:.0f} steps/s)"
-    )
-    labels = {
-        "loop": "step loop (16 steps per call)",
-        "fly": f"free flight (fly, {BEATS:g} beats)",
-        "long": f"free flight (fly, {LONG:g} beats)",
-    }
-    for what, label in labels.items():
-        c, r = best[f"{what} compiled"], best[f"{what} reference"]
+    return best
+
+
+def main() -> None:
+    bird = Bird.from_toml("models/seed-bird.toml")
+    targets = {"m4": 200.0, "m5": 30.0}
+    for model in ("m4", "m5"):
+        best = _model_figures(model, bird, long=model == "m4")
         print(
-            f"m4 period/{STEPS} {label:30s}: compiled {c:7.1f}, reference {r:7.1f} "
-            f"wingbeats per CPU second; compiled / reference {c / r:.2f}, "
-            f"compiled / mj_step alone {c / best['mujoco']:.3f} (best of {REPEATS})"
+            f"{model} period/{STEPS} mj_step alone, no aerodynamics:  {best['mujoco']:7.1f} "
+            f"wingbeats per CPU second ({best['mujoco'] * STEPS:.0f} steps/s)"
         )
-    print(
-        f"target: free flight >= 200 wingbeats per CPU second: {best['fly compiled']:.1f} "
-        f"({best['long compiled']:.1f} in a {LONG:g}-wingbeat flight)"
-    )
+        labels = {
+            "loop": "step loop (16 steps per call)",
+            "fly": f"free flight (fly, {BEATS:g} beats)",
+            "long": f"free flight (fly, {LONG:g} beats)",
+        }
+        for what, label in labels.items():
+            if f"{what} compiled" not in best:
+                continue
+            c, r = best[f"{what} compiled"], best[f"{what} reference"]
+            print(
+                f"{model} period/{STEPS} {label:30s}: compiled {c:7.1f}, reference {r:7.1f} "
+                f"wingbeats per CPU second; compiled / reference {c / r:.2f}, "
+                f"compiled / mj_step alone {c / best['mujoco']:.3f} (best of {REPEATS})"
+            )
+        print(
+            f"{model} period/{STEPS} posed flight (fly, {BEATS:g} beats)   : {best['posed']:7.1f} "
+            f"wingbeats per CPU second; free compiled / posed "
+            f"{best['fly compiled'] / best['posed']:.2f}"
+        )
+        extra = (
+            f" ({best['long compiled']:.1f} in a {LONG:g}-wingbeat flight)"
+            if "long compiled" in best
+            else ""
+        )
+        print(
+            f"target: {model} free flight >= {targets[model]:g} wingbeats per CPU second: "
+            f"{best['fly compiled']:.1f}{extra}"
+        )
 
 
 if __name__ == "__main__":

@@ -31,6 +31,16 @@ def machine() -> str:
     )
 
 
+def load() -> str:
+    """The 1-, 5- and 15-minute load averages (the machine is shared: the figures of a
+    loaded run are lower, the ratios side by side much less so)."""
+    try:
+        one, five, fifteen = os.getloadavg()
+    except OSError:
+        return "load average unknown"
+    return f"load average {one:.2f}, {five:.2f}, {fifteen:.2f}"
+
+
 def main(argv: list[str]) -> int:
     here = Path(__file__).parent
     wanted = set(argv)
@@ -39,12 +49,13 @@ def main(argv: list[str]) -> int:
         name = path.stem.removeprefix("bench_")
         if wanted and name not in wanted:
             continue
-        print(f"\n== {name} ==", flush=True)
+        print(f"\n== {name} == ({load()})", flush=True)
         spec = importlib.util.spec_from_file_location(path.stem, path)
         module = importlib.util.module_from_spec(spec)
         assert spec.loader is not None
         spec.loader.exec_module(module)
         module.main()
+        print(f"({load()} at the end of {name})", flush=True)
     return 0
 
 

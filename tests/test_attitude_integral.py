@@ -55,3 +55,16 @@ def test_authority_bound_never_below_the_radians_bound():
     wa = attitude_gains(1.0).omega_a
     got = integral_bound(wa, np.zeros((3, 7)), -HI, HI, INERTIA, authority=True)
     np.testing.assert_array_equal(got, INTEGRAL_LIMIT_RAD * wa**2)
+
+
+def test_authority_bound_per_axis_pitch_only():
+    """The loop's setting (INTEGRAL_AUTHORITY): the pitch integral bounded by the
+    symmetric inputs' authority, roll and yaw by the radians' bound as before."""
+    from birdsim.flight.attitude import INTEGRAL_AUTHORITY
+
+    wa = attitude_gains(1.0).omega_a
+    got = integral_bound(wa, JAC, -HI, HI, INERTIA, authority=(False, True, False))
+    every = integral_bound(wa, JAC, -HI, HI, INERTIA, authority=True)
+    radians = INTEGRAL_LIMIT_RAD * wa**2
+    np.testing.assert_array_equal(got, [radians[0], every[1], radians[2]])
+    assert tuple(INTEGRAL_AUTHORITY) == (False, True, False)

@@ -163,6 +163,7 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("build/distance-negative", [*BUILD, "--distance", "-1"], "--distance"),
     ("build/power-weight-nan", [*BUILD, "--power-weight", "nan"], "--power-weight"),
     ("build/reach-tol-zero", [*BUILD, "--reach-tol", "0"], "--reach-tol"),
+    ("build/smooth-rounds-zero", [*BUILD, "--smooth-rounds", "0"], "--smooth-rounds 0 is invalid; allowed: an integer >= 1"),
     ("build/out-exists", [*BUILD, "--out", "{w}/table.npz"], "--out '{w}/table.npz' exists"),
     ("build/out-is-a-folder", [*BUILD, "--out", "{w}/folder.npz", "--force"], "--out '{w}/folder.npz' is a directory"),
     ("build/out-parent-is-a-file", [*BUILD, "--out", "{w}/malformed.toml/t.npz"], "cannot be created"),

@@ -2,7 +2,8 @@
 
 The reference: the Python step loop with the Python aero callback
 (``fast_loop.ENABLED = False``), the numpy prescription (``fast_prescription``), scipy's
-table interpolation (``fast_lookup``) and ``lsq_linear`` (``bounded_lsq``).  The compiled
+table interpolation (``fast_lookup``), ``lsq_linear`` (``bounded_lsq``), scipy's path curves
+(``fast_path``, bitwise) and the numpy attitude error (``fast_estimate``, round-off).  The compiled
 loop does the same operations in the same order except two sums (the tail's
 ``xmat @ f``, which numpy hands to BLAS, and the wings' power ``applied[W] @ qvel[W]``),
 summed naively; the prescription's ball joint sums two 3-term products in another order
@@ -23,7 +24,7 @@ import pytest
 from scipy.optimize import lsq_linear
 
 from birdsim.flight import bounded_lsq as bounded_lsq_module
-from birdsim.flight import fast_loop, fast_prescription
+from birdsim.flight import fast_estimate, fast_loop, fast_path, fast_prescription
 from birdsim.flight.bounded_lsq import bounded_lsq
 from birdsim.flight.freeflight import fly
 from birdsim.flight.gust import Gust
@@ -59,7 +60,7 @@ def _beat(fb: FreeBird, params: np.ndarray, left: np.ndarray, wind: np.ndarray) 
     return rec
 
 
-@pytest.mark.parametrize("model", ["m3", "m4"])
+@pytest.mark.parametrize("model", ["m3", "m4", "m5"])
 def test_compiled_loop_steps_as_the_reference(monkeypatch, model):
     params = _params(model)
     left = params.copy()
@@ -70,6 +71,8 @@ def test_compiled_loop_steps_as_the_reference(monkeypatch, model):
         monkeypatch.setattr(fast_loop, "ENABLED", compiled)
         with FreeBird(model, BIRD, params, config=SimConfig(attitude="free")) as fb:
             assert fast_loop.usable(fb, slice(0, 6), slice(6, fb.m.nv)) is compiled
+            # m5: the hand's sites fold (their area follows the wrist sweep)
+            assert bool((aero_kernel.fold_addresses(fb.cb) >= 0).any()) is (model == "m5")
             rec = _beat(fb, params, left, wind)
             calls = fb.cb.calls
             out[compiled] = (rec, fb.P, fb.X, fb.L, fb.projection_max, fb.root_applied_max)
@@ -92,15 +95,24 @@ def test_compiled_loop_steps_as_the_reference(monkeypatch, model):
     assert np.any(np.abs([r[6] for r in ra]) > 1e-4)  # the tail worked
 
 
-def test_compiled_flight_follows_the_reference_flight(monkeypatch):
-    table = load_table("tables/m4.npz")
+@pytest.mark.parametrize("model", ["m4", "m5"])
+def test_compiled_flight_follows_the_reference_flight(monkeypatch, model):
+    """m5: the folding hand's area and the fold's joints compiled too (issue 24)."""
+    table = load_table(f"tables/{model}.npz")
     path = FlightPath("cruise", 10.0, False, False, (PathKeyframe(0.0, 6.0, V=0.9),))
     gust = (Gust(4.0, 1.0, 0.1, -0.05, wy=0.05),)  # lateral too: the roll loop acts
     logs = {}
     for compiled in (True, False):
-        for switch in (fast_loop, fast_prescription, fast_lookup, bounded_lsq_module):
+        for switch in (
+            fast_loop,
+            fast_prescription,
+            fast_lookup,
+            bounded_lsq_module,
+            fast_path,
+            fast_estimate,
+        ):
             monkeypatch.setattr(switch, "ENABLED", compiled)
-        r = fly(path, table, BIRD, "m4", config=SimConfig(attitude="free"), gusts=gust)
+        r = fly(path, table, BIRD, model, config=SimConfig(attitude="free"), gusts=gust)
         logs[compiled] = r.arrays
     a, b = logs[True], logs[False]
     assert a["t"][-1] == pytest.approx(10 * 2 * np.pi, abs=0.1)
@@ -114,9 +126,6 @@ def test_compiled_flight_follows_the_reference_flight(monkeypatch):
 
 
 def test_unsupported_callbacks_keep_the_reference_path():
-    with FreeBird("m5", BIRD, _params("m5"), config=SimConfig(attitude="free")) as fb:
-        assert not aero_kernel.supported(fb.cb)  # the folding hand's area
-        assert not fast_loop.usable(fb, slice(0, 6), slice(6, fb.m.nv))
     strips = dataclasses.replace(BIRD, strips=3)
     with FreeBird("m4", strips, _params("m4"), config=SimConfig(attitude="free")) as fb:
         assert not aero_kernel.supported(fb.cb)
@@ -127,14 +136,14 @@ def test_unsupported_callbacks_keep_the_reference_path():
 @pytest.mark.parametrize("model", ["base", "m1", "m2", "m3", "m4", "m5"])
 def test_compiled_prescription_is_the_reference(monkeypatch, model):
     """Rows within 1e-15 (two 3-term sums of the ball joint in another order: measured
-    up to 6e-17); m5's fold keeps the reference path (no spec)."""
+    up to 6e-17); m5's fold (elbow, wrist sweep, supination) compiled too."""
     params = _params(model)
     names = get_model(model).param_names
     left = params.copy()
     left[names.index("flap_amp")] -= 0.05
     with FreeBird(model, BIRD, params, config=SimConfig(attitude="free")) as fb:
         has_spec = fast_prescription.spec(fb.kin, fb.red) is not None
-        assert has_spec is (model != "m5")
+        assert has_spec and fast_prescription.geometry(fb.m) is not None
         out = {}
         for compiled in (True, False):
             monkeypatch.setattr(fast_prescription, "ENABLED", compiled)
@@ -161,6 +170,9 @@ def test_bounded_lsq_is_lsq_linear():
         x, mask = bounded_lsq(a, b, lb, ub)
         ref = lsq_linear(a, b, bounds=(lb, ub))
         assert np.array_equal(x, ref.x) and np.array_equal(mask, ref.active_mask)
+    for rows in (3, 5, 8):  # numpy's LAPACK call made directly: np.linalg.lstsq's numbers
+        a, b = rng.normal(size=(rows, 3)), rng.normal(size=rows)
+        assert np.array_equal(bounded_lsq_module._lstsq(a, b), np.linalg.lstsq(a, b, rcond=-1)[0])
 
 
 def test_compiled_table_lookup_is_scipys():

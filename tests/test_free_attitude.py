@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
-from birdsim.flight.attitude import euler_zyx
+from birdsim.flight.body_attitude import euler_zyx
 from birdsim.flight.gust import Gust, parse_gust, wind_at
 from birdsim.mujoco.model import pitch_quat
 from birdsim.mujoco.tail import ALPHA_MAX, TAIL_CD0, TailControls, tail_force

@@ -179,13 +179,16 @@ def test_anywhere_examples_fly_unsaturated(name, rests):
 
 
 @pytest.mark.slow
-def test_perch_to_ground_with_legs_jumps_lands_and_stands():
-    """``fly examples/perch-to-ground.toml --legs``: the jump off the perch, the flight,
-    the touchdown on the ground and the bird standing (issue 25's targets)."""
+@pytest.mark.parametrize("name", ["perch-to-perch", "perch-to-ground"])
+def test_anywhere_with_legs_jumps_lands_and_stands(name):
+    """``fly examples/<name>.toml --legs``: the jump off perch 1, the flight, the
+    touchdown on perch 2 or the ground and the bird standing there (issue 25's targets).
+    perch-to-perch used to fall off backwards (the feet came down 0.021 behind the bar's
+    axis, on its back slope; measured 0.006 behind, 0.003 on the ground)."""
     from birdsim.flight.perch_landing import land
     from birdsim.flight.perched import take_off
 
-    path = load_flight(ROOT / "examples" / "perch-to-ground.toml")
+    path = load_flight(ROOT / "examples" / f"{name}.toml")
     bird = demo_bird()
     r = take_off(path, load_table_for(bird, "m3", None), bird, "m3", land=land)
     legs = r.meta["legs"]
@@ -194,8 +197,13 @@ def test_perch_to_ground_with_legs_jumps_lands_and_stands():
     td = legs["landing"]
     assert td["touchdown_speed"] == pytest.approx(td["touchdown_speed_target"], rel=0.1)
     assert td["peak_foot_force_over_weight"] < legs["peak_foot_force_over_weight"]
-    assert np.linalg.norm(td["final_offset"]) < 0.05  # on the ground at its target
+    # on its target within 0.05 semispan (measured 0.006 on perch 2, 0.003 on the ground)
+    assert np.linalg.norm(td["final_offset"]) < 0.05
     assert td["weight_carried"] == pytest.approx(1.0, abs=0.05)
+    # at rest: below 1 % of the approach's (the cruise between, 0.17) within 2 wingbeats
+    # (measured 1.68 for both)
+    assert td["approach_speed"] == pytest.approx(0.17, abs=0.01)
+    assert td["rest_beats_vs_approach"] <= 2.0
     a = r.arrays
     assert not np.any(a["saturated"])
     ph = a["phase"].tolist()

@@ -124,6 +124,13 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="regularising pass: keep the wingbeat that continues its neighbours among those within this "
         "cost of the best found (default 5e-3; 0 = no pass)",
     )
+    b.add_argument(
+        "--smooth-rounds",
+        type=int,
+        default=BuildSettings.smooth_rounds,
+        help="regularising pass: at most this many red-black rounds (default 4; it stops "
+        "earlier after a round that removes no zig-zag)",
+    )
     b.add_argument("--quiet", action="store_true", help="no progress bar")
     add_bird_arguments(b)
     b.set_defaults(func=run_build)
@@ -174,6 +181,10 @@ def _check_build_options(args: argparse.Namespace) -> None:
     if args.smooth_tol < 0:
         raise BirdsimError(
             f"--smooth-tol {args.smooth_tol:g} is invalid; allowed: a number >= 0 (0 = no regularising pass)"
+        )
+    if args.smooth_rounds < 1:
+        raise BirdsimError(
+            f"--smooth-rounds {args.smooth_rounds} is invalid; allowed: an integer >= 1"
         )
     if args.screen < 2:
         raise BirdsimError(f"--screen {args.screen} is invalid; allowed: an integer >= 2")
@@ -232,6 +243,7 @@ def run_build(args: argparse.Namespace) -> int:
         reach_tol=args.reach_tol,
         v_passes=not args.no_v_passes,
         smooth_tol=args.smooth_tol,
+        smooth_rounds=args.smooth_rounds,
     )
     out = Path(args.out) if args.out else Path("tables") / f"{model.name}.npz"
     npz_path, json_path = table_paths(out)

@@ -14,9 +14,9 @@ Every control step (``control_per_beat`` per wingbeat, like the path loop):
    wingbeat-mean moment of the table's wingbeat with every input at zero;
 3. allocation: ``min || J u - M ||^2 + lambda || u / u_max ||^2`` within the inputs'
    bounds (:func:`scipy.optimize.lsq_linear`), the inputs :data:`INPUTS`: the wings'
-   differential flap and twist amplitudes, a symmetric sweep offset (the force line fore
-   and aft), the tail's elevation and roll.  ``attitude_saturated`` when a bound binds
-   and the moment delivered misses the demand by more than 10 %.
+   differential flap and twist amplitudes, sweep and dihedral offsets, the tail's
+   elevation and roll (pitch: :mod:`birdsim.flight.attitude_pitch`).  ``attitude_saturated``
+   when a bound binds and the moment delivered misses the demand by more than 10 %.
 
 Gains (:func:`attitude_gains`): a triple pole at ``-omega_a``, ``omega_a = omega / (2 pi
 N_a)`` with :data:`ATTITUDE_BEATS` wingbeats per time constant (the design asked for
@@ -50,6 +50,9 @@ from birdsim.flight.attitude_jacobians import (
     measured_with_rocking,
     split_inputs,
 )
+from birdsim.flight.attitude_pitch import WING_PITCH_BEATS, pitch_allocation
+from birdsim.flight.attitude_stiffness import measured_pitch_stiffness
+from birdsim.flight.body_attitude import FIT_BEATS, euler_zyx, wingbeat_fit_matrix
 from birdsim.flight.bounded_lsq import bounded_lsq
 from birdsim.mujoco.tail import TailControls
 
@@ -60,10 +63,12 @@ from birdsim.mujoco.tail import TailControls
 #: best (cruise, hover within 3 degrees of pitch; take-off and landing the least
 #: saturated); 4 loses cruise's pitch again (docs/free-body.md).
 ATTITUDE_BEATS = 2.0
-#: ... per axis (roll, pitch, yaw): the lateral axes keep 2 wingbeats, with which a side
-#: gust's roll and yaw are back within 2 degrees in 4 wingbeats (3: 5 and 3 degrees
-#: still after 8).
-AXIS_BEATS = (2.0, ATTITUDE_BEATS, 2.0)
+#: Wingbeats per time constant of the roll loop in straight flight: at 2 the yaw a side
+#: gust leaves rang through the flapping's roll-yaw coupling for 10 wingbeats (roll and
+#: yaw 5 degrees 8 wingbeats after the gust); 1.5, 1.25, 1 measured in docs/free-body.md.
+ROLL_BEATS = 1.0
+#: ... per axis (roll, pitch, yaw); yaw keeps 2 wingbeats (1.5 was worse, second stage).
+AXIS_BEATS = (ROLL_BEATS, ATTITUDE_BEATS, 2.0)
 #: The moment rows and the inputs of the two allocations: pitch by the symmetric inputs
 #: (sweep, tail elevation), roll and yaw by the differential ones.
 SYM_ROWS, SYM_INPUTS = [1], [2, 3, 6]
@@ -88,64 +93,19 @@ LAMBDA = 1e-4
 #: The integral's share of the moment (per unit inertia) is bounded by this many radians
 #: times omega_a^2 (anti-windup) ...
 INTEGRAL_LIMIT_RAD = 0.5
-#: ... or, with INTEGRAL_AUTHORITY, by the moment the axis's inputs deliver at their
-#: bounds (per unit inertia) where that is larger (:func:`integral_bound`).  The bias the
-#: integral holds (the flown wingbeat-mean moment minus the held body's ``M_0``) is a
-#: moment, not an angle times the inertia: in the pigeon's free cruise (pitch inertia
-#: 0.78 reduced with the wings, a quarter of the seed's; pitch loop at 3 wingbeats) the
-#: flown wingbeat-mean pitching moment sat 0.002-0.008 table units below the held body's
-#: prediction (0.001-0.005 with a five times larger inertia), above the bound's 0.0025,
-#: and the integral was at its bound in 56 % of the control steps (landing 52 %; the
-#: seed bird's presets: never).  Off: with it the pigeon's cruise improved (0.0187 ->
-#: 0.0089 m, pitch 14.9 -> 6.6 deg RMS) but its landing did not (0.068 -> 0.101 m), and
-#: the seed bird's side gust came back more slowly; measured in docs/free-body.md ("The
-#: pigeon's attitude, third stage").
-INTEGRAL_AUTHORITY = False
-
-
-def euler_zyx(quat: np.ndarray) -> np.ndarray:
-    """(roll, pitch, yaw) of MuJoCo quaternions (..., 4) (w, x, y, z): the seed body frame
-    relative to seed earth axes, Z-Y-X order (yaw about earth z down, then pitch about
-    y right, nose up, then roll about x forward, right wing down)."""
-    w, x, y, z = np.moveaxis(np.asarray(quat, dtype=float), -1, 0)
-    # MuJoCo rotation matrix entries; the seed frame is C R C, C = diag(1, -1, -1)
-    r00 = 1 - 2 * (y * y + z * z)
-    r10 = 2 * (x * y + w * z)
-    r20 = 2 * (x * z - w * y)
-    r21 = 2 * (y * z + w * x)
-    r22 = 1 - 2 * (x * x + y * y)
-    # seed: S = C R C -> S00 = r00, S10 = -r10, S20 = -r20, S21 = r21, S22 = r22
-    pitch = np.arcsin(np.clip(r20, -1.0, 1.0))
-    roll = np.arctan2(r21, r22)
-    yaw = np.arctan2(-r10, r00)
-    return np.stack([roll, pitch, yaw], axis=-1)
-
-
-#: Harmonics of the wingbeat removed by the attitude estimate's fit.
-FIT_HARMONICS = 3
-#: Wingbeats of samples the estimate fits.
-FIT_BEATS = 1
-
-
-def wingbeat_fit_matrix(
-    n: int, period: float, harmonics: int = FIT_HARMONICS, beats: int = 1
-) -> np.ndarray:
-    """Rows (2, n): the least-squares weights that give, from ``n`` samples spanning the
-    last ``beats`` wingbeats (the newest last), the value now and the slope of the fit
-    ``a + b tau + sum_k (c_k cos k w tau + s_k sin k w tau)`` (tau = time before now,
-    k = 1..harmonics and, over two or more wingbeats, k = 1/2 too): the wingbeat-mean
-    state without the moving average's lag."""
-    length = beats * period
-    dt = length / n
-    tau = -dt * np.arange(n - 1, -1, -1)
-    w = 2.0 * math.pi / period
-    ks = [k for k in range(1, harmonics + 1)] + ([0.5] if beats >= 2 else [])
-    cols = [np.ones(n), tau]
-    for k in ks:
-        cols += [np.cos(k * w * tau), np.sin(k * w * tau)]
-    pinv = np.linalg.pinv(np.stack(cols, axis=1))
-    # the trend's value now (a; the periodic part is the within-beat rocking) and slope (b)
-    return np.stack([pinv[0], pinv[1]])
+#: ... or, on the axes INTEGRAL_AUTHORITY marks (roll, pitch, yaw), by the moment the
+#: axis's inputs deliver at their bounds where that is larger (:func:`integral_bound`):
+#: the bias it holds is a moment (the pigeon's cruise: 0.002-0.008 table units, above the
+#: radians' 0.0025, at which its integral sat in every control step).  Pitch only: on
+#: roll and yaw the seed bird's side gust came back more slowly (docs/free-body.md).
+INTEGRAL_AUTHORITY = (False, True, False)
+#: Straight flight: the roll and yaw integrals' share is bounded by this many radians
+#: times omega_a^2 (no lateral bias to trim; at 0.5 a side gust's yaw wound it up into a
+#: lateral swing; docs/free-body.md, "Gusts").  Turns keep INTEGRAL_LIMIT_RAD.
+LATERAL_INTEGRAL_RAD = 0.1
+#: Allocate pitch by :func:`birdsim.flight.attitude_pitch.pitch_allocation` (else the
+#: symmetric inputs together, by least squares, as roll and yaw).
+PITCH_SPLIT = True
 
 
 @dataclass(frozen=True)
@@ -165,17 +125,25 @@ def attitude_gains(omega: float = 1.0, beats: object = AXIS_BEATS) -> AttitudeGa
     return AttitudeGains(wa, 3.0 * wa * wa, 3.0 * wa, wa**3)
 
 
-def damped_gains(omega_a: np.ndarray, damping: np.ndarray) -> AttitudeGains:
+def damped_gains(
+    omega_a: np.ndarray, damping: np.ndarray, stiffness: object = 0.0
+) -> AttitudeGains:
     """Per axis gains (per unit inertia) for a body whose wingbeat-mean rotation already
-    has the damping ``c`` (per unit inertia, >= 0; the flapping's, measured): closed-loop
-    poles at ``-p`` and a double pole at ``-omega_a``, ``p = max(c, omega_a)`` (the
-    natural pole kept where it is faster than the design): ``Kd = p + 2 omega_a - c``,
-    ``Kp = 2 p omega_a + omega_a^2``, ``Ki = p omega_a^2``; at ``c = 0`` the triple pole
-    of :func:`attitude_gains`."""
+    has the damping ``c`` and the restoring stiffness ``k`` (per unit inertia, >= 0; the
+    flapping's and the tail's, measured): closed-loop poles at ``-p``, ``p = max(c,
+    omega_a)`` (the natural pole kept where it is faster than the design), and the roots
+    of ``s^2 + 2 omega_a s + q``, ``q = max(omega_a^2, k)`` (a double pole at
+    ``-omega_a``, or, where the stiffness alone is stiffer than the design, the natural
+    frequency kept): ``Kd = p + 2 omega_a - c``, ``Kp = 2 p omega_a + q - k``, ``Ki = p
+    q``; at ``c = k = 0`` the triple pole of :func:`attitude_gains`."""
     wa = np.asarray(omega_a, dtype=float)
     c = np.asarray(damping, dtype=float)
+    k = np.asarray(stiffness, dtype=float)
     p = np.maximum(c, wa)
-    return AttitudeGains(wa, 2.0 * p * wa + wa * wa, p + 2.0 * wa - c, p * wa * wa)
+    stiff = k > wa * wa
+    q = np.where(stiff, k, wa * wa)
+    ki = np.where(stiff, p * k, p * wa * wa)
+    return AttitudeGains(wa, 2.0 * p * wa + q - k, p + 2.0 * wa - c, ki)
 
 
 def integral_bound(
@@ -184,29 +152,39 @@ def integral_bound(
     lo: np.ndarray,
     hi: np.ndarray,
     inertia: np.ndarray,
-    authority: bool = INTEGRAL_AUTHORITY,
+    authority: object = INTEGRAL_AUTHORITY,
 ) -> np.ndarray:
     """Per axis (roll, pitch, yaw) bound of the attitude integral's share of the demand,
-    per unit inertia (1 / time unit^2): :data:`INTEGRAL_LIMIT_RAD` ``omega_a^2``; with
-    ``authority`` the moment the axis's own inputs (:data:`SYM_INPUTS` for pitch,
-    :data:`LAT_INPUTS` for roll and yaw) deliver at their bounds, ``sum_j |J_ij| (hi_j -
-    lo_j) / 2``, divided by ``inertia``, where that is larger."""
+    per unit inertia (1 / time unit^2): :data:`INTEGRAL_LIMIT_RAD` ``omega_a^2``; on the
+    axes ``authority`` marks (a bool for all three, or three bools) the moment the axis's
+    own inputs (:data:`SYM_INPUTS` for pitch, :data:`LAT_INPUTS` for roll and yaw)
+    deliver at their bounds, ``sum_j |J_ij| (hi_j - lo_j) / 2``, divided by ``inertia``,
+    where that is larger."""
     lim = INTEGRAL_LIMIT_RAD * np.asarray(omega_a, dtype=float) ** 2
-    if not authority:
+    axes = np.broadcast_to(np.asarray(authority, dtype=bool), (3,))
+    if not axes.any():
         return lim
     half = (np.asarray(hi, dtype=float) - np.asarray(lo, dtype=float)) / 2
     auth = np.zeros(3)
     for rows, cols in ((SYM_ROWS, SYM_INPUTS), (LAT_ROWS, LAT_INPUTS)):
         for r in rows:
             auth[r] = float(np.abs(np.asarray(jac)[r, cols]) @ half[cols])
-    return np.maximum(lim, auth / np.asarray(inertia, dtype=float))
+    return np.where(axes, np.maximum(lim, auth / np.asarray(inertia, dtype=float)), lim)
 
 
 class AttitudeLoop:
     """The inner loop for one flight (see the module docstring)."""
 
-    def __init__(self, fb, *, enabled: bool = True, beats: object = AXIS_BEATS):
+    def __init__(
+        self,
+        fb,
+        *,
+        enabled: bool = True,
+        beats: object = AXIS_BEATS,
+        lateral_integral_rad: float | None = LATERAL_INTEGRAL_RAD,
+    ):
         self.fb = fb
+        self.lateral_integral_rad = lateral_integral_rad
         self.enabled = enabled
         self.gains = attitude_gains(fb.red.omega, beats)
         mujoco.mj_fwdPosition(fb.m, fb.d)
@@ -222,6 +200,11 @@ class AttitudeLoop:
         self.rate_jac = np.zeros((3, 3))
         self._turn = np.zeros(3)  # the turning rates the Jacobians were measured at
         self.kinds = INPUTS
+        #: straight path: docs/free-body.md's fourth-stage pitch loop (the tail's stiffness
+        #: in the gains, M_0 measured at the command; pitch integral by authority; pitch
+        #: slow to fast); turns keep the second stage's (with it: circle 0.083 -> 0.096)
+        self.straight = False
+        self.stiffness = np.zeros(3)  # restoring stiffness per axis (>= 0, table units)
 
     def preset_integral(
         self, moment: np.ndarray, params: np.ndarray, pitch: float, speed: float
@@ -243,7 +226,12 @@ class AttitudeLoop:
         """Per axis bound of the integral's share (per unit inertia): :func:`integral_bound`
         with this loop's inertia and the inputs' bounds at ``params``."""
         lo, hi = self.bounds(params)
-        return integral_bound(omega_a, jac, lo, hi, self.inertia, INTEGRAL_AUTHORITY)
+        auth = INTEGRAL_AUTHORITY if self.straight else False
+        lim = integral_bound(omega_a, jac, lo, hi, self.inertia, auth)
+        if self.lateral_integral_rad is not None:  # straight flight: no lateral bias
+            cap = self.lateral_integral_rad * np.asarray(omega_a, dtype=float) ** 2
+            lim = np.where([True, False, True], np.minimum(lim, cap), lim)
+        return lim
 
     def _measure(
         self, params: np.ndarray, pitch: float, speed: float, turn: np.ndarray | None
@@ -258,6 +246,9 @@ class AttitudeLoop:
             m0, jac = measured_jacobian(self.fb, params, pitch, v, turn)
             rate = measured_rate_derivatives(self.fb, params, pitch, v, turn)
         self.rate_jac = rate if RATE_CANCEL else np.zeros((3, 3))
+        if self.straight:
+            k = measured_pitch_stiffness(self.fb, params, pitch, v, m0)
+            self.stiffness = np.array([0.0, max(-k, 0.0), 0.0])
         return m0, jac
 
     def bounds(self, params: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -322,7 +313,7 @@ class AttitudeLoop:
         # damping) is cancelled with the estimated rates
         d_used = self.rate_jac if RATE_CANCEL else np.zeros((3, 3))
         damping = np.maximum(-np.diag(d_used), 0.0)
-        g = damped_gains(self.gains.omega_a, damping / self.inertia)
+        g = damped_gains(self.gains.omega_a, damping / self.inertia, self.stiffness / self.inertia)
         lim = self.integral_limit(g.omega_a, jac, params)
         if not self.saturated:  # anti-windup: frozen while the inputs are at their bounds
             self.integral = np.clip(self.integral + dt * g.ki * err, -lim, lim)
@@ -336,11 +327,16 @@ class AttitudeLoop:
         demand += damping * (rate_err + np.asarray(rates, dtype=float) - turn)
         lo, hi = self.bounds(params)
         u = np.zeros(len(INPUTS))
-        miss = 0.0
-        active = False
+        miss, active, groups = 0.0, False, [(SYM_ROWS, SYM_INPUTS), (LAT_ROWS, LAT_INPUTS)]
+        if PITCH_SPLIT and self.straight:  # pitch: slow moment by the wings, fast by the tail
+            a_lp = 1.0 - math.exp(-dt / (WING_PITCH_BEATS * self.fb.red.period))
+            slow = getattr(self, "_slow", None)
+            self._slow = demand[1] if slow is None else slow + a_lp * (demand[1] - slow)
+            up, miss, active = pitch_allocation(jac[1], demand[1], self._slow, lo, hi, LAMBDA)
+            u[SYM_INPUTS], groups = up[SYM_INPUTS], groups[1:]
         # a symmetric bird: the symmetric inputs pitch it, the differential ones roll and
         # yaw it (the measured cross terms are round-off and are not used)
-        for rows, cols in ((SYM_ROWS, SYM_INPUTS), (LAT_ROWS, LAT_INPUTS)):
+        for rows, cols in groups:
             cols = [c for c in cols if hi[c] > lo[c]]
             if not cols:
                 miss += float(np.linalg.norm(demand[rows]))
@@ -362,10 +358,14 @@ class AttitudeLoop:
 __all__ = [
     "ATTITUDE_BEATS",
     "AXIS_BEATS",
+    "LATERAL_INTEGRAL_RAD",
+    "ROLL_BEATS",
     "INPUTS",
     "AttitudeLoop",
     "attitude_gains",
     "euler_zyx",
+    "FIT_BEATS",
+    "wingbeat_fit_matrix",
     "integral_bound",
     "JAC_SAMPLES",
     "JAC_STEP",

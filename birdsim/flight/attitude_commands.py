@@ -8,16 +8,23 @@ import math
 
 import numpy as np
 
-from birdsim.flight.attitude import FIT_BEATS
+from birdsim.flight.attitude import FIT_BEATS, ROLL_BEATS
 from birdsim.flight.flight_arrays import fit_matrix
 
 TWO_PI = 2.0 * math.pi
 #: The lateral path loop (attitude free): a side error and velocity ask for a sideways
 #: acceleration ``omega_l^2 e_y + 2 omega_l e_vy`` (critically damped, ``omega_l = omega /
-#: (2 pi LATERAL_BEATS)``: three times the path loop's time constant, so that the roll loop
-#: inside it, 2 wingbeats, is the faster), delivered by banking: roll = atan(a_y / g),
-#: at most LATERAL_ROLL_MAX (rad).
-LATERAL_BEATS = 6.0
+#: (2 pi LATERAL_BEATS)``), delivered by banking: roll = atan(a_y / g), at most
+#: LATERAL_ROLL_MAX (rad).  Its time constant is LATERAL_PER_ROLL times the roll loop's
+#: (:data:`birdsim.flight.attitude.ROLL_BEATS`), so that the roll loop inside it is the
+#: faster.  Measured with the roll loop at 1 wingbeat (30 % side gust from wingbeat 3,
+#: wingbeats after it until within 0.05 semispan and 2 degrees): lateral 2.5: 10, 3: 7,
+#: 3.5: 8, 4: 9 wingbeats; with the lateral integral bounded
+#: (:data:`birdsim.flight.attitude.LATERAL_INTEGRAL_RAD`) and the gust from wingbeat 3,
+#: 3.25, 3.5, 3.75: lateral 3: 8, 8, 9, 9; 3.5: 8, 8, 8, 8; 4: -, 7, 8, 8
+#: (docs/free-body.md, "Gusts").
+LATERAL_PER_ROLL = 3.5
+LATERAL_BEATS = LATERAL_PER_ROLL * ROLL_BEATS
 LATERAL_ROLL_MAX = math.radians(30.0)
 
 
@@ -81,6 +88,7 @@ def body_rates(pitch: float, roll: float, pitch_rate: float, yaw_rate: float) ->
 
 __all__ = [
     "LATERAL_BEATS",
+    "LATERAL_PER_ROLL",
     "LATERAL_ROLL_MAX",
     "TURN_ROLL_MAX",
     "bank_command",

@@ -159,7 +159,7 @@ def lateral_fit(window: list, per_beat: int) -> tuple[float, float]:
     """The wingbeat-mean side offset from the path and its rate (to the left), the
     trend's value now, from the last wingbeat of samples ``(y, vy)`` (the attitude
     estimate's fit; the start's sample repeated before a whole wingbeat)."""
-    from birdsim.flight.attitude import FIT_BEATS
+    from birdsim.flight.body_attitude import FIT_BEATS
     from birdsim.flight.flight_arrays import fit_matrix
 
     n = FIT_BEATS * per_beat

@@ -120,13 +120,26 @@ class ErrorWindow:
         self.vx: list[float] = []
         self.integral = np.zeros(2)
         self.dt = period / per_beat
+        #: the samples also as rows of growing arrays (ep, ev, vx): a full window is a
+        #: copy of their last rows, the array ``np.asarray`` makes of the lists' tails
+        self._rows = [np.empty((64, 2)), np.empty((64, 2)), np.empty(64)]
 
     def add(self, e_pos: np.ndarray, e_vel: np.ndarray, vx_air: float) -> None:
-        self.ep.append(np.asarray(e_pos, dtype=float))
-        self.ev.append(np.asarray(e_vel, dtype=float))
-        self.vx.append(float(vx_air))
+        ep, ev, vx = np.asarray(e_pos, dtype=float), np.asarray(e_vel, dtype=float), float(vx_air)
+        k = len(self.vx)
+        if k == self._rows[2].shape[0]:
+            self._rows = [np.concatenate([r, np.empty_like(r)]) for r in self._rows]
+        self._rows[0][k], self._rows[1][k], self._rows[2][k] = ep, ev, vx
+        self.ep.append(ep)
+        self.ev.append(ev)
+        self.vx.append(vx)
 
     def _window(self, xs: list, k: int) -> np.ndarray:
+        n = len(xs)
+        if n >= k:  # the arrays' rows: the same numbers, no list
+            for rows, samples in zip(self._rows, (self.ep, self.ev, self.vx)):
+                if samples is xs and n == len(self.vx):
+                    return rows[n - k : n].copy()
         tail = xs[-k:]
         if len(tail) < k:  # before the first full wingbeat: the start's value
             tail = [xs[0]] * (k - len(tail)) + tail

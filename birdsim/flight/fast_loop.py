@@ -56,6 +56,7 @@ def _run_steps(
     site_xpos,
     site_xmat,
     areas,
+    fold,
     wind,
     fl,
     ints,
@@ -88,8 +89,8 @@ def _run_steps(
             qvel[pv0 + i] = pres_v[k, i]
         capi.mj_step1(m, d)
         aero_kernel.apply_aero(
-            m, d, passive, site_ids, body_ids, site_xpos, site_xmat, areas, wind, fl, ints,
-            frame, tail_out,
+            m, d, passive, site_ids, body_ids, site_xpos, site_xmat, areas, fold, qpos, wind,
+            fl, ints, frame, tail_out,
         )  # fmt: skip
         capi.mj_fullM(m, d, M.ctypes.data)
         step_kernel.free_step(
@@ -155,10 +156,19 @@ class _Plan:
         )  # fmt: skip
         self.sites = (
             np.ascontiguousarray(cb.site_ids), np.ascontiguousarray(cb.body_ids), d.site_xpos,
-            d.site_xmat, np.ascontiguousarray(cb.areas[:, 0]), m.opt.wind,
+            d.site_xmat, np.ascontiguousarray(cb.areas[:, 0]), aero_kernel.fold_addresses(cb),
+            m.opt.wind,
         )  # fmt: skip
         self.aero_for: tuple | None = None
         self.aero: tuple = ()
+        self._weight: tuple | None = None
+
+    def weight(self, fb) -> np.ndarray:
+        """``fb.total_mass * gravity`` (world), made again only when either changes."""
+        key = (fb.total_mass, *fb.m.opt.gravity.tolist())
+        if self._weight is None or self._weight[0] != key:
+            self._weight = (key, fb.total_mass * np.array(fb.m.opt.gravity))
+        return self._weight[1]
 
     def aero_arguments(self, cb) -> tuple:
         key = (cb.tail_controls, cb.enabled, cb.body_drag)
@@ -199,7 +209,7 @@ def step(fb, pres, wind: np.ndarray, record: list | None, every: int) -> bool:
         return False
     m, cb, h = fb.m, fb.cb, fb.h
     m.opt.wind[:] = wind
-    weight = fb.total_mass * np.array(m.opt.gravity)
+    weight = plan.weight(fb)
     Pq, P = plan.Pq, plan.P
     pres_q = np.ascontiguousarray(pres.qpos[:, Pq])
     pres_v = np.ascontiguousarray(pres.qvel[:, P])
@@ -236,9 +246,10 @@ def step(fb, pres, wind: np.ndarray, record: list | None, every: int) -> bool:
         cb.tail_alpha = float(tail[3])
     if record is not None:
         power = rec_out[:, 6].tolist()
-        for j in range(samples):
-            r = rec_out[j]
-            record.append((times[j], rec_q[j], rec_v[j], r[0:3], r[3:6], power[j], r[7:10]))
+        moment, force, tail_f = rec_out[:, 0:3], rec_out[:, 3:6], rec_out[:, 7:10]
+        record.extend(
+            zip(times, rec_q, rec_v, moment, force, power, tail_f)
+        )  # one tuple per sample, as the reference appends them
     if fb.config.momentum_projection and n:
         fb.projection_max = max(fb.projection_max, float(stats[0]), float(stats[1]) * h)
     fb._check_finite()

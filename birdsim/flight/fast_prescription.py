@@ -1,5 +1,6 @@
 """The wings' prescription in compiled code: :meth:`WingbeatSchedule.prescribe` for the
-models whose joint coefficients are single parameters times constants (base, m1-m4).
+models whose joint coefficients are single parameters times constants, plus a constant
+(base, m1-m5).
 
 The reference chain (:func:`birdsim.flight.playback.joint_derivatives`, then
 :func:`birdsim.mujoco.driver.wing_arrays` with :func:`birdsim.mujoco.ball.ball_state`)
@@ -13,9 +14,11 @@ of two 3-term sums (numpy's ``einsum`` and stacked ``matmul`` in the ball joint)
 ``tests/test_fast_flight.py`` holds the rows to 1e-13 of the reference.
 
 :func:`spec` reads the coefficients' form from ``kin.joint_motion`` itself (each
-amplitude, phase and bias a constant or ``scale * p[i]``); a model of another form
-(m5's fold) gets None and keeps the reference path, as does a non-finite input (the
-reference names the joint).
+amplitude, phase and bias a constant, ``scale * p[i]`` or ``scale * p[i] + const``: m5's
+fold phase ``-p - pi/2``); a model of another form gets None and keeps the reference
+path, as does a non-finite input (the reference names the joint).  m5's elbow and wrist
+sweep are two more hinges, its supination is added to the wrist twist's hinge as
+:func:`birdsim.mujoco.driver.wing_arrays` adds it (``driver.SAME_AXIS``).
 """
 
 from __future__ import annotations
@@ -26,7 +29,7 @@ import mujoco
 import numpy as np
 
 from birdsim.mujoco.ball import _skew
-from birdsim.mujoco.driver import HINGES, SHOULDER, _plan
+from birdsim.mujoco.driver import FOLD_HINGES, HINGES, SHOULDER, _plan
 from birdsim.physics.bird import Bird
 from birdsim.physics.jit import numba
 from birdsim.physics.kinematics import KinematicModel
@@ -34,7 +37,9 @@ from birdsim.physics.kinematics import KinematicModel
 #: the compiled prescription is used where a spec exists (False: the reference path)
 ENABLED = True
 #: joint order of the kernel: heave, the shoulder's four (driver.SHOULDER), the hinges
-JOINT_ORDER = ("heave",) + SHOULDER + HINGES
+#: (m4's two, m5's two), m5's supination (onto the wrist twist's hinge)
+JOINT_ORDER = ("heave",) + SHOULDER + HINGES + FOLD_HINGES + ("supination",)
+_SUPINATION = JOINT_ORDER.index("supination")
 _SWEEP, _FLAP = JOINT_ORDER.index("sweep"), JOINT_ORDER.index("flap")
 #: the reference's difference step (playback.joint_derivatives)
 DIFF_STEP = 1e-6
@@ -43,9 +48,10 @@ _SPECS: dict[tuple, object] = {}
 
 
 def spec(kin: KinematicModel, bird: Bird) -> tuple | None:
-    """(present (J,), index (J, 3), scale (J, 3), const (J, 3)) of each joint's amplitude,
-    phase and bias: ``scale * p[index]``, or ``const`` where index is -1; None when a
-    coefficient has another form or a joint is outside :data:`JOINT_ORDER`."""
+    """(present (J,), index (J, 3), scale (J, 3), const (J, 3), affine (J, 3)) of each
+    joint's amplitude, phase and bias: ``scale * p[index]`` (``+ const`` where affine is
+    1), or ``const`` where index is -1; None when a coefficient has another form or a
+    joint is outside :data:`JOINT_ORDER`."""
     key = (kin.name, id(bird))
     hit = _SPECS.get(key)
     if hit is not None and hit[0] is bird:
@@ -68,6 +74,7 @@ def spec(kin: KinematicModel, bird: Bird) -> tuple | None:
         index = -np.ones((J, 3), dtype=np.int64)
         scale = np.zeros((J, 3))
         const = np.zeros((J, 3))
+        affine = np.zeros((J, 3), dtype=np.int64)
         ok = True
         for j, joint in enumerate(JOINT_ORDER):
             if joint not in base:
@@ -78,35 +85,58 @@ def spec(kin: KinematicModel, bird: Bird) -> tuple | None:
                 if type(v0) is float and all(type(getattr(m[joint], field)) is float for m in per):
                     const[j, f] = v0
                     continue
-                hits = [i for i in range(n) if np.any(np.asarray(getattr(per[i][joint], field)))]
-                if len(hits) != 1 or np.any(np.asarray(v0)):
+                a0 = np.broadcast_to(np.asarray(v0, dtype=float), probe.shape)
+                c0 = float(a0[0])
+                if np.any(a0 != c0):
                     ok = False
                     continue
-                s = float(np.asarray(getattr(per[hits[0]][joint], field))[0])
-                if not np.array_equal(getattr(per[hits[0]][joint], field), s * probe):
+                hits = [
+                    i for i in range(n) if not np.array_equal(getattr(per[i][joint], field), a0)
+                ]
+                if len(hits) != 1:
                     ok = False
+                    continue
+                got = np.asarray(getattr(per[hits[0]][joint], field), dtype=float)
+                if c0 == 0.0:  # scale * p
+                    s = float(got[0])
+                    ok = ok and np.array_equal(got, s * probe)
+                else:  # scale * p + const, the reference's numbers for these probes
+                    raw = float((got[0] - c0) / probe[0])
+                    s = next(
+                        (c for c in (raw, round(raw, 9)) if np.array_equal(got, c * probe + c0)),
+                        math.nan,
+                    )
+                    ok = ok and math.isfinite(s)
+                    const[j, f], affine[j, f] = c0, 1
                 index[j, f], scale[j, f] = hits[0], s
-        out = (present, index, scale, const) if ok else None
+        out = (present, index, scale, const, affine) if ok else None
     if len(_SPECS) > 64:
         _SPECS.clear()
     _SPECS[key] = (bird, out)
     return out
 
 
-def _coef(p, t, idx, scale, const):
-    return scale * p[t, idx] if idx >= 0 else const
+def _coef(p, t, idx, scale, const, aff):
+    if idx < 0:
+        return const
+    if aff:
+        return scale * p[t, idx] + const
+    return scale * p[t, idx]
 
 
-def _shifted(p, dp, t, idx, scale, const, h, step):
+def _shifted(p, dp, t, idx, scale, const, aff, h, step):
     """The reference's central difference of a coefficient along dp."""
     if idx < 0:
         return (const - const) / step
+    if aff:
+        hi = scale * (p[t, idx] + h * dp[t, idx]) + const
+        return (hi - (scale * (p[t, idx] - h * dp[t, idx]) + const)) / step
     return (scale * (p[t, idx] + h * dp[t, idx]) - scale * (p[t, idx] - h * dp[t, idx])) / step
 
 
 def _side(
-    times, p, dp, ddp, sh, shd, shdd, s0, use_sh, present, index, scale, const, omega,
-    plan, axes, kmat, kkmat, qpos, qvel, qacc,
+    times, p, dp, ddp, sh, shd, shdd, s0, use_sh, present, index, scale, const, affine,
+    omega, plan, axes, kmat, kkmat, qpos, qvel, qacc,
 ):  # fmt: skip
     """One wing's joints into qpos/qvel/qacc rows; ``sh*``: shoulder offsets (T, 4),
     this side's (sweep, dihedral) at columns s0, s0 + 1."""
@@ -123,15 +153,15 @@ def _side(
             if present[j] == 0:
                 ang[j] = rate[j] = acc[j] = 0.0
                 continue
-            a = _coef(p, t, index[j, 0], scale[j, 0], const[j, 0])
-            c = _coef(p, t, index[j, 1], scale[j, 1], const[j, 1])
-            b = _coef(p, t, index[j, 2], scale[j, 2], const[j, 2])
-            da = _shifted(p, dp, t, index[j, 0], scale[j, 0], const[j, 0], h, step)
-            dc = _shifted(p, dp, t, index[j, 1], scale[j, 1], const[j, 1], h, step)
-            db = _shifted(p, dp, t, index[j, 2], scale[j, 2], const[j, 2], h, step)
-            dda = _shifted(p, ddp, t, index[j, 0], scale[j, 0], const[j, 0], h, step)
-            ddc = _shifted(p, ddp, t, index[j, 1], scale[j, 1], const[j, 1], h, step)
-            ddb = _shifted(p, ddp, t, index[j, 2], scale[j, 2], const[j, 2], h, step)
+            a = _coef(p, t, index[j, 0], scale[j, 0], const[j, 0], affine[j, 0])
+            c = _coef(p, t, index[j, 1], scale[j, 1], const[j, 1], affine[j, 1])
+            b = _coef(p, t, index[j, 2], scale[j, 2], const[j, 2], affine[j, 2])
+            da = _shifted(p, dp, t, index[j, 0], scale[j, 0], const[j, 0], affine[j, 0], h, step)
+            dc = _shifted(p, dp, t, index[j, 1], scale[j, 1], const[j, 1], affine[j, 1], h, step)
+            db = _shifted(p, dp, t, index[j, 2], scale[j, 2], const[j, 2], affine[j, 2], h, step)
+            dda = _shifted(p, ddp, t, index[j, 0], scale[j, 0], const[j, 0], affine[j, 0], h, step)
+            ddc = _shifted(p, ddp, t, index[j, 1], scale[j, 1], const[j, 1], affine[j, 1], h, step)
+            ddb = _shifted(p, ddp, t, index[j, 2], scale[j, 2], const[j, 2], affine[j, 2], h, step)
             arg = phase + c
             sn, cs = math.sin(arg), math.cos(arg)
             ang[j] = a * sn + b
@@ -209,8 +239,13 @@ def _side(
             o0, o1, o2 = o0 + v0 * r, o1 + v1 * r, o2 + v2 * r
         qvel[t, plan[3]], qvel[t, plan[3] + 1], qvel[t, plan[3] + 2] = o0, o1, o2
         qacc[t, plan[3]], qacc[t, plan[3] + 1], qacc[t, plan[3] + 2] = al0, al1, al2
-        # hinges
-        for k in range(2):
+        # hinges (wrist flap, wrist twist, elbow, wrist sweep); m5's supination onto the
+        # wrist twist's (driver.SAME_AXIS: the twist's series plus the supination's)
+        if present[_SUPINATION] != 0:
+            ang[6] = ang[6] + ang[_SUPINATION]
+            rate[6] = rate[6] + rate[_SUPINATION]
+            acc[6] = acc[6] + acc[_SUPINATION]
+        for k in range(4):
             qa, da_ = plan[4 + 2 * k], plan[5 + 2 * k]
             if qa >= 0:
                 qpos[t, qa] = ang[5 + k]
@@ -220,7 +255,7 @@ def _side(
 
 def _prescribe(
     times, p, dp, ddp, pl, dpl, ddpl, sh, shd, shdd, use_sh, present, index, scale, const,
-    omega, plans, axes, kmat, kkmat, qpos, qvel, qacc,
+    affine, omega, plans, axes, kmat, kkmat, qpos, qvel, qacc,
 ):  # fmt: skip
     for side in range(2):
         if side == 0:
@@ -229,7 +264,7 @@ def _prescribe(
             a, b, c = pl, dpl, ddpl
         _side(
             times, a, b, c, sh, shd, shdd, 2 * side, use_sh, present, index, scale, const,
-            omega, plans[side], axes[side], kmat[side], kkmat[side], qpos, qvel, qacc,
+            affine, omega, plans[side], axes[side], kmat[side], kkmat[side], qpos, qvel, qacc,
         )  # fmt: skip
 
 
@@ -245,30 +280,24 @@ _GEOMETRY: dict[int, tuple] = {}
 
 
 def geometry(m: mujoco.MjModel) -> tuple | None:
-    """(plans (2, 8): heave q/dof, ball q/dof, the hinges' q/dof or -1; axes (2, 4, 3),
-    their cross-product matrices k and k @ k (2, 4, 3, 3)) per side, right first; None
-    for a model with m5's joints."""
+    """(plans (2, 12): heave q/dof, ball q/dof, the hinges' q/dof or -1 (wrist flap,
+    wrist twist, elbow, wrist sweep); axes (2, 4, 3), their cross-product matrices k and
+    k @ k (2, 4, 3, 3)) per side, right first."""
     hit = _GEOMETRY.get(id(m))
     if hit is not None and hit[0] is m:
         return hit[1]
     plan = _plan(m)
     plans, axes, ks, kks = [], [], [], []
-    out = None
-    ok = True
     for side in ("r", "l"):
         hq, hd, ax, (sq, sd), hinges = plan[side]
         row = [hq, hd, sq, sd]
-        for j, adr in hinges:
-            if j in HINGES:
-                row += [-1, -1] if adr is None else [adr[0], adr[1]]
-            elif adr is not None:
-                ok = False  # m5's hinges: the reference path
+        for _, adr in hinges:  # driver's order: HINGES + FOLD_HINGES, as JOINT_ORDER
+            row += [-1, -1] if adr is None else [adr[0], adr[1]]
         plans.append(row)
         axes.append(np.array(ax, dtype=float))
         ks.append(np.array([_skew(a)[0] for a in ax]))
         kks.append(np.array([_skew(a)[1] for a in ax]))
-    if ok:
-        out = (np.array(plans, dtype=np.int64), np.array(axes), np.array(ks), np.array(kks))
+    out = (np.array(plans, dtype=np.int64), np.array(axes), np.array(ks), np.array(kks))
     if len(_GEOMETRY) > 64:
         _GEOMETRY.clear()
     _GEOMETRY[id(m)] = (m, out)
@@ -299,7 +328,8 @@ def wing_rows(
     f = np.ascontiguousarray
     use_sh = shoulder is not None
     sh = shoulder if use_sh else (np.zeros((t, 4)),) * 3
-    qpos = np.tile(m.qpos0, (t, 1))
+    qpos = np.empty((t, m.nq))
+    qpos[:] = m.qpos0  # np.tile(m.qpos0, (t, 1))
     qvel = np.zeros((t, m.nv))
     qacc = np.zeros((t, m.nv))
     prescribe_kernel(

@@ -8,7 +8,9 @@ from typing import Any
 
 import numpy as np
 
-from birdsim.flight.attitude import FIT_BEATS, INPUTS, euler_zyx, wingbeat_fit_matrix
+from birdsim.flight import fast_estimate
+from birdsim.flight.attitude_jacobians import INPUTS
+from birdsim.flight.body_attitude import FIT_BEATS, euler_zyx, wingbeat_fit_matrix
 from birdsim.flight.simulate import C_SEED
 
 
@@ -30,7 +32,9 @@ def attitude_estimate(
         window = [(np.array(d.qpos[3:7]), C_SEED * np.array(d.qvel[3:6]))]
     quat = np.array([w[0] for w in window])
     rate = np.array([w[1] for w in window])
-    err = error_rotvec(quat, pitch_cmd, roll_cmd, yaw_cmd)
+    err = fast_estimate.error_rotvec(quat, pitch_cmd, roll_cmd, yaw_cmd)  # compiled
+    if err is None:
+        err = error_rotvec(quat, pitch_cmd, roll_cmd, yaw_cmd)
     n = FIT_BEATS * per_beat
     if len(window) < n:
         pad = n - len(window)
@@ -97,7 +101,7 @@ def _qmul(p: tuple, q: tuple) -> tuple:
 
 @functools.lru_cache(maxsize=4)
 def fit_matrix(n: int, period: float) -> np.ndarray:
-    """:func:`birdsim.flight.attitude.wingbeat_fit_matrix` over FIT_BEATS, cached."""
+    """:func:`birdsim.flight.body_attitude.wingbeat_fit_matrix` over FIT_BEATS, cached."""
     return wingbeat_fit_matrix(n, period, beats=FIT_BEATS)
 
 

@@ -27,7 +27,7 @@ from birdsim.flight.pitch_plan import PitchPlan, feedforward_pitch
 from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
 from birdsim.flight.track import TrackFrame, is_three_d
 from birdsim.flight.trim import sample_reference, trim_start
-from birdsim.flight.turning import TURN_AXIS_BEATS, TURN_PITCH_PLAN, turn_command
+from birdsim.flight.turning import TURN_PITCH_PLAN, axis_beats, turn_command, turn_pitch
 from birdsim.flight.wingbeat import INPUT_SMOOTHING_BEATS, WingbeatSchedule
 from birdsim.physics.bird import Bird
 from birdsim.physics.units import reduced_bird, scales
@@ -42,11 +42,13 @@ PITCH_COMMAND_BEATS = 3.0
 #: How far (rad) the compensated stroke plane may leave the table's bounds (those bound
 #: the optimiser's search, not the shoulder).
 SP_MARGIN = 0.8
-#: Wingbeats ahead the stroke plane's compensation predicts the body's pitch (the
-#: estimated pitch rate times this): the lag of the offset's smoothing, two cascaded
-#: filters of INPUT_SMOOTHING_BEATS.  Measured (take-off / landing path RMS): 0: 0.032 /
-#: 0.048, 0.2: 0.034 / 0.042, 0.25: 0.034 / 0.042, 0.375: 0.036 / 0.044 (docs/free-body.md).
+#: Wingbeats ahead the stroke plane's compensation predicts the body's pitch (the estimated
+#: pitch rate times this): the lag of its two cascaded smoothing filters (docs/free-body.md).
 SP_LEAD = 2.0 * INPUT_SMOOTHING_BEATS
+#: Measure the attitude loop's Jacobians and M_0 at the commanded pitch on a straight path
+#: (at the estimated pitch the pigeon's rocking made M_0 jump with the estimate's swings
+#: through the tail's stiffness; turns keep it; docs/free-body.md, "The pigeon's attitude").
+JAC_AT_COMMAND = True
 #: Plan the free body's pitch command along the known path (birdsim.flight.pitch_plan),
 #: from the feed-forward's table pitch PLAN_PER_BEAT times a wingbeat.
 PITCH_PLAN = True
@@ -103,8 +105,7 @@ def fly(
     Returns:
         FlightResult with arrays t, x, y, z, vx, vz, x_ref, z_ref, pitch, <params>,
         Fx_demand, Fz_demand, climb_demand (the table's climb; 0 for a level table),
-        V_air, saturated, pitch_moment, power, force_x, force_z,
-        qpos, qvel (reduced units).
+        V_air, saturated, pitch_moment, power, force_x, force_z, qpos, qvel (reduced units).
     Raises:
         BirdsimError: non-finite demands, a diverging simulation.
     """
@@ -207,9 +208,8 @@ def fly(
         pres = fb.schedule.prescribe(np.zeros(1), cmd.params[None, :], zeros, zeros)
         omega0, d_pitch0 = getattr(fb, "start_rotation", (None, 0.0))
         fb.start(pos0, vel0, pres, pitch=float(pres.pitch[0]) - d_pitch0, omega_body=omega0)
-        att = AttitudeLoop(fb, enabled=free and attitude_loop)
-        if track is not None:  # turning: the attitude loop's time constants of a turn
-            att = AttitudeLoop(fb, enabled=free and attitude_loop, beats=TURN_AXIS_BEATS)
+        att = AttitudeLoop(fb, enabled=free and attitude_loop, **axis_beats(track))
+        att.straight = JAC_AT_COMMAND and track is None
         if free and trim and hasattr(fb, "start_moment"):
             att.preset_integral(fb.start_moment, cmd.params, float(pres.pitch[0]), float(ref0.vx))
         compensate = free and stroke_compensation and "stroke_plane" in names
@@ -269,6 +269,9 @@ def fly(
                     pitch_ref, pitch_rate_ref, pitch_acc_ref = command_filter(
                         pitch_ref, pitch_rate_ref, pitch, tau_ref, dt_ctl
                     )
+                if track is not None and plan is not None:  # a slow turn's lowered body
+                    pitch3 = turn_pitch(track, t, (pitch_ref, pitch_rate_ref, pitch_acc_ref))
+                    pitch_ref, pitch_rate_ref, pitch_acc_ref = pitch3
                 turn_cmd = None
                 if track is None:
                     roll_cmd = bank_command(lat_window, config.log_per_beat, red.gravity)
@@ -292,22 +295,22 @@ def fly(
                     att_window, fb.d, config.log_per_beat, TWO_PI, zyx_pitch, roll_cmd, yaw_cmd
                 )
                 body_pitch = pitch_ref - float(err[1])  # the wingbeat-mean pitch
+                at_cmd = JAC_AT_COMMAND and turn_cmd is None  # where the Jacobians are measured
+                jac_pitch, jac_params = (pitch_ref if at_cmd else body_pitch), None
                 if compensate:
-                    # the stroke plane turns by the difference between the table's pitch
-                    # and the body's, so the wings beat in the world as the table's
-                    # wingbeat at the table's pitch (m3/m4: stroke plane and body pitch
-                    # compose about one axis), within the stroke plane's bounds
+                    # the stroke plane turns by the table's pitch minus the body's (m3/m4:
+                    # they compose about one axis), the body's predicted SP_LEAD ahead
                     offset = np.zeros(len(names))
-                    # the body's pitch predicted SP_LEAD ahead (the estimate lags)
                     lead = float(rates[1]) * SP_LEAD * TWO_PI
                     # the table's pitch as its target (cmd.params), not the schedule's
-                    # smoothed output: the offset is smoothed by the same filters as the
-                    # stroke plane's target, so the world stroke plane follows the table's
-                    # as the posed body's does (the smoothed output, smoothed again, lagged
-                    # the table by a wingbeat: take-off 0.072, landing 0.102)
+                    # smoothed output, smoothed again (docs/free-body.md)
                     p_table = cmd.params[names.index("pitch")] if "pitch" in names else pitch
                     sp = cmd.params[sp_index] + p_table - (body_pitch + lead)
                     offset[sp_index] = float(np.clip(sp, *sp_bounds)) - cmd.params[sp_index]
+                    jac_params = cmd.params + offset
+                    if at_cmd:  # the stroke plane compensated for the command
+                        sp = cmd.params[sp_index] + p_table - jac_pitch
+                        jac_params[sp_index] = float(np.clip(sp, *sp_bounds))
                 if turn_cmd is None:
                     rate_cmd = body_rates(pitch_ref, roll_cmd, pitch_rate_ref, yaw_rate)
                     rate_cmd = rate_cmd + np.array([roll_rate_ref, 0.0, 0.0])
@@ -326,8 +329,8 @@ def fly(
                     rate_cmd=rate_cmd,
                     acc_cmd=acc_cmd,
                     turn_rates=turn_rates,
-                    jac_params=None if offset is None else cmd.params + offset,
-                    jac_pitch=body_pitch,
+                    jac_params=jac_params,
+                    jac_pitch=jac_pitch,
                 )
                 fb.schedule.shoulder_target = shoulder
                 fb.cb.tail_controls = tail

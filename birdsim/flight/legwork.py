@@ -340,6 +340,7 @@ def touchdown(
         speeds.append(float(np.linalg.norm(cb.com()[1])))
     sp = np.array(speeds)
     arrays = rec.arrays()
+    arrays["com_speed"] = sp  # the whole bird's centre of mass, every step
     first = int(np.argmax(arrays["foot_normal"] > 0.0))  # the touchdown's step
     above = np.nonzero(sp[first:] >= 0.01 * arrival[0])[0]
     rest = (above[-1] + 1 if len(above) else 0) / STEPS

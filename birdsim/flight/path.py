@@ -38,6 +38,7 @@ import numpy as np
 from scipy.interpolate import PPoly
 
 from birdsim.errors import limits_text, magnitude_ok
+from birdsim.flight.fast_path import curve_values
 from birdsim.flight.path_checks import (
     FLOOR_CLEARANCE,
     PERCH_KEEPOUT,
@@ -217,6 +218,12 @@ class FlightPath:
         (the 2-D path's keys first) and y, vy, ay (0 in the vertical plane)."""
         t = np.asarray(t, dtype=float)
         out: dict[str, np.ndarray] = {}
+        fast = self._compiled(t)
+        if fast is not None:  # the same numbers, compiled (birdsim.flight.fast_path)
+            for keys, vals in zip(("x", "z", "y"), fast):
+                for k, v in zip((keys, "v" + keys, "a" + keys), range(3)):
+                    out[k] = np.zeros(t.shape) if vals is None else vals[v].reshape(t.shape)
+            return out
         if self._track is not None:
             tr = self._track.sample(t)
             out.update(x=tr["x"], vx=tr["vx"], ax=tr["ax"])
@@ -233,10 +240,27 @@ class FlightPath:
 
     def state(self, t: float) -> PathState:
         """The path at reduced time ``t`` (``1 / omega`` units; one wingbeat = 2 pi)."""
+        fast = self._compiled(np.array([float(t)]))
+        if fast is not None:
+            (x, vx, ax), (z, vz, az) = fast[0][:, 0].tolist(), fast[1][:, 0].tolist()
+            y, vy, ay = (0.0, 0.0, 0.0) if fast[2] is None else fast[2][:, 0].tolist()
+            return PathState(x, z, vx, vz, ax, az, y, vy, ay)
         s = self.sample(float(t))
         return PathState(
             *(float(s[k]) for k in ("x", "z", "vx", "vz", "ax", "az", "y", "vy", "ay"))
         )
+
+    def _compiled(self, t: np.ndarray) -> tuple | None:
+        """(x, z, y or None) curves' (3, t.size) values at ``t`` by
+        :func:`birdsim.flight.fast_path.curve_values` (scipy's numbers), or None where
+        that does not apply (a speed-form path's track, numba missing)."""
+        if self._track is not None:
+            return None
+        x, z = curve_values(self._x, t), curve_values(self._z, t)
+        y = None if self._y is None else curve_values(self._y, t)
+        if x is None or z is None or (self._y is not None and y is None):
+            return None
+        return x, z, y
 
     def regime(self, t_beats: float) -> str:
         """The label of the latest keyframe at or before ``t_beats`` (blank labels skipped)."""

@@ -8,8 +8,9 @@ height from which a fall reaches the measured touchdown speed
 height, 0.15 semispans, 5 cm for the pigeon).  The touchdown height and point are where
 the torso is when its legs, vertical and at their standing length, reach the perch at
 the flight's final pitch.  ``fly`` flies it with the legs tucked; at its end the
-contact phase starts from that state: the legs reach out (set to standing length,
-vertical, in one step: a limitation), the wings stop where they are (their velocity
+contact phase starts from that state: the legs have reached out to standing length
+under the centre of mass over the hover's last half wingbeat (prescribed in flight like
+the wings, :func:`reach_motion`), the wings stop where they are (their velocity
 set to zero; they fold back to :data:`~birdsim.flight.contact.REST_WINGS` over a
 wingbeat from the touchdown), the bird drops onto the perch, the legs brake it and the hips lower it
 to the standing pitch.  (A path that flies the descent down to the touchdown speed
@@ -24,8 +25,9 @@ from typing import Any
 
 import numpy as np
 
-from birdsim.flight.contact import REST_WINGS, ContactBird
+from birdsim.flight.contact import REST_WINGS, STEPS_PER_BEAT, ContactBird
 from birdsim.flight.freeflight import FlightResult, fly
+from birdsim.flight.leg_motion import LegMotion, LegPlan
 from birdsim.flight.legwork import touchdown, touchdown_speed
 from birdsim.flight.path import FlightPath, PathKeyframe
 from birdsim.flight.path_checks import PERCH_X, rest_supports
@@ -45,7 +47,13 @@ from birdsim.physics.units import reduced_bird
 
 TWO_PI = 2.0 * math.pi
 #: Wingbeats of the contact phase after the touchdown.
-STAND_BEATS = 8.0
+STAND_BEATS = 18.0
+#: The hips lower the body to the standing pitch over this long after the braking
+#: (wingbeats; over 5 the torso moved at 0.002-0.004 omega s, above 1 % of the
+#: perch-to-perch cruise speed 0.2, for 5 wingbeats)
+LOWER_BEATS = 16.0
+#: The legs reach out from tucked over the hover's last REACH_BEATS (wingbeats).
+REACH_BEATS = 0.5
 
 
 def touchdown_pose(
@@ -57,6 +65,16 @@ def touchdown_pose(
     with ContactBird(model, bird) as cb:
         cb.place_standing(surface, pitch)
         return float(cb.d.qpos[0]), float(cb.d.qpos[2])
+
+
+def reach_motion(model: str, bird: Bird, end_beats: float, pitch: float) -> LegMotion:
+    """The legs' reach in flight: from tucked to standing length, the hips to put the
+    feet under the centre of mass at ``pitch`` (:meth:`ContactBird.hip_for`), over the
+    last REACH_BEATS before ``end_beats`` (a cosine blend: at rest at both ends)."""
+    with ContactBird(model, bird) as cb:
+        q, hip = cb.muscle.q_stand, cb.hip_for(pitch)
+    dur = REACH_BEATS * TWO_PI
+    return LegMotion(end_beats * TWO_PI - dur, dur, 0.0, q, 0.0, hip)
 
 
 def landing_path(preset: FlightPath, z_hover: float, x_td: float = PERCH_X) -> FlightPath:
@@ -109,10 +127,11 @@ def land(
     *,
     config: SimConfig = SimConfig(),
     progress: Any = None,
+    tuck: LegMotion | None = None,
 ) -> FlightResult:
     """Fly ``preset`` (a path ending at rest on the perch) down to the touchdown and
     stand: the joined log with ``foot_force``, ``on_perch``, ``phase``; figures in
-    ``meta["legs"]``."""
+    ``meta["legs"]``.  ``tuck``: the legs' motion at the path's start (a take-off's)."""
     v_td = touchdown_speed()
     drop = v_td**2 / (2.0 * reduced_bird(bird).gravity)
     pitch_end = math.radians(78.0)
@@ -120,7 +139,10 @@ def land(
     for _ in range(2):  # the touchdown pose depends on the pitch the flight ends at
         x_td, z_td = touchdown_pose(model, bird, pitch_end, surface)
         path = landing_path(preset, z_td + drop, x_td)
-        result = fly(path, table, bird, model, config=replace(config, legs=True), progress=progress)
+        reach = reach_motion(model, bird, path.duration_beats, pitch_end)
+        motion = reach if tuck is None else LegPlan((tuck, reach))
+        cfg = replace(config, legs=True, leg_motion=motion)
+        result = fly(path, table, bird, model, config=cfg, progress=progress)
         a = result.arrays
         t_beats = a["t"] / TWO_PI
         i = len(a["t"]) - 1
@@ -129,9 +151,8 @@ def land(
         pitch_end = float(a["pitch"][i])
     every = max(1, 128 // config.log_per_beat)
     with ContactBird(model, bird, perches=preset.scene) as cb:
-        q = a["qpos"][i].copy()
+        q = a["qpos"][i].copy()  # the legs reached out in flight (reach_motion)
         pitch = float(a["pitch"][i])
-        q[cb.leg_q] = cb.muscle.q_stand
         # the wings stop at this instant's pose of the flown wingbeat (posed: the logged
         # one exactly), then fold back once the feet touch
         params = np.array([a[n][i] for n in result.param_names])
@@ -141,7 +162,7 @@ def land(
         pq = cb._pres_qpos()
         q[pq] = pose[pq]
         cb.hold_qpos = q.copy()
-        q[cb.hip_q] = cb.hip_ref = cb.hip_for(pitch)
+        cb.hip_ref = cb.hip_for(pitch)
         cb.d.qpos[:] = q
         # the wings stop (internal forces: the whole bird keeps its linear momentum), the
         # body's rotation with them
@@ -158,6 +179,7 @@ def land(
             None,
             STAND_BEATS,
             pitch_to=STAND_PITCH,
+            rise_beats=LOWER_BEATS,
             fold=(stopped, REST_WINGS),
             balance=config.attitude == "free",
         )
@@ -171,12 +193,23 @@ def land(
     e = np.hypot(flight["x"] - flight["x_ref"], flight["z"] - flight["z_ref"])
     skip = t_beats[: i + 1] >= 2.0
     meta = dict(result.meta)
-    # at rest against the approach's speed (the preset's first keyframe: cruise)
-    v_app = float(preset.keyframes[0].V or 0.0) or float(np.hypot(a["vx"][0], a["vz"][0]))
-    first = int(np.argmax(rows["on_perch"]))
-    sp = np.linalg.norm(rows["qvel"][:, :3], axis=1)[first:]
+    # at rest against the approach's speed: the path's fastest (the landing preset's
+    # cruise, 0.5; a take-off's flight into a landing, its cruise between the perches)
+    v_app = float(
+        np.max(
+            np.hypot(
+                flight["x_ref"][1:] - flight["x_ref"][:-1],
+                flight["z_ref"][1:] - flight["z_ref"][:-1],
+            )
+            / np.diff(flight["t"])
+        )
+    )
+    # the whole bird's centre of mass, every step from the first contact (the torso's
+    # origin also swings about the hips as they lower the body: 0.002-0.003 omega s)
+    first = int(np.argmax(td.record["foot_normal"] > 0.0))
+    sp = td.record["com_speed"][first:]
     above = np.nonzero(sp >= 0.01 * v_app)[0]
-    per_beat = config.log_per_beat
+    per_beat = STEPS_PER_BEAT
     meta["legs"] = {
         "approach_speed": v_app,
         "rest_beats_vs_approach": (above[-1] + 1 if len(above) else 0) / per_beat,

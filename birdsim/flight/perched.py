@@ -12,8 +12,9 @@ flown by ``fly`` with the legs tucked.
 
 Hand-over (a limitation, documented in docs/legs.md): ``fly`` starts a new MuJoCo
 state from the lift-off state -- its trim moves the start by its probe wingbeat's mean
-error (logged as ``handover_shift``), the legs fold in one step, and the wings start
-beating at the first wingbeat's phase from rest.
+error (logged as ``handover_shift``), and the wings start beating at the first
+wingbeat's phase from rest.  The legs tuck in flight over TUCK_BEATS from their
+lift-off pose (a cosine blend, prescribed like the wings: no step).
 """
 
 from __future__ import annotations
@@ -29,6 +30,7 @@ from birdsim.flight.contact import REST_WINGS, STEPS_PER_BEAT, ContactBird
 from birdsim.flight.controller import Controller, gains_for
 from birdsim.flight.flight_arrays import flight_arrays
 from birdsim.flight.freeflight import FlightResult, fly
+from birdsim.flight.leg_motion import LegMotion
 from birdsim.flight.legwork import PHASES, JumpProfile, jump
 from birdsim.flight.path import FlightPath, PathKeyframe
 from birdsim.flight.path_checks import PERCH_X, PERCH_Y, rest_supports
@@ -46,6 +48,8 @@ PERCH_TOP = np.array([PERCH_X, PERCH_Y, 1.54])
 #: The take-off path rejoins the preset's keyframes from this wingbeat on.
 #: Deceleration of the jump's climb on the path after lift-off, in g.
 CLIMB_DECELERATION = 0.1
+#: The legs tuck over this long after lift-off (wingbeats).
+TUCK_BEATS = 0.5
 
 
 def rest_surface(path: FlightPath, end: int) -> np.ndarray:
@@ -237,6 +241,15 @@ def take_off(
                 unfold=(REST_WINGS, first),
             )
             lo_pos = cb.d.qpos[:3].copy()
+            # the legs tuck in flight from their lift-off pose (prescribed like the wings)
+            tuck = LegMotion(
+                0.0,
+                TUCK_BEATS * TWO_PI,
+                float(np.mean(cb.d.qpos[cb.leg_q])),
+                0.0,
+                float(np.mean(cb.d.qpos[cb.hip_q])),
+                0.0,
+            )
             rows = _contact_rows(jr.record, cb, params0, every)
         path = liftoff_path(preset, lo_pos, jr.liftoff_velocity, red.gravity)
         params1, pitch1 = first_wingbeat(path, table, red)
@@ -247,7 +260,7 @@ def take_off(
     if preset.perch_end:  # at rest at both ends: the flight ends in a touchdown
         if land is None:
             raise ValueError(f"path {preset.name!r} ends at rest: take_off needs land=")
-        result = land(path, table, bird, model, config=config, progress=progress)
+        result = land(path, table, bird, model, config=config, progress=progress, tuck=tuck)
         flight = dict(result.arrays)
         landing = dict(result.meta.get("legs", {}))
     else:
@@ -256,7 +269,7 @@ def take_off(
             table,
             bird,
             model,
-            config=replace(config, legs=True),
+            config=replace(config, legs=True, leg_motion=tuck),
             progress=progress,
             trim=trim,
         )

@@ -39,6 +39,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import mujoco
 import numpy as np
@@ -76,6 +77,8 @@ class SimConfig:
     attitude: str = "posed"
     #: legs and feet in the model (issue 25), tucked and prescribed in flight
     legs: bool = False
+    #: with legs: their prescribed motion (birdsim.flight.leg_motion.LegMotion); None: tucked
+    leg_motion: Any = None
 
     def __post_init__(self) -> None:
         if self.attitude not in ("free", "posed"):
@@ -196,6 +199,8 @@ class FreeBird:
         its centre of mass is that of the body turning at ``omega_body`` (MuJoCo body
         axes; default 0) with the wings moving as prescribed."""
         d, m, part = self.d, self.m, self.part
+        if self.config.leg_motion is not None:
+            self.config.leg_motion.apply(m, prescription, np.array([self.time]))
         d.qpos[:] = prescription.qpos[0]
         d.qvel[:] = prescription.qvel[0]
         if part.free_rotation:
@@ -239,6 +244,9 @@ class FreeBird:
         x fwd / y right / z down, about the centre of mass: the aerodynamic moment with
         the attitude free, the hidden holding moment when posed), external force = aero
         + weight (world), mechanical power of the wing joints)."""
+        if self.config.leg_motion is not None:
+            times = self.time + self.h * np.arange(pres.qpos.shape[0])
+            self.config.leg_motion.apply(self.m, pres, times)
         if fast_loop.step(self, pres, wind, record, every):  # every step compiled (fast_loop)
             return
         m, d, h = self.m, self.d, self.h

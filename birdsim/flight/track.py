@@ -39,6 +39,42 @@ def is_three_d(reference: Any, t_end: float) -> bool:
     return "y" in s and bool(np.any(np.asarray(s["y"]) != 0) or np.any(np.asarray(s["vy"]) != 0))
 
 
+#: A turn is *slow* below this horizontal path speed (semispan omega): there the table's
+#: body pitch is steep (50-60 degrees at 0.2) and the turn is flown in the lowered
+#: posture of :func:`birdsim.flight.turning.turn_pitch`.
+SLOW_TURN_SPEED = 0.3
+#: Wingbeats over which the slow turn's posture is taken before the turn and left after.
+POSTURE_BEATS = 2.0
+#: Wingbeats the posture is held after the last slow turn before it is left (the
+#: u-turn's lateral loop settles the keyhole's exit in it before braking).
+POSTURE_HOLD_BEATS = 6.0
+
+
+def _posture_weight(
+    t: np.ndarray, speed: np.ndarray, turn_rate: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The weight (0..1) of the slow-turn posture on the grid ``t`` with its rate and
+    acceleration: 1 where the path turns (``turn_rate`` not 0) below
+    :data:`SLOW_TURN_SPEED` and for :data:`POSTURE_HOLD_BEATS` after the last such
+    sample, falling to 0 over :data:`POSTURE_BEATS` (the quintic smootherstep of the
+    time, so taken before the turn, left after it, with continuous rate and
+    acceleration)."""
+    slow_turn = (np.abs(turn_rate) > 1e-9) & (speed < SLOW_TURN_SPEED)
+    if not slow_turn.any():
+        zero = np.zeros_like(t)
+        return zero, zero, zero
+    ts = t[slow_turn]
+    i = np.searchsorted(ts, t)
+    before, after = ts[np.clip(i - 1, 0, len(ts) - 1)], ts[np.clip(i, 0, len(ts) - 1)]
+    gap = np.minimum(np.abs(t - before), np.abs(t - after))  # time to the nearest
+    gap = np.where(slow_turn, 0.0, gap)
+    gap = np.where(t > ts[-1], np.maximum(gap - POSTURE_HOLD_BEATS * TWO_PI, 0.0), gap)
+    u = np.clip(1.0 - gap / (POSTURE_BEATS * TWO_PI), 0.0, 1.0)
+    w = u**3 * (10.0 - 15.0 * u + 6.0 * u * u)
+    dw = np.gradient(w, t)
+    return w, dw, np.gradient(dw, t)
+
+
 @dataclass(frozen=True)
 class TrackState:
     """The path at one time in its track frame: ``x`` the distance along the track,
@@ -85,6 +121,15 @@ class TrackFrame:
         along = np.cos(psi) * vx + np.sin(psi) * vy
         arc = np.concatenate([[0.0], np.cumsum(0.5 * (along[1:] + along[:-1]) * np.diff(t))])
         self._arc = float(np.asarray(s["x"])[0]) + arc
+        self._posture = _posture_weight(t, np.hypot(vx, vy), self._psi_rate)
+        #: whether the path has a slow turn (the posture and the attitude loop's settings
+        #: of :mod:`birdsim.flight.turning` for it)
+        self.slow_turn = bool(np.any(self._posture[0] > 0.0))
+
+    def posture(self, t: float) -> tuple[float, float, float]:
+        """The slow turn's posture weight at ``t`` (0 straight, 1 in a slow turn; see
+        :func:`_posture_weight`) with its rate and acceleration (per time unit)."""
+        return tuple(float(np.interp(t, self._t, w)) for w in self._posture)  # type: ignore[return-value]
 
     def heading(self, t: Any) -> np.ndarray:
         """psi(t) (rad, counter-clockwise from x about z up)."""
@@ -165,4 +210,12 @@ class TrackFrame:
         return e_pos, e_vel, v_along, lateral, world
 
 
-__all__ = ["HOLD_SPEED", "TrackFrame", "TrackState", "is_three_d"]
+__all__ = [
+    "HOLD_SPEED",
+    "POSTURE_BEATS",
+    "POSTURE_HOLD_BEATS",
+    "SLOW_TURN_SPEED",
+    "TrackFrame",
+    "TrackState",
+    "is_three_d",
+]

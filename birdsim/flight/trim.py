@@ -9,7 +9,7 @@ from typing import Any
 
 import numpy as np
 
-from birdsim.flight.attitude import euler_zyx
+from birdsim.flight.body_attitude import euler_zyx
 from birdsim.flight.simulate import FreeBird, SimConfig
 
 
@@ -20,10 +20,12 @@ def sample_reference(reference: Any, t: np.ndarray) -> dict[str, np.ndarray]:
     fn = getattr(reference, "sample", None)
     if fn is not None:
         s = fn(t)
-        return {
-            k: np.broadcast_to(np.asarray(s[k], dtype=float), t.shape)
-            for k in ("x", "z", "vx", "vz", "ax", "az")
-        }
+        out = {}
+        for k in ("x", "z", "vx", "vz", "ax", "az"):
+            a = s[k]
+            ok = type(a) is np.ndarray and a.dtype == np.float64 and a.shape == t.shape
+            out[k] = a if ok else np.broadcast_to(np.asarray(a, dtype=float), t.shape)
+        return out
     states = [reference.state(float(ti)) for ti in t]
     return {
         k: np.array([getattr(st, k) for st in states], dtype=float)

@@ -42,7 +42,7 @@ from birdsim.flight.presets import CRUISE_HEIGHT, CRUISE_SPEED
 TWO_PI = 2.0 * math.pi
 #: Slow turning speed (omega s) and radius (semispans): Ros et al. 2011's pigeon turns.
 SLOW_SPEED = 0.2
-SLOW_RADIUS = 3.0
+SLOW_RADIUS = 5.0
 #: Radius of the cruise-speed circle and s-turn (semispans).
 CIRCLE_RADIUS = 25.0
 #: Wingbeats of each turn-rate ramp (slow turns, cruise turns): long enough for the free
@@ -52,7 +52,7 @@ CIRCLE_RADIUS = 25.0
 #: at a 4-wingbeat ramp's roll rate (1.4e-2 x inertia) saturates the differential inputs
 #: and the s-turn's reversal diverged (path RMS 1.12, 4 saturated wingbeats); ramps of
 #: 5 and 6 wingbeats: 0.38 and 0.18, none saturated (docs/turning.md).
-RAMP_BEATS = 3.0
+RAMP_BEATS = 5.0
 CRUISE_RAMP_BEATS = 6.0
 #: Straight flight before the first and after the last turn (wingbeats).
 STRAIGHT_BEATS = 2.0
@@ -113,22 +113,37 @@ def _level(name: str, deltas: list[float], speed: float, radius: float, ramp: fl
 
 #: The u-turn's take-off (0 -> SLOW_SPEED) and braking (the landing preset's last 17
 #: wingbeats, scaled to start at SLOW_SPEED): (wingbeats from the start of the phase, V, z).
-U_TAKE_OFF = ((0.0, 0.0, PERCH_Z), (7.0, SLOW_SPEED, 2.0))
+U_TAKE_OFF = ((0.0, 0.0, PERCH_Z), (9.0, SLOW_SPEED, 2.0))
 U_BRAKING = ((0.0, SLOW_SPEED, 2.0), (5.0, 0.12, 1.8), (10.0, 0.04, 1.7), (16.0, 0.0, PERCH_Z))
 #: Straight flight at slow speed before the keyhole and after it (wingbeats, before the
 #: outbound one is lengthened to bring the bird back to its perch).
 U_STRAIGHT = 1.0
-U_RAMP_BEATS = 1.0
+#: Straight flight at slow speed between the keyhole and the braking (wingbeats): the
+#: lateral loop settles the keyhole's exit in the slow-turn posture (held
+#: ``track.POSTURE_HOLD_BEATS`` after the turn) before the braking pitches the body up to
+#: 80 degrees, where a bank is mostly a rotation about the body's z axis again
+#: (measured: 1 wingbeat -> path RMS 1.17, drifting 5 semispans sideways in the braking;
+#: 5 with the posture held 4 -> 0.44; 7 and 6 -> 0.18; docs/turning.md).
+U_BACK = 7.0
+U_RAMP_BEATS = RAMP_BEATS
 
 
 def _u_turn(theta: float, out_beats: float, perch: bool) -> FlightPath:
     v, r, zt = SLOW_SPEED, SLOW_RADIUS, U_TAKE_OFF[-1][2]
     ks = [_K(t, z, V=s, heading=0.0, regime="take-off" if t == 0 else "") for t, s, z in U_TAKE_OFF]
     t0 = U_TAKE_OFF[-1][0] + out_beats
-    turn = turns_keyframes(t0, [-theta, math.pi + 2 * theta, -theta], v, r, U_RAMP_BEATS, zt)
+    # the side turns at the keyhole's rate, their ramps as long as the angle lets them
+    # (a steady part of 5 % of it), the middle one with the slow turns' ramps
+    # the side turns with the slow turns' ramps: on a wider radius, their steady part 5 %
+    # of the angle (on the keyhole's radius their ramps would be 2.5 wingbeats: path RMS
+    # 0.18 against 0.067)
+    side, r_side = U_RAMP_BEATS, v * 1.05 * U_RAMP_BEATS * TWO_PI / theta
+    turn = turn_keyframes(t0, 0.0, -theta, v, r_side, side, zt)
+    turn += turn_keyframes(turn[-1].t, -theta, math.pi + 2 * theta, v, r, U_RAMP_BEATS, zt)[1:]
+    turn += turn_keyframes(turn[-1].t, math.pi + theta, -theta, v, r_side, side, zt)[1:]
     turn[0] = _K(turn[0].t, zt, V=v, heading=0.0, turn_rate=0.0, regime="keyhole turn")
     ks += turn
-    tb = turn[-1].t + U_STRAIGHT
+    tb = turn[-1].t + U_BACK
     for i, (dt, s, z) in enumerate(U_BRAKING):
         label = ("braking", "", "approach", "perched")[i]
         ks.append(_K(tb + dt, z, V=s, heading=math.pi, regime=label))
@@ -153,7 +168,7 @@ def _solve_u_turn() -> tuple[float, float]:
         s = p.state(p.keyframes[-1].t * TWO_PI)
         return s.x - PERCH_X, s.y
 
-    theta = brentq(lambda th: end(th, U_STRAIGHT)[1], 0.8, 1.3, xtol=1e-15, rtol=1e-15)
+    theta = brentq(lambda th: end(th, U_STRAIGHT)[1], 0.3, 1.3, xtol=1e-15, rtol=1e-15)
     dx = end(theta, U_STRAIGHT)[0]
     out = U_STRAIGHT - dx / (SLOW_SPEED * TWO_PI)
     if out < U_STRAIGHT:  # the take-off covers more ground than the braking: never here

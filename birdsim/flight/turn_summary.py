@@ -23,6 +23,9 @@ TWO_PI = 2.0 * math.pi
 #: A wingbeat is steady when the reference's turn rate is within this fraction of its
 #: largest over it and its neighbours.
 STEADY_FRACTION = 0.02
+#: A wingbeat counts for the heading change when its mean horizontal speed is above this
+#: fraction of the flight's largest.
+MOVING_FRACTION = 0.1
 
 
 def _per_beat(t_beats: np.ndarray, values: np.ndarray, n: int) -> np.ndarray:
@@ -34,7 +37,8 @@ def turn_series(arrays: dict[str, Any]) -> dict[str, np.ndarray] | None:
     """Per whole wingbeat of a flight whose reference leaves the x-z plane (None for a
     straight one or one shorter than two wingbeats), radians: ``psi`` and ``psi_ref``
     (headings of the flown and reference wingbeat-mean horizontal velocity, unwrapped),
-    ``bank`` and ``sideslip`` (wingbeat means), ``coordinated`` (``atan(a_c / g)`` of the
+    ``bank`` and ``sideslip`` (wingbeat means), ``speed`` (the mean horizontal speed),
+    ``coordinated`` (``atan(a_c / g)`` of the
     flown path, right wing down > 0 as ``bank``), ``steady`` (bool) and ``t_beats`` (the
     middle of each wingbeat)."""
     y_ref = np.asarray(arrays.get("y_ref", np.zeros(1)), dtype=float)
@@ -71,6 +75,7 @@ def turn_series(arrays: dict[str, Any]) -> dict[str, np.ndarray] | None:
         "sideslip": slip,
         "coordinated": coordinated,
         "steady": steady,
+        "speed": np.hypot(v[:, 0], v[:, 1]),
     }
 
 
@@ -82,9 +87,13 @@ def turn_figures(arrays: dict[str, Any]) -> dict[str, Any] | None:
         return None
     psi, psi_ref, steady = series["psi"], series["psi_ref"], series["steady"]
     bank, slip, coordinated = series["bank"], series["sideslip"], series["coordinated"]
+    # the heading of a wingbeat at rest (the u-turn's perch) is noise: the change is
+    # taken between the first and last wingbeat moving at a tenth of the top speed
+    moving = np.flatnonzero(series["speed"] > MOVING_FRACTION * series["speed"].max())
+    first, last = (int(moving[0]), int(moving[-1])) if len(moving) else (0, len(psi) - 1)
     out: dict[str, Any] = {
-        "heading_change_deg": math.degrees(psi[-1] - psi[0]),
-        "heading_change_reference_deg": math.degrees(psi_ref[-1] - psi_ref[0]),
+        "heading_change_deg": math.degrees(psi[last] - psi[first]),
+        "heading_change_reference_deg": math.degrees(psi_ref[last] - psi_ref[first]),
         "steady_wingbeats": int(steady.sum()),
         "bank_max_deg": float(np.degrees(np.abs(bank)).max()),
         "sideslip_max_deg": float(np.degrees(np.abs(slip)).max()),

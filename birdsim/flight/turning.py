@@ -54,12 +54,65 @@ FF_LEAD = 0.5
 #: wingbeats: roll 2 -> path RMS diverging after 20 wingbeats, 1.5 -> 0.76, 1.25 ->
 #: 0.47 / 0.195 (with the heading of the path), 1 -> diverging).
 TURN_AXIS_BEATS = (1.25, 3.0, 2.0)
+#: The attitude loop's time constants in a slow turn (a path with a slow turn,
+#: :attr:`birdsim.flight.track.TrackFrame.slow_turn`): the yaw loop slower.  In the
+#: lowered posture (:func:`turn_pitch`) the heading's rotation is mostly about the body's
+#: z axis, whose authority in flight is about a quarter of the held body's Jacobian
+#: (docs/free-body.md); asked at 2 wingbeats the yaw takes the differential inputs the
+#: roll needs.  Measured (slow turn, R = 4 / 4.5 semispans, 4-wingbeat ramps, roll 1.25):
+#: yaw 2 -> path RMS 0.60 / 0.31, 3 -> 0.25 / -, 4 -> 0.19 / 0.16; then roll 1 instead of
+#: 1.25 (R = 5, 5-wingbeat ramps): 0.079 against 0.108 (docs/turning.md).
+SLOW_TURN_AXIS_BEATS = (1.0, 3.0, 4.0)
 #: Plan the body's pitch command along the turn (:class:`birdsim.flight.pitch_plan.PitchPlan`
 #: from the table's pitch for the track's banked-plane force), as straight flight does,
 #: instead of filtering the table's pitch over 3 wingbeats (lagging the turn's entry).
 #: Measured (lateral loop of 5 wingbeats): s-turn path RMS 0.174 against 0.353, circle
 #: 0.095 both, its steady bank's largest miss 4.6 against 5.9 degrees.
 TURN_PITCH_PLAN = True
+
+
+#: The body's pitch in a slow turn (rad, 21 degrees): see :func:`turn_pitch`.
+#: (Measured on the seed bird's slow 90-degree turn, R = 4 semispans, 4-wingbeat ramps,
+#: the attitude loop of the cruise turns: the body's pitch command lowered by 0.65 / 0.8
+#: rad from the table's 58 degrees: heading change 96.5 / 121 degrees, path RMS 0.18 /
+#: 0.56; held at 0.30 / 0.37 / 0.45 rad: 0.27 (saturated) / 0.60 / 1.45; the settings of
+#: SLOW_TURN_AXIS_BEATS then made 0.37 fly; docs/turning.md.)
+SLOW_TURN_PITCH = 0.37
+
+
+def turn_pitch(
+    track: Any, t: float, pitch: tuple[float, float, float]
+) -> tuple[float, float, float]:
+    """The body's pitch command (value, rate, acceleration) in a turn: the planned
+    ``pitch`` lowered towards :data:`SLOW_TURN_PITCH` by the slow turn's posture weight
+    ``w`` (:meth:`birdsim.flight.track.TrackFrame.posture`): ``p - w (p - c)`` where the
+    plan is steeper than ``c``; the stroke plane takes the difference (the wings beat in
+    the world as the table's wingbeat), so the force is the table's.
+
+    Why: at the slow turn's table pitch (55-60 degrees at V = 0.2) a bank about the
+    horizontal heading is mostly a rotation about the body's z axis (``sin(pitch)`` of
+    it), whose inertia is the largest (3.8 against 0.85 in roll, seed bird) and whose
+    authority the smallest: a 48-degree bank over a 3-wingbeat ramp asks about 0.045
+    weight x semispan of yaw moment, the differential flap and twist give a few
+    thousandths; the body rolled about its steep x axis instead, sideslipped by up to 80
+    degrees and left the path.  Lowered, the bank is mostly a roll (``cos(pitch)``)."""
+    w, dw, ddw = track.posture(t)
+    p, dp, ddp = pitch
+    if w <= 0.0 or p <= SLOW_TURN_PITCH:
+        return pitch
+    e = p - SLOW_TURN_PITCH
+    return p - w * e, dp - dw * e - w * dp, ddp - ddw * e - 2.0 * dw * dp - w * ddp
+
+
+def axis_beats(track: Any) -> dict[str, Any]:
+    """The attitude loop's time constants for a flight on ``track`` (None: straight
+    flight, the loop's own), as keyword arguments of ``AttitudeLoop``; a turn keeps the
+    roll and yaw integrals' full bound (its bank and yaw rate leave a bias to trim;
+    straight flight bounds them by ``attitude.LATERAL_INTEGRAL_RAD``)."""
+    if track is None:
+        return {}
+    beats = SLOW_TURN_AXIS_BEATS if track.slow_turn else TURN_AXIS_BEATS
+    return {"beats": beats, "lateral_integral_rad": None}
 
 
 def turn_command(
@@ -104,6 +157,10 @@ __all__ = [
     "BANK_CORRECTION_MAX",
     "FF_LEAD",
     "TURN_AXIS_BEATS",
+    "SLOW_TURN_AXIS_BEATS",
+    "SLOW_TURN_PITCH",
     "TURN_PITCH_PLAN",
+    "axis_beats",
     "turn_command",
+    "turn_pitch",
 ]

@@ -13,7 +13,9 @@ round-off of one ulp in the tail's force (``tests/test_fast_flight.py``).
 leaves it inside ``mj_step1`` (MuJoCo's later stages in ``mj_step1`` do not read it).
 
 :func:`supported` says which callbacks this covers (one element per panel, the seed
-polar, no folding hand); the others keep the Python path.  Axes: MuJoCo world (x
+polar; m5's folding hand included: each hand site's area scaled by
+:func:`birdsim.physics.m5.area_factor` of its wrist-sweep angle, as the callback's
+``fold_area_scale``); the others keep the Python path.  Axes: MuJoCo world (x
 forward, y left, z up); panel axes as the callback's (seed panel x = site x, seed panel
 z = -site z).
 """
@@ -31,21 +33,23 @@ from birdsim.physics.aero import SeedPolar
 from birdsim.physics.jit import numba
 
 #: indices of :func:`parameters`' float array
-RHO, CD0, CD_MAX, CL_MAX, DRAG_AREA, TAIL_B, TAIL_LENGTH = range(7)
+RHO, CD0, CD_MAX, CL_MAX, DRAG_AREA, TAIL_B, TAIL_LENGTH, FOLD_LOSS = range(8)
 #: indices of :func:`parameters`' int array
 ENABLED, BODY_DRAG, TAIL, TORSO_SITE, TORSO_BODY, TAIL_SITE, TAIL_BODY = range(7)
 
 
 def supported(cb: AeroCallback) -> bool:
     """Whether :func:`apply_aero` computes ``cb``'s forces: one element per panel, the
-    seed polar itself (not a subclass), no folding hand."""
-    return (
-        capi.AVAILABLE
-        and cb.single
-        and cb._scalar
-        and type(cb.bird.polar) is SeedPolar
-        and cb.fold_qpos is None
-    )
+    seed polar itself (not a subclass); m5's folding hand included."""
+    return capi.AVAILABLE and cb.single and cb._scalar and type(cb.bird.polar) is SeedPolar
+
+
+def fold_addresses(cb: AeroCallback) -> np.ndarray:
+    """Per site the qpos address of the joint whose angle scales its area (m5's wrist
+    sweep), -1 where none (every site of the other models)."""
+    if cb.fold_qpos is None:
+        return -np.ones(len(cb.site_ids), dtype=np.int64)
+    return np.ascontiguousarray(cb.fold_qpos, dtype=np.int64)
 
 
 def parameters(cb: AeroCallback) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -57,6 +61,7 @@ def parameters(cb: AeroCallback) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     spread = min(max(float(ctl.spread), SPREAD_MIN), 1.0)
     floats = np.array(
         [b.rho, pol.cd0, pol.cd_max, pol.cl_max, b.body_drag_area, b.tail_span * spread, 0.0]
+        + [b.hand_fold_area_loss]
     )
     floats[TAIL_LENGTH] = b.tail_length if cb.tail else 0.0
     tail_site = cb.tail_site if cb.tail else -1
@@ -69,8 +74,9 @@ def parameters(cb: AeroCallback) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 
 def _wings(
-    m, d, passive, site_ids, body_ids, site_xpos, site_xmat, areas, wind, fl, vel, buf, zero
-):
+    m, d, passive, site_ids, body_ids, site_xpos, site_xmat, areas, fold, qpos, wind, fl, vel,
+    buf, zero,
+):  # fmt: skip
     rho, cd0, cd_max, cl_max = fl[RHO], fl[CD0], fl[CD_MAX], fl[CL_MAX]
     w0, w1, w2 = wind[0], wind[1], wind[2]
     for k in range(site_ids.shape[0]):
@@ -84,7 +90,10 @@ def _wings(
         vx2, vz2 = vx * vx, vz * vz
         u2 = vx2 + vz2
         u = math.sqrt(u2)
-        num = 0.5 * rho * areas[k]
+        area = areas[k]
+        if fold[k] >= 0:  # m5's hand: fold.fold_area_scale (m5.area_factor of cos q)
+            area = area * (1.0 - 0.5 * fl[FOLD_LOSS] * (1.0 - math.cos(qpos[fold[k]])))
+        num = 0.5 * rho * area
         inv_u = num / u if u > 0.0 else 0.0
         drag_u2 = cd0 * u2 + cd_max * vz2
         lift2 = 2.0 * cl_max
@@ -156,8 +165,9 @@ def _tail(m, d, passive, site_xpos, site_xmat, wind, fl, ints, fr, vel, buf, zer
 
 
 def _apply_aero(
-    m, d, passive, site_ids, body_ids, site_xpos, site_xmat, areas, wind, fl, ints, frame, tail_out
-):
+    m, d, passive, site_ids, body_ids, site_xpos, site_xmat, areas, fold, qpos, wind, fl, ints,
+    frame, tail_out,
+):  # fmt: skip
     """The callback's forces added to ``passive`` (= d.qfrc_passive) at the current
     kinematics (after ``mj_step1``): wings, body drag, tail, in the callback's order."""
     if ints[ENABLED] == 0:
@@ -165,7 +175,10 @@ def _apply_aero(
     vel = np.zeros(6)
     buf = np.zeros(3)
     zero = np.zeros(3)
-    _wings(m, d, passive, site_ids, body_ids, site_xpos, site_xmat, areas, wind, fl, vel, buf, zero)
+    _wings(
+        m, d, passive, site_ids, body_ids, site_xpos, site_xmat, areas, fold, qpos, wind, fl,
+        vel, buf, zero,
+    )  # fmt: skip
     if ints[BODY_DRAG] != 0:
         _body_drag(m, d, passive, site_xpos, site_xmat, wind, fl, ints, vel, buf, zero)
     if ints[TAIL] != 0:
@@ -182,4 +195,4 @@ if numba is not None and capi.AVAILABLE:
 else:  # pragma: no cover
     apply_aero = None
 
-__all__ = ["apply_aero", "parameters", "supported"]
+__all__ = ["apply_aero", "fold_addresses", "parameters", "supported"]

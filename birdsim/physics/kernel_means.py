@@ -89,13 +89,17 @@ def _means_rate_kernel(
     """The means of :func:`_means_kernel` with a body rate (B x 3) when ``rotating``."""
     J, N, K = amp.shape[1], phases.shape[0], kind.shape[0]
     ct, stt = np.cos(phases), np.sin(phases)
+    cq = np.empty(J)
+    sq = np.empty(J)
+    cph, sph = np.empty(J), np.empty(J)
+    qv = np.empty(J)
+    qd = np.empty(J)
+    fxs, fys, fzs = np.empty(K), np.empty(K), np.empty(K)
+    ps = np.empty(K)
+    TQ, TD, TC, TS = np.empty((N, J)), np.empty((N, J)), np.empty((N, J)), np.empty((N, J))
     for b in range(lo, hi):
-        cph = np.cos(phase[b])
-        sph = np.sin(phase[b])
-        cq = np.empty(J)
-        sq = np.empty(J)
-        qv = np.empty(J)
-        qd = np.empty(J)
+        for j in range(J):
+            cph[j], sph[j] = math.cos(phase[b, j]), math.sin(phase[b, j])
         cp, sp = math.cos(pitch[b]), math.sin(pitch[b])
         # the body relative to the air, body axes: ((V, 0, -climb) - w_air) by the pitch
         rx, ry, rz = speed[b] - air_earth[b, 0], -air_earth[b, 1], -climb[b] - air_earth[b, 2]
@@ -104,14 +108,31 @@ def _means_rate_kernel(
             if const[j]:
                 qv[j], qd[j] = bias[b, j], 0.0
                 cq[j], sq[j] = math.cos(bias[b, j]), math.sin(bias[b, j])
-        fxs, fys, fzs = np.zeros(K), np.zeros(K), np.zeros(K)
-        ps = np.zeros(K)
+        for k in range(K):
+            fxs[k], fys[k], fzs[k], ps[k] = 0.0, 0.0, 0.0, 0.0
         j0, j1 = 0.0, 0.0
         # joint states at every sample; a joint without bias is odd over half a period
         # (q(t + pi) = -q(t)), so on an even periodic grid its second half is free
-        TQ, TD, TC, TS = np.empty((N, J)), np.empty((N, J)), np.empty((N, J)), np.empty((N, J))
         for j in range(J):
             if const[j]:
+                continue
+            # a joint that moves as an earlier one, mirrored (m5's wrist sweep is the
+            # elbow's -1 times at coupling 1): the same states negated, bit for bit (the
+            # rounding of a * s + b is symmetric; libm's cos is even, sin odd)
+            mirror = -1
+            for i in range(j):
+                if (
+                    not const[i]
+                    and phase[b, i] == phase[b, j]
+                    and amp[b, i] == -amp[b, j]
+                    and bias[b, i] == -bias[b, j]
+                ):
+                    mirror = i
+                    break
+            if mirror >= 0:
+                for t in range(N):
+                    TQ[t, j], TD[t, j] = -TQ[t, mirror], -TD[t, mirror]
+                    TC[t, j], TS[t, j] = TC[t, mirror], -TS[t, mirror]
                 continue
             odd = half > 0 and bias[b, j] == 0.0
             for t in range(half if odd else N):
@@ -136,6 +157,7 @@ def _means_rate_kernel(
                     px, py, pz = 0.0, radius[k, e], 0.0
                     sx, sy, sz = 0.0, 0.0, 0.0  # shoulder group
                     wx, wy, wz = 0.0, 0.0, 0.0  # wrist group
+                    s_on, w_on = False, False  # a zero vector is not rotated
                     for i in range(L - 1, -1, -1):
                         kd = kind[k, i]
                         if kd == 0:
@@ -157,8 +179,10 @@ def _means_rate_kernel(
                         else:
                             c, s = cq[j], -sq[j]
                             px, py, pz = _rot(a, c, s, px, py, pz)
-                            sx, sy, sz = _rot(a, c, s, sx, sy, sz)
-                            wx, wy, wz = _rot(a, c, s, wx, wy, wz)
+                            if s_on:
+                                sx, sy, sz = _rot(a, c, s, sx, sy, sz)
+                            if w_on:
+                                wx, wy, wz = _rot(a, c, s, wx, wy, wz)
                             w = qd[j]
                             if a == 0:
                                 dx, dy, dz = 0.0, -w * pz, w * py
@@ -168,8 +192,10 @@ def _means_rate_kernel(
                                 dx, dy, dz = -w * py, w * px, 0.0
                         if group[k, i] == 0:
                             sx, sy, sz = sx + dx, sy + dy, sz + dz
+                            s_on = True
                         else:
                             wx, wy, wz = wx + dx, wy + dy, wz + dz
+                            w_on = True
                     fx_, fy_, fz_ = sx + wx, sy + wy, sz + wz  # flapping velocity
                     vx, vy, vz = ax + fx_, ay + fy_, az + fz_
                     if rotating:  # omega x r, r from the torso origin

@@ -53,12 +53,29 @@ def scales(bird: Bird) -> Scales:
     )
 
 
+#: the last reduced birds, by the identity of their (frozen) bird: a free flight's
+#: controller reduces the same bird at every control update
+_REDUCED: dict[int, tuple[Bird, Bird]] = {}
+
+
 def reduced_bird(bird: Bird) -> Bird:
     """The non-dimensional bird whose table serves ``bird`` (rho = omega = s = c = 1).
 
     Mass and gravity are reduced too (mass ratio, and gravity in s omega^2) so that the
-    reduced bird flies exactly like the original in reduced units.
+    reduced bird flies exactly like the original in reduced units.  Made once per bird
+    object (a frozen dataclass) and kept: the same numbers.
     """
+    hit = _REDUCED.get(id(bird))
+    if hit is not None and hit[0] is bird:
+        return hit[1]
+    red = _reduce(bird)
+    if len(_REDUCED) > 64:
+        _REDUCED.clear()
+    _REDUCED[id(bird)] = (bird, red)
+    return red
+
+
+def _reduce(bird: Bird) -> Bird:
     s, c = bird.semispan, bird.chord
     return replace(
         bird,

@@ -10,7 +10,12 @@ from pathlib import Path
 from birdsim.errors import BirdConfigError
 from birdsim.physics.aero import POLARS, polar_from_dict
 from birdsim.physics.bird import Bird
-from birdsim.validation.measurements import PERCH_KEYS, Measurement, load_measurements
+from birdsim.validation.measurements import (
+    PERCH_KEYS,
+    TURNING_KEYS,
+    Measurement,
+    load_measurements,
+)
 from birdsim.validation.scorecard import Row, score, sweep_speeds
 from birdsim.validation.tablecheck import find_table, level_flight_from_table
 from birdsim.validation.trim import TrimSweep, trim_sweep
@@ -132,6 +137,12 @@ def validate(
         from birdsim.validation.perching import perch_values
 
         flights.update(perch_values(bird))
+    turning_flight = None
+    if any(m.compare in TURNING_KEYS for m in ms):  # issue 23: the slow 90-degree turn
+        from birdsim.validation.turning import turn_values
+
+        values, turning_flight = turn_values(bird)
+        flights.update(values)
     rows, vsweeps = score(ms, sweep, bird, variants=variants, turning=flights)
     mp = sweep.min_power()
     rng = sweep.trim_range()
@@ -158,6 +169,7 @@ def validate(
         "trim_range": None if rng is None else list(rng),
         "hover": hover,
         "variants": {k: [p.to_dict() for p in v.points] for k, v in vsweeps.items()},
+        "turning_flight": turning_flight,
         "seconds": time.perf_counter() - t0,
     }
     return Validation(obj, rows, sweep, vsweeps)
@@ -184,6 +196,8 @@ def scorecard_text(v: Validation) -> str:
         f"trimmed {'none' if rng is None else f'{rng[0]:g}-{rng[1]:g} m/s'}; hover {'trims' if v.obj['hover'] else 'does not trim'}; "
         f"table {v.obj['table'] or 'none'}; {v.obj['seconds']:.1f} s"
     )
+    if v.obj.get("turning_flight"):
+        lines.append(f"turning rows from {v.obj['turning_flight']}")
     return "\n".join(lines)
 
 
