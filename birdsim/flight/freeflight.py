@@ -123,7 +123,7 @@ def fly(
         red,
         gains,
         open_loop=open_loop or demands_only,
-        to_table=to_table or _identity_if(demands_only),
+        to_table=to_table or ((lambda *a, **k: (0.0, 0.0)) if demands_only else None),
     )
     names = ctl.names
     per_beat_ctl = config.control_per_beat
@@ -384,10 +384,6 @@ def fly(
     result.meta["attitude"] = config.attitude
     result.meta["attitude_loop"] = bool(free and attitude_loop)
     return result
-
-
-def _identity_if(flag: bool) -> Any:
-    return (lambda *a, **k: (0.0, 0.0)) if flag else None
 
 
 __all__ = [
