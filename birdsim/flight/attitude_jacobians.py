@@ -208,6 +208,20 @@ def measured_rate_derivatives(
     per rad per time unit) and its cross terms (dMx/dr +0.31: the outer wing's faster
     air) act at once on the body: the attitude loop cancels them
     (:meth:`AttitudeLoop.update`)."""
+    base = np.zeros(3) if omega_body is None else np.asarray(omega_body, dtype=float)
+    states = [base] + [base + RATE_STEP * np.eye(3)[i] for i in range(3)]
+    out = held_mean_moments(fb, params, pitch, speed, states)
+    return np.stack([(o - out[0]) / RATE_STEP for o in out[1:]], axis=1)
+
+
+def held_mean_moments(
+    fb, params: np.ndarray, pitch: float, speed: float, omegas: list[np.ndarray]
+) -> list[np.ndarray]:
+    """The wingbeat-mean moment (3,) (seed body axes, about the centre of mass) of the
+    held body (pitch ``pitch``, airspeed ``speed``) beating ``params`` with every input at
+    zero, over :data:`JAC_SAMPLES` phases, once per body rate in ``omegas`` (seed body
+    axes): the measurement :func:`measured_rate_derivatives` and
+    :mod:`birdsim.flight.attitude_stiffness` share."""
     m, cb, sched = fb.m, fb.cb, fb.schedule
     d = getattr(fb, "_jac_data", None)
     if d is None:
@@ -227,8 +241,6 @@ def measured_rate_derivatives(
         shoulder=(sw, np.zeros_like(sw), np.zeros_like(sw)),
     )
     c = np.array([1.0, -1.0, -1.0])  # seed <-> MuJoCo axes
-    base = np.zeros(3) if omega_body is None else np.asarray(omega_body, dtype=float)
-    states = [base] + [base + RATE_STEP * np.eye(3)[i] for i in range(3)]
     wind = m.opt.wind.copy()
     saved = cb.tail_controls
     m.opt.wind[:] = 0.0
@@ -236,7 +248,7 @@ def measured_rate_derivatives(
     quat = pitch_quat(pitch)
     out = []
     try:
-        for omega in states:
+        for omega in omegas:
             acc = np.zeros(3)
             for k in range(n):
                 _hold(m, d, pres.qpos[k], pres.qvel[k], quat, speed, omega * c)
@@ -245,7 +257,7 @@ def measured_rate_derivatives(
     finally:
         m.opt.wind[:] = wind
         cb.tail_controls = saved
-    return np.stack([(o - out[0]) / RATE_STEP for o in out[1:]], axis=1)
+    return out
 
 
 def _unit(i: int) -> np.ndarray:

@@ -10,51 +10,15 @@ gains count it as part of the plant (:func:`birdsim.flight.attitude.damped_gains
 
 from __future__ import annotations
 
-import mujoco
 import numpy as np
 
-from birdsim.flight.attitude_jacobians import INPUTS, JAC_SAMPLES, JAC_STEP, _hold, split_inputs
-from birdsim.mujoco.model import pitch_quat
+from birdsim.flight.attitude_jacobians import JAC_STEP, held_mean_moments
 
 
 def _mean_moment(fb, params: np.ndarray, pitch: float, speed: float) -> np.ndarray:
-    """The wingbeat-mean moment (3,) of the held body (pitch ``pitch``, airspeed
-    ``speed``, not rotating) beating ``params`` with every input at zero, over
-    :data:`JAC_SAMPLES` phases, as :func:`birdsim.flight.attitude_jacobians.measured_jacobian`
-    measures its ``M_0``."""
-    m, cb, sched = fb.m, fb.cb, fb.schedule
-    d = getattr(fb, "_jac_data", None)
-    if d is None:
-        d = fb._jac_data = mujoco.MjData(m)
-    n = JAC_SAMPLES
-    times = np.arange(n) * (fb.red.period / n)
-    names = sched.names
-    right, left, sh, tail = split_inputs(names, params, np.zeros(len(INPUTS)))
-    z = np.zeros((n, len(names)))
-    sw = np.repeat([np.concatenate([sh, sh])], n, axis=0)
-    pres = sched.prescribe(
-        times,
-        np.repeat([right], n, axis=0),
-        z,
-        z,
-        left=(np.repeat([left], n, axis=0), z, z),
-        shoulder=(sw, np.zeros_like(sw), np.zeros_like(sw)),
-    )
-    c = np.array([1.0, -1.0, -1.0])  # seed <-> MuJoCo axes
-    wind = m.opt.wind.copy()
-    saved = cb.tail_controls
-    m.opt.wind[:] = 0.0
-    cb.tail_controls = tail
-    quat = pitch_quat(pitch)
-    acc = np.zeros(3)
-    try:
-        for k in range(n):
-            _hold(m, d, pres.qpos[k], pres.qvel[k], quat, speed, np.zeros(3))
-            acc += d.qfrc_passive[3:6]
-    finally:
-        m.opt.wind[:] = wind
-        cb.tail_controls = saved
-    return acc / n * c
+    """The wingbeat-mean moment (3,) of the held body, not rotating, as
+    :func:`birdsim.flight.attitude_jacobians.measured_jacobian` measures its ``M_0``."""
+    return held_mean_moments(fb, params, pitch, speed, [np.zeros(3)])[0]
 
 
 def measured_pitch_stiffness(
