@@ -30,7 +30,7 @@ ONE_BIRD_DISTANCE = 4.5
 #: The vertical field of view of the page's camera [degrees] (web/src/viewer.js).
 FOVY_DEG = 45.0
 #: The fraction of the view's height the flock's diameter (plus a wingspan) takes.
-FLOCK_FRACTION = 0.8
+FLOCK_FRACTION = 1.0
 
 
 def camera_distance(radius: float) -> float:
