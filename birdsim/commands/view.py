@@ -130,7 +130,7 @@ def _view_flock(args: argparse.Namespace, out: Path, fps: float) -> int:
     if len(page) > MAX_FLOCK_VIEW_BYTES:
         raise BirdsimError(
             f"the flock's view would be {len(page) / 1e6:.1f} MB; allowed: at most "
-            f"{MAX_FLOCK_VIEW_BYTES / 1e6:g} MB (lower --fps)"
+            f"{MAX_FLOCK_VIEW_BYTES / 1e6:g} MB (lower --fps, or a shorter log)"
         )
     check_output(out, args.force, "--out")
     write_atomic(out, page)
