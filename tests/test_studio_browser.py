@@ -272,3 +272,42 @@ def test_the_view_plays_with_the_network_blocked(server, browser, tmp_path):
         page.close()
     assert requested == []  # the page asked for nothing
     assert _errors(messages) == []
+
+
+def test_the_view_of_a_flock_frames_every_bird(browser, tmp_path):
+    """birdsim view of a two-bird flock's log (2 semispans apart): both birds are drawn
+    (a torso body per bird), the cameras aim at the flock's centre, and every torso is
+    inside the canvas for every camera but the overview, at three instants."""
+    from birdsim.cli import main
+
+    src = tmp_path / "f.toml"
+    src.write_text('path = "cruise"\n[[bird]]\noffset = [0, 0, 0]\n[[bird]]\noffset = [0, 2, 0]\n')
+    log = tmp_path / "flock.npz"
+    assert main(["fly", str(src), "--quiet", "--seconds", "2", "--out", str(log)]) == 0
+    out = tmp_path / "flock.html"
+    assert main(["view", str(log), "--out", str(out)]) == 0
+    page = browser.new_page()
+    messages: list[str] = []
+    page.on("pageerror", lambda e: messages.append(f"pageerror: {e}"))
+    page.on("console", lambda m: messages.append(f"{m.type}: {m.text}"))
+    try:
+        page.goto(out.as_uri())
+        page.wait_for_function("window.birdsimViewer && window.birdsimViewer.ready", timeout=30_000)
+        v = "window.birdsimViewer"
+        torsos = f"Object.values({v}.bodies).filter((b) => b.group.name.endsWith('torso')).map((b) => b.group)"
+        assert page.evaluate(f"{torsos}.length") == 2
+        for cam in ("follow", "side", "chase", "top"):
+            for frac in (0.0, 0.5, 1.0):
+                got = page.evaluate(
+                    f"(() => {{ const v = {v}; v.setCamera('{cam}'); v.seek(v.duration * {frac});"
+                    f" const ts = {torsos}; const c = ts[0].position.clone().add(ts[1].position).multiplyScalar(0.5);"
+                    f" return {{ target: v.orbit.target.distanceTo(c),"
+                    f" px: ts.map((g) => v.project([g.position.x, g.position.y, g.position.z])) }}; }})()"
+                )
+                # the centre of the logged tracks vs the replayed torsos: 4 decimals, interpolation
+                assert got["target"] < 0.01, (cam, frac, got)
+                for p in got["px"]:
+                    assert 0 < p["x"] < 800 and 0 < p["y"] < 500, (cam, frac, got)
+    finally:
+        page.close()
+    assert _errors(messages) == []

@@ -3,8 +3,9 @@ inlined; it works with the network off): the dressed bird in 3-D with orbit, zoo
 pan, a timeline (play, pause, scrub, playback speed), camera presets and plots linked to
 the timeline (docs/studio.md).
 
-SOURCE is a flight log .npz (``birdsim fly --out``) or a preset / manoeuvre .toml, flown
-first exactly as ``birdsim fly`` flies it. Playback at 1x is real time for an SI bird
+SOURCE is a flight log .npz (``birdsim fly --out``; a flock's log draws every bird, the
+cameras framing the flock) or a preset / manoeuvre .toml, flown first exactly as
+``birdsim fly`` flies it. Playback at 1x is real time for an SI bird
 (the pigeon) and 2 wingbeats per second for the non-dimensional seed bird."""
 
 from __future__ import annotations
@@ -25,7 +26,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "source",
         metavar="SOURCE",
-        help="a flight log .npz, a preset (hover, cruise, take-off, landing) or a manoeuvre .toml",
+        help="a flight log .npz (one bird or a flock), a preset (hover, cruise, take-off, landing) or a manoeuvre .toml",
     )
     p.add_argument("--out", required=True, metavar="FILE.html", help="the page to write")
     p.add_argument(
@@ -81,6 +82,10 @@ def run(args: argparse.Namespace) -> int:
                 raise BirdsimError(
                     f"{flag} does not apply to a flight log; allowed: a preset or manoeuvre file with it"
                 )
+        from birdsim.flight.flock_log import is_flock_log
+
+        if is_flock_log(args.source):
+            return _view_flock(args, out, fps)
         log = load_log(args.source, "SOURCE")
         how = "from the log"
     else:
@@ -107,5 +112,31 @@ def run(args: argparse.Namespace) -> int:
     print(
         f"wrote {out} ({len(page) / 1e6:.2f} MB, {len(scene['t'])} frames over "
         f"{scene['duration']:.3g} {scene['units']['time']}, {how}; playback 1x = {tb['label']})"
+    )
+    return 0
+
+
+def _view_flock(args: argparse.Namespace, out: Path, fps: float) -> int:
+    """A flock's log: every bird drawn (birdsim.studio.flock_view)."""
+    from birdsim.flight.flock_log import load_flock_log
+    from birdsim.io import check_output, write_atomic
+    from birdsim.studio.flock_view import MAX_FLOCK_VIEW_BYTES, flock_scene
+    from birdsim.studio.page import view_html
+    from birdsim.studio.scene import ViewOptions
+
+    data, birds = load_flock_log(args.source, "SOURCE")
+    scene = flock_scene(birds, ViewOptions(fps=fps), title=Path(args.source).stem)
+    page = view_html(scene).encode("utf-8")
+    if len(page) > MAX_FLOCK_VIEW_BYTES:
+        raise BirdsimError(
+            f"the flock's view would be {len(page) / 1e6:.1f} MB; allowed: at most "
+            f"{MAX_FLOCK_VIEW_BYTES / 1e6:g} MB (lower --fps, or a shorter log)"
+        )
+    check_output(out, args.force, "--out")
+    write_atomic(out, page)
+    tb = scene["time_base"]
+    print(
+        f"wrote {out} ({len(page) / 1e6:.2f} MB, {len(birds)} birds, {len(scene['t'])} frames over "
+        f"{scene['duration']:.3g} {scene['units']['time']}, from the flock's log; playback 1x = {tb['label']})"
     )
     return 0

@@ -149,7 +149,11 @@ export function poseBodies(bodies, f, w) {
 
 // The torso's position from the log's own track at time index f + w (scene units).
 export function trackPosition(data, f, w, out) {
-  const p = data.track.pos;
+  return pointAt(data.track.pos, f, w, out);
+}
+
+// A point of a per-frame list of points (flat x, y, z) at time index f + w.
+export function pointAt(p, f, w, out) {
   const n = p.length / 3;
   const i = Math.min(f, n - 1);
   const j = Math.min(f + 1, n - 1);

@@ -6,7 +6,7 @@ import * as THREE from "three";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
 import "uplot/dist/uPlot.min.css";
 import "./viewer.css";
-import { buildBodies, buildPaths, buildWorld, poseBodies, trackPosition } from "./bird3d.js";
+import { buildBodies, buildPaths, buildWorld, pointAt, poseBodies, trackPosition } from "./bird3d.js";
 import { buildPlots } from "./plots.js";
 
 export const CAMERAS = ["follow", "side", "chase", "top", "overview"];
@@ -103,12 +103,20 @@ export class Viewer {
     return trackPosition(this.data, f, w, out);
   }
 
+  // What the cameras aim at: the bird, or a flock's centre (scene.flock, birdsim view).
+  aimAt(t, out = new THREE.Vector3()) {
+    if (!this.data.flock) return this.birdAt(t, out);
+    const [f, w] = this._index(t);
+    return pointAt(this.data.flock.centre, f, w, out);
+  }
+
   setCamera(name) {
     if (!CAMERAS.includes(name)) throw new Error(`camera ${name} is unknown; allowed: ${CAMERAS.join(", ")}`);
     this.cameraName = name;
     if (this.cameraSelect) this.cameraSelect.value = name;
-    const b = this.birdAt(this.time);
-    const D = 4.5;
+    const b = this.aimAt(this.time);
+    const flock = this.data.flock;
+    const D = flock ? flock.camera_distance : 4.5; // a flock: its diameter fills the view
     const offsets = {
       follow: [-0.45 * D, -D, 0.3 * D],
       side: [0, -D, 0.05 * D],
@@ -116,7 +124,8 @@ export class Viewer {
       top: [0, -0.01, 1.3 * D],
     };
     if (name === "overview") {
-      const box = new THREE.Box3().setFromArray(this.data.track.pos);
+      const box = new THREE.Box3().setFromArray(flock ? flock.centre : this.data.track.pos);
+      if (flock) box.expandByScalar(flock.radius);
       box.expandByPoint(new THREE.Vector3(box.min.x, box.min.y, 0));
       const c = box.getCenter(new THREE.Vector3());
       const r = Math.max(4, box.getSize(new THREE.Vector3()).length() / 2);
@@ -133,7 +142,7 @@ export class Viewer {
 
   _follow() {
     if (this.cameraName === "overview") return;
-    const b = this.birdAt(this.time, this._bird);
+    const b = this.aimAt(this.time, this._bird);
     const offset = this.camera.position.clone().sub(this.orbit.target);
     this.orbit.target.copy(b);
     this.camera.position.copy(b).add(offset);
