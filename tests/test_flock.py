@@ -143,7 +143,7 @@ def test_a_bird_file_that_does_not_parse_is_named_with_its_index(tmp_path, capsy
 def test_render_and_export_take_a_flock_log_with_every_bird(tmp_path, capsys):
     """A two-bird flock's log: `render --still` draws both birds (the still differs from
     the leader's alone); `export --format bvh` writes one file per bird whose root
-    positions are each bird's own; `view` refuses it in one line."""
+    positions are each bird's own; `view` draws it too (tests/test_view_flock.py)."""
     from birdsim.flight.flock_log import load_flock_log
 
     src = _flock(tmp_path, [(0.0, 0.0, 0.0), (0.0, 2.0, 0.0)])

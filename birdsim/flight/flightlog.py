@@ -197,7 +197,7 @@ def load_log(path: str | Path, arg: str = "LOG") -> dict[str, Any]:
         )
     if "n_birds" in data:  # a flock's log (birdsim.flight.flock_fly): per-bird arrays
         raise LogError(
-            f"{arg} {str(p)!r} is a flock's log ({int(data['n_birds'])} birds); allowed: a one-bird flight log (view and the studio do not take a flock yet; birdsim render and export do)"
+            f"{arg} {str(p)!r} is a flock's log ({int(data['n_birds'])} birds); allowed: a one-bird flight log (the studio does not take a flock yet; birdsim render, export and view do)"
         )
     missing = [k for k in REQUIRED if k not in data]
     if missing:
