@@ -14,7 +14,7 @@ from contextlib import contextmanager
 from pathlib import Path
 
 from birdsim.errors import BirdsimError
-from birdsim.physics.bird import Bird
+from birdsim.physics.bird import Bird, BirdConfigError
 
 
 def parse_pairs(pairs: list[str] | None, arg: str) -> dict[str, str]:
@@ -101,12 +101,26 @@ def flag_names(starts: Mapping[str, str], hints: Mapping[str, str] | None = None
         raise
 
 
+def bird_file(arg: str) -> str:
+    """``--bird``'s file: the path as given, or a shipped bird's name (``pigeon``,
+    ``seed-bird``: ``models/<name>.toml``) when no such path exists."""
+    folder = Path(__file__).resolve().parents[2] / "models"
+    if Path(arg).exists() or "/" in arg or arg.endswith(".toml"):
+        return arg
+    if (folder / f"{arg}.toml").is_file():
+        return str(folder / f"{arg}.toml")
+    names = ", ".join(sorted(f.stem for f in folder.glob("*.toml")))
+    raise BirdConfigError(
+        f"path={arg!r} does not exist; allowed: a readable TOML file or a shipped bird ({names})"
+    )
+
+
 def bird_from_args(args: argparse.Namespace, default: Bird | None = None) -> Bird:
     """The bird of ``--bird FILE.toml`` (else ``default``, else the seed bird) with
     ``--set`` applied; a bad file or value is one line naming ``--bird`` or ``--set``."""
     with flag_names({"path=": "--bird "}):
         if getattr(args, "bird", None) is not None:
-            bird = Bird.from_toml(args.bird)
+            bird = Bird.from_toml(bird_file(args.bird))
         else:
             bird = Bird() if default is None else default
     overrides = parse_pairs(getattr(args, "set", None), "--set")
@@ -214,7 +228,7 @@ def load_bird(arg: str | None) -> Bird:
     ``models/seed-bird.toml``."""
     if arg:
         with flag_names({"path=": "--bird "}):
-            return Bird.from_toml(arg)
+            return Bird.from_toml(bird_file(arg))
     path = default_bird_path()
     return Bird.from_toml(path) if path.is_file() else Bird()
 

@@ -50,7 +50,11 @@ def register(sub: argparse._SubParsersAction) -> None:
         default=DEFAULT_MODEL,
         help=f"kinematic model: base, m1, m2, m3 or m4 (default {DEFAULT_MODEL})",
     )
-    p.add_argument("--bird", metavar="FILE.toml", help="the bird (default models/seed-bird.toml)")
+    p.add_argument(
+        "--bird",
+        metavar="FILE.toml",
+        help="the bird: a TOML file or a shipped bird's name (pigeon, seed-bird; default seed-bird)",
+    )
     p.add_argument(
         "--table",
         metavar="FILE",
