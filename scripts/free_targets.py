@@ -57,7 +57,9 @@ def main() -> None:
     args = ap.parse_args()
     bird = Bird.from_toml(args.bird) if args.bird else demo_bird()
     if args.gusts:
-        v = 0.5  # the seed bird's cruise speed (reduced units)
+        # the presets' cruise speed, 0.5 omega s, in the bird's velocity units (the gusts'
+        # units: the seed bird's are reduced, the pigeon's m/s)
+        v = 0.5 * bird.semispan * 2.0 * math.pi / bird.period
         for frac in (0.3, 1.0):
             for wind in ((0, v, 0), (0, 0, v), (v, 0, 0), (-v, 0, 0), (0, -v, 0), (0, 0, -v)):
                 w = tuple(frac * c for c in wind)
