@@ -135,6 +135,20 @@ def slug(text: str) -> str:
     return re.sub(r"[^A-Za-z0-9_.-]+", "_", text).strip("_") or "manoeuvre"
 
 
+def check_clip_outputs(args: argparse.Namespace, out: Path, at: float | None) -> None:
+    """``render``'s outputs checked before any work: the video ``out`` (a .mp4 path, not
+    overwritten without ``--force``) unless a still is asked (``at``), and ``--sheet`` (a
+    .png path); each refusal one line."""
+    if at is None:
+        if out.suffix.lower() != ".mp4":
+            raise BirdsimError(f"--out {str(out)!r} does not end in .mp4; allowed: a .mp4 path")
+        check_writable(out, args.force)
+    if args.sheet:
+        if Path(args.sheet).suffix.lower() != ".png":
+            raise BirdsimError(f"--sheet {args.sheet!r} does not end in .png; allowed: a .png path")
+        check_writable(Path(args.sheet), args.force, "--sheet")
+
+
 def check_still(args: argparse.Namespace, clip_beats: float) -> float | None:
     """``--still``/``--at``/``--sheet`` checked before any work; the still's time in
     wingbeats (None when no still is asked for)."""

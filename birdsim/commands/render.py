@@ -9,8 +9,8 @@ from pathlib import Path
 from birdsim.commands.common import (
     add_bird_arguments,
     bird_from_args,
+    check_clip_outputs,
     check_still,
-    check_writable,
     load_model_table,
     require_bird,
     slug,
@@ -226,17 +226,8 @@ def run(args: argparse.Namespace) -> int:
     options = _options(args)
     seconds = options.duration(manoeuvre)  # a manoeuvre longer than the longest video -> one line
     at = check_still(args, seconds * options.beats_per_second)
-    if at is None:
-        out = (
-            Path(args.out) if args.out else Path("renders") / f"{slug(manoeuvre.name)}-{model}.mp4"
-        )
-        if out.suffix.lower() != ".mp4":
-            raise BirdsimError(f"--out {str(out)!r} does not end in .mp4; allowed: a .mp4 path")
-        check_writable(out, args.force)
-    if args.sheet:
-        if Path(args.sheet).suffix.lower() != ".png":
-            raise BirdsimError(f"--sheet {args.sheet!r} does not end in .png; allowed: a .png path")
-        check_writable(Path(args.sheet), args.force, "--sheet")
+    out = Path(args.out) if args.out else Path("renders") / f"{slug(manoeuvre.name)}-{model}.mp4"
+    check_clip_outputs(args, out, at)
     resolve_gl(args.gl)  # a missing GL library -> one line, before any work
     from birdsim.tables.shipped import table_folder
 

@@ -13,8 +13,8 @@ import numpy as np
 
 from birdsim.commands.common import (
     bird_from_args,
+    check_clip_outputs,
     check_still,
-    check_writable,
     load_bird,
     load_table_for,
     slug,
@@ -232,14 +232,7 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
     # the bird and the table before any output is checked (checking makes its folder)
     bird_and_table = flight_bird_and_table(args, model) if reference is not None else None
     out = Path(args.out) if args.out else default_out
-    if at is None:
-        if out.suffix.lower() != ".mp4":
-            raise BirdsimError(f"--out {str(out)!r} does not end in .mp4; allowed: a .mp4 path")
-        check_writable(out, args.force)
-    if args.sheet:
-        if Path(args.sheet).suffix.lower() != ".png":
-            raise BirdsimError(f"--sheet {args.sheet!r} does not end in .png; allowed: a .png path")
-        check_writable(Path(args.sheet), args.force, "--sheet")
+    check_clip_outputs(args, out, at)
     if reference is not None:
         beats = (
             reference.duration_beats

@@ -15,7 +15,7 @@ from birdsim.errors import BirdsimError
 
 def run_flock_log(args: argparse.Namespace, options) -> int:
     """Render the flock log ``args.manoeuvre`` (video, or a still with ``--still``)."""
-    from birdsim.commands.common import check_still, check_writable, slug
+    from birdsim.commands.common import check_clip_outputs, check_still, slug
     from birdsim.flight.flock_log import load_flock_log
     from birdsim.render.flock_scene import FlockScene, flock_states, scene_factory
     from birdsim.render.gl import select_gl
@@ -37,14 +37,7 @@ def run_flock_log(args: argparse.Namespace, options) -> int:
     at = check_still(args, beats)
     select_gl(args.gl)
     out = Path(args.out) if args.out else Path("renders") / f"{slug(Path(args.manoeuvre).stem)}.mp4"
-    if at is None:
-        if out.suffix.lower() != ".mp4":
-            raise BirdsimError(f"--out {str(out)!r} does not end in .mp4; allowed: a .mp4 path")
-        check_writable(out, args.force)
-    if args.sheet:
-        if Path(args.sheet).suffix.lower() != ".png":
-            raise BirdsimError(f"--sheet {args.sheet!r} does not end in .png; allowed: a .png path")
-        check_writable(Path(args.sheet), args.force, "--sheet")
+    check_clip_outputs(args, out, at)
     states = flock_states(birds, options, title=name)
     leader, others = states[0], states[1:]
     if at is not None:

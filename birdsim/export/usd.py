@@ -150,11 +150,17 @@ def write_usd(frames: FrameSequence, out: str | Path) -> Path:
     Raises:
         UsdMissingError: usd-core is not installed.
     """
-    from birdsim.io import temporary_sibling
 
     require_usd()
     out = Path(out)
-    stage = build_stage(frames, out.with_name(out.stem + "_assets"))
+    return export_stage(build_stage(frames, out.with_name(out.stem + "_assets")), out)
+
+
+def export_stage(stage, out: Path) -> Path:
+    """Write a built USD ``stage``'s root layer to ``out`` atomically (a sibling temporary
+    file, then a rename); a failed write is one line naming ``--out``."""
+    from birdsim.io import temporary_sibling
+
     tmp = temporary_sibling(out)
     try:
         if not stage.GetRootLayer().Export(str(tmp)):

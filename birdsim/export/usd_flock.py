@@ -11,7 +11,6 @@ and ``customLayerData`` ``birdsim`` with ``n_birds`` and each bird's body prim.
 
 from __future__ import annotations
 
-import os
 import shutil
 import tempfile
 from pathlib import Path
@@ -83,24 +82,13 @@ def build_flock_stage(frames: list[FrameSequence], assets_dir: Path):  # -> pxr.
 
 def write_usd_flock(frames: list[FrameSequence], out: str | Path) -> Path:
     """Write every bird's frames into one USD file ``out`` (atomically)."""
-    from birdsim.export.usd import require_usd
-    from birdsim.io import temporary_sibling
+    from birdsim.export.usd import export_stage, require_usd
 
     require_usd()
     out = Path(out)
     work = Path(tempfile.mkdtemp(prefix="birdsim-usd-flock-"))
     try:
-        stage = build_flock_stage(frames, work / (out.stem + "_assets"))
-        tmp = temporary_sibling(out)
-        try:
-            if not stage.GetRootLayer().Export(str(tmp)):
-                raise ExportError(
-                    f"--out {str(out)!r}: USD could not write the file; allowed: a path in a writable folder"
-                )
-            os.replace(tmp, out)
-        finally:
-            if tmp.exists():
-                tmp.unlink()
+        export_stage(build_flock_stage(frames, work / (out.stem + "_assets")), out)
     finally:
         shutil.rmtree(work, ignore_errors=True)
     return out
