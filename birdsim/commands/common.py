@@ -15,6 +15,10 @@ from pathlib import Path
 
 from birdsim.errors import BirdsimError
 from birdsim.physics.bird import Bird, BirdConfigError
+from birdsim.physics.kinematics import MODELS
+
+#: The kinematic models a ``--model`` takes, for help texts: "base, m1, ..., m4 or m5".
+MODEL_LIST = ", ".join(list(MODELS)[:-1]) + " or " + list(MODELS)[-1]
 
 
 def parse_pairs(pairs: list[str] | None, arg: str) -> dict[str, str]:

@@ -9,7 +9,13 @@ import json
 import math
 from pathlib import Path
 
-from birdsim.commands.common import REDUCED_UNITS, SI_UNITS, add_bird_arguments, bird_from_args
+from birdsim.commands.common import (
+    MODEL_LIST,
+    REDUCED_UNITS,
+    SI_UNITS,
+    add_bird_arguments,
+    bird_from_args,
+)
 from birdsim.flight.envelope import envelope
 from birdsim.flight.presets import DEMO_MODEL, demo_bird
 from birdsim.physics.kinematics import get_model
@@ -33,7 +39,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--model",
         default=DEMO_MODEL,
-        help=f"base, m1, m2, m3 or m4 (default {DEMO_MODEL}, the demo model)",
+        help=f"{MODEL_LIST} (default {DEMO_MODEL}, the demo model)",
     )
     p.add_argument(
         "--table",

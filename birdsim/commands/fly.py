@@ -10,6 +10,7 @@ import sys
 from pathlib import Path
 
 from birdsim.commands.common import (
+    MODEL_LIST,
     check_writable,
     load_bird,
     load_table_for,
@@ -48,7 +49,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--model",
         default=DEFAULT_MODEL,
-        help=f"kinematic model: base, m1, m2, m3 or m4 (default {DEFAULT_MODEL})",
+        help=f"kinematic model: {MODEL_LIST} (default {DEFAULT_MODEL})",
     )
     p.add_argument(
         "--bird",

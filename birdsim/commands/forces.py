@@ -6,7 +6,13 @@ import argparse
 import json
 import math
 
-from birdsim.commands.common import add_bird_arguments, bird_from_args, parse_pairs, units_of
+from birdsim.commands.common import (
+    MODEL_LIST,
+    add_bird_arguments,
+    bird_from_args,
+    parse_pairs,
+    units_of,
+)
 from birdsim.errors import BirdsimError, check_number
 from birdsim.physics.cycle import DEFAULT_SAMPLES, evaluate_cycle
 from birdsim.physics.kinematics import get_model
@@ -19,7 +25,7 @@ FORCE_NOTE = "mean: right wing + body drag (the dissertation's flapcost force); 
 
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("forces", help="mean Fx, Fy, Fz and P of one wingbeat", description=__doc__)
-    p.add_argument("--model", required=True, help="base, m1, m2, m3 or m4")
+    p.add_argument("--model", required=True, help=MODEL_LIST)
     p.add_argument("--speed", required=True, help="flight speed V >= 0 (non-dimensional)")
     p.add_argument(
         "--climb", default="0", help="vertical speed relative to the air, positive up (default 0)"

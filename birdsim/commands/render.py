@@ -7,6 +7,7 @@ import argparse
 from pathlib import Path
 
 from birdsim.commands.common import (
+    MODEL_LIST,
     add_bird_arguments,
     bird_from_args,
     check_clip_outputs,
@@ -43,7 +44,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--model",
         default=None,
-        help="kinematic model: base, m1, m2, m3 or m4 (default: the demo model m3 in free flight, m4 with --kinematic)",
+        help=f"kinematic model: {MODEL_LIST} (default: the demo model m3 in free flight, m4 with --kinematic)",
     )
     p.add_argument(
         "--table",

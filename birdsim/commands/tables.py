@@ -11,7 +11,7 @@ import argparse
 from pathlib import Path
 
 from birdsim.commands import table_jacobians
-from birdsim.commands.common import add_bird_arguments, bird_from_args
+from birdsim.commands.common import MODEL_LIST, add_bird_arguments, bird_from_args
 from birdsim.commands.tables_info import FORCE_NOTE, run_info, run_lookup
 from birdsim.errors import BirdsimError, check_finite
 from birdsim.io import check_output
@@ -46,7 +46,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     )
 
     b = tsub.add_parser("build", help="optimise every cell of a (Fx, Fz, V) grid for one model")
-    b.add_argument("--model", required=True, help="base, m1, m2, m3 or m4")
+    b.add_argument("--model", required=True, help=MODEL_LIST)
     b.add_argument(
         "--grid",
         default="",

@@ -1,7 +1,7 @@
 """The cost of a wingbeat (docs/design.md sec. 2, dissertation secs 3.3 and 4.1).
 
 ``cost = w_x |Fx - Fx_d| + w_z |Fz - Fz_d| + w_p |P|``  (the appendix's ``flapcost``)
-``     + w_o * pitch``                  only for stroke-plane models (m3, m4) at V = 0:
+``     + w_o * pitch``                  only for stroke-plane models (m3, m4, m5) at V = 0:
                                         the token orientation cost of sec. 4.1.3 that
                                         ranks stroke-plane inclination above body pitch
 ``     + nu * |x - x_prev|``            the optional distance cost of eq. 93 (Euclidean
@@ -82,7 +82,7 @@ class CostBreakdown:
 
 
 def uses_orientation_cost(model: KinematicModel) -> bool:
-    """True for the stroke-plane models (m3, m4)."""
+    """True for the stroke-plane models (m3, m4, m5)."""
     return "stroke_plane" in model.param_names
 
 
