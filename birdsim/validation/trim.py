@@ -271,13 +271,31 @@ def trim_sweep(
     return TrimSweep(m.name, points, time.perf_counter() - t0, label)
 
 
+def mid_span_station(model: KinematicModel, bird: Bird) -> tuple[int, float]:
+    """(panel index, distance from the panel's root [bird length units]) of the point at
+    ``cp_span_fraction`` of the extended semispan, counted along the panels from the
+    shoulder: the scorecard's angle-of-attack station, the same for every model."""
+    geometry = model.chain_with_geometry(bird)
+    station = bird.cp_span_fraction * sum(span for _, span, _ in geometry)
+    root = 0.0
+    for k, (_, span, _) in enumerate(geometry):
+        if station <= root + span or k == len(geometry) - 1:
+            return k, station - root
+        root += span
+    raise AssertionError("unreachable")  # pragma: no cover
+
+
 def angle_of_attack_deg(
     model: str | KinematicModel, bird: Bird, point: TrimPoint, phase: float
 ) -> float:
-    """Geometric angle of attack [deg] of the (first) panel's control point at wingbeat
-    phase ``phase`` (rad; 0 = mid-downstroke, pi = mid-upstroke), relative to the
-    freestream plus flapping velocity (and the disc's inflow when induced velocity is on,
-    taken from the cycle's mean force); positive = air from below the wing."""
+    """Geometric angle of attack [deg] at wingbeat phase ``phase`` (rad; 0 =
+    mid-downstroke, pi = mid-upstroke), relative to the freestream plus flapping velocity
+    (and the disc's inflow when induced velocity is on, taken from the cycle's mean force);
+    positive = air from below the wing.
+
+    The station is the same for every model: ``cp_span_fraction`` of the extended semispan
+    (:func:`mid_span_station`; the one panel's control point for base-m3, on the arm for
+    m4/m5, where the first panel's own control point sits at a third of the semispan)."""
     m = model if isinstance(model, KinematicModel) else get_model(model)
     params = {k: np.array([v]) for k, v in point.params.items()}
     air = np.zeros((1, 3))
@@ -294,8 +312,9 @@ def angle_of_attack_deg(
     pitch = params["pitch"][:, None, None]
     rel = tuple(c[:, None, None] for c in (point.speed - air[:, 0], -air[:, 1], -air[:, 2]))
     air_body = earth_to_body(pitch, rel)
-    chain, span, _chord = m.chain_with_geometry(bird)[0]
-    r = np.array([bird.cp_span_fraction * span])
+    panel, r_panel = mid_span_station(m, bird)
+    chain = m.chain_with_geometry(bird)[panel][0]
+    r = np.array([r_panel])
     _, vel_groups = points_in_body(chain, states, r)
     v_flap = [sum(np.asarray(g[i]) for g in vel_groups.values()) for i in range(3)]
     v_rel = tuple(np.asarray(a) + b for a, b in zip(air_body, v_flap))
@@ -309,6 +328,7 @@ __all__ = [
     "TrimProblem",
     "TrimSweep",
     "angle_of_attack_deg",
+    "mid_span_station",
     "check_flying_bird",
     "trim_sweep",
 ]
