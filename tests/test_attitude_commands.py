@@ -257,16 +257,7 @@ def test_free_take_off_and_landing_meet_the_targets(preset, posed, measured):
         "0:0:0.15",
         "0:0:-0.15",
         "0.15:0:0",
-        pytest.param(
-            "-0.15:0:0",
-            marks=pytest.mark.xfail(
-                strict=True,
-                reason="regression after the fourth-stage pitch loop: the Jacobians measured "
-                "at the command are not re-measured after the gust, and the error swings "
-                "0.04-0.07 semispan in a period-two limit cycle (docs/free-body.md, 'Gusts "
-                "after the fourth-stage pitch loop')",
-            ),
-        ),
+        "-0.15:0:0",
     ],
 )
 def test_vertical_and_horizontal_gusts_are_flown_back(wind):

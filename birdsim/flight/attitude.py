@@ -313,7 +313,7 @@ class AttitudeLoop:
             m0, jac = self._measure(at, jp, speed, turn if turn.any() else None)
             self._jac = (speed, m0, jac, jp)
             self._turn = turn
-            self.check.measured(self.fb.time)
+            self.check.measured(self.fb.time, at)
         elif REFRESH and self.straight:  # a new J only (attitude_refresh: M_0 stays)
             self._jac = self.check.refreshed(self.fb, self._jac, at, jp, speed, self.u, turn)
         _, m0, jac, _ = self._jac

@@ -13,7 +13,10 @@ where the wingbeat flown has -0.148, the allocation asked for 1.6 times the swee
 the pitch loop limit-cycled at a period of two wingbeats (docs/free-body.md, "Gusts and
 the Jacobians' staleness check").
 
-The check (:func:`prediction_residual`): once per :data:`CHECK_BEATS` wingbeats the held
+The check (:func:`prediction_residual`): once per :data:`CHECK_BEATS` wingbeats, unless
+the wingbeat is within the measurement's own step (``JAC_STEP``, 0.02 rad) of the one
+the set was measured at (then it is that wingbeat, to the measurement's resolution; a
+steady cruise, where a check would cost an eighth of the flight), the held
 body beats the wingbeat the loop measures at now with the inputs ``u`` it allocated, and
 without them; the difference is the moment those inputs deliver at this wingbeat, ``J u``
 the moment the stored set predicts.  The set is stale when the delivered moment exceeds
@@ -33,7 +36,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from birdsim.flight.attitude_jacobians import held_mean_moments, measured_jacobian
+from birdsim.flight.attitude_jacobians import JAC_STEP, held_mean_moments, measured_jacobian
 
 #: Wingbeats between two checks, and after a measurement (the loop's estimate is a
 #: one-wingbeat fit: a wingbeat is the shortest time over which the inputs act).
@@ -81,12 +84,15 @@ class StalenessCheck:
         self.every = beats * period
         self.tol = tol
         self.last: float | None = None  # time of the last check or measurement
+        self.at: np.ndarray | None = None  # the wingbeat the stored J was measured at
         self.checks = 0
         self.refreshes = 0
 
-    def measured(self, t: float) -> None:
-        """A set was measured at time ``t``: the next check a full interval later."""
+    def measured(self, t: float, params: np.ndarray) -> None:
+        """A set was measured at time ``t`` at the wingbeat ``params``: the next check a
+        full interval later."""
         self.last = t
+        self.at = np.array(params, dtype=float)
 
     def refreshed(
         self,
@@ -108,6 +114,9 @@ class StalenessCheck:
         self.last = t
         if not np.any(u):
             return stored
+        # within the measurement's own step of the wingbeat measured at: that wingbeat
+        if self.at is not None and np.max(np.abs(np.asarray(params) - self.at)) < JAC_STEP:
+            return stored
         self.checks += 1
         omega = None if turn is None or not np.any(turn) else np.asarray(turn, dtype=float)
         jac, v = stored[2], max(speed, 0.0)
@@ -116,6 +125,7 @@ class StalenessCheck:
             return stored
         self.refreshes += 1
         _, new = measured_jacobian(fb, params, pitch, v, omega)
+        self.at = np.array(params, dtype=float)
         return (stored[0], stored[1], new, stored[3])
 
 
