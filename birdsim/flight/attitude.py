@@ -223,6 +223,7 @@ class AttitudeLoop:
             return
         m0, jac = self._measure(params, pitch, speed, None)
         self._jac = (speed, m0, jac, pitch)
+        self.check.measured(self.fb.time, params)
         lim = self.integral_limit(self.gains.omega_a, jac, params)
         self.integral = np.clip((m0 - np.asarray(moment)) / self.inertia, -lim, lim)
 
