@@ -20,6 +20,7 @@ from birdsim.flight.attitude_refresh import (
     RESIDUAL_TOL,
     StalenessCheck,
     prediction_residual,
+    predicts_better,
     under_predicts,
 )
 
@@ -45,6 +46,19 @@ def test_under_predicts_is_one_sided():
     side = np.array([1.0, 0.0, 0.0]) * 10 * moved  # across the prediction: no gain error
     assert not under_predicts(side, jac, U, RESIDUAL_TOL)
     assert not under_predicts(unit, jac, np.zeros(7), RESIDUAL_TOL)
+
+
+def test_a_new_set_replaces_the_old_only_if_it_predicts_better():
+    """The residual of the new set is the old one's plus (old - new) u: a set that
+    predicts the delivered moment (the old one scaled to it) is better, one that misses
+    it by as much on the other side is not."""
+    old = np.zeros((3, 7))
+    old[1, [2, 3, 6]] = (-0.09, 0.02, -0.05)
+    true = 1.6 * old
+    res = (true - old) @ U  # what the old set left
+    assert predicts_better(res, old, true, U)
+    assert not predicts_better(res, old, old + 2 * (true - old), U)
+    assert not predicts_better(res, old, old, U)
 
 
 @pytest.fixture(scope="module")

@@ -22,7 +22,9 @@ without them; the difference is the moment those inputs deliver at this wingbeat
 the moment the stored set predicts.  The set is stale when the delivered moment exceeds
 the predicted one along the prediction by more than :data:`RESIDUAL_TOL` of the moment
 the inputs move (``|sum_j |J_ij u_j||``): the allocation's own tolerance (a demand missed
-by more than 10 % is "attitude saturated").  One-sided, because the two errors are not
+by more than 10 % is "attitude saturated"); the new ``J`` replaces the stored one only if
+it predicts the checked moment better (:func:`predicts_better`; else the miss is the
+inputs' own nonlinearity at their size, which no tangent at zero removes).  One-sided, because the two errors are not
 alike: a set that under-predicts raises the loop's gain above its design by the ratio,
 and the pitch loop's gain margin with the about half a wingbeat its estimate and the
 inputs' smoothing delay it is about 2 (the measured limit cycle: 1.6); one that
@@ -76,6 +78,14 @@ def under_predicts(residual: np.ndarray, jac: np.ndarray, u: np.ndarray, tol: fl
     return float(residual @ pred) / norm > tol * moved
 
 
+def predicts_better(residual: np.ndarray, old: np.ndarray, new: np.ndarray, u: np.ndarray) -> bool:
+    """Whether ``new`` predicts the moment of the inputs ``u`` that left ``residual``
+    (:func:`prediction_residual`) with ``old`` more closely than ``old`` does (its
+    residual is ``residual + (old - new) @ u``)."""
+    u = np.asarray(u, dtype=float)
+    return bool(np.linalg.norm(residual + (old - new) @ u) < np.linalg.norm(residual))
+
+
 class StalenessCheck:
     """Per flight: when a check is due, its verdict, and the re-measurement (see the
     module); ``checks`` and ``refreshes`` count them."""
@@ -123,8 +133,12 @@ class StalenessCheck:
         res, _ = prediction_residual(fb, params, pitch, v, jac, u, omega)
         if not under_predicts(res, jac, u, self.tol):
             return stored
-        self.refreshes += 1
         _, new = measured_jacobian(fb, params, pitch, v, omega)
+        # kept unless the new J predicts the checked moment better (else the miss is the
+        # inputs' own nonlinearity at this size, which no tangent at zero removes)
+        if not predicts_better(res, jac, new, u):
+            return stored
+        self.refreshes += 1
         self.at = np.array(params, dtype=float)
         return (stored[0], stored[1], new, stored[3])
 
@@ -134,5 +148,6 @@ __all__ = [
     "RESIDUAL_TOL",
     "StalenessCheck",
     "prediction_residual",
+    "predicts_better",
     "under_predicts",
 ]
