@@ -51,6 +51,7 @@ from birdsim.flight.attitude_jacobians import (
     split_inputs,
 )
 from birdsim.flight.attitude_pitch import WING_PITCH_BEATS, pitch_allocation
+from birdsim.flight.attitude_refresh import StalenessCheck
 from birdsim.flight.attitude_stiffness import measured_pitch_stiffness
 from birdsim.flight.body_attitude import FIT_BEATS, euler_zyx, wingbeat_fit_matrix
 from birdsim.flight.bounded_lsq import bounded_lsq
@@ -88,6 +89,9 @@ RATE_CANCEL = True
 #: roll and yaw limit-cycle at a period of two wingbeats (+-2 degrees of roll in a yaw
 #: step); the side gust's peak error rose from 0.155 to 0.187 (docs/free-body.md).
 ROCKING = False
+#: Straight path: also re-measure J when the stored set under-predicts the moment the
+#: inputs in use deliver at the wingbeat measured at now (:mod:`birdsim.flight.attitude_refresh`).
+REFRESH = True
 #: Regularisation of the allocation (relative to the inputs' bounds).
 LAMBDA = 1e-4
 #: The integral's share of the moment (per unit inertia) is bounded by this many radians
@@ -205,6 +209,8 @@ class AttitudeLoop:
         #: slow to fast); turns keep the second stage's (with it: circle 0.083 -> 0.096)
         self.straight = False
         self.stiffness = np.zeros(3)  # restoring stiffness per axis (>= 0, table units)
+        #: straight path: re-measure J when it under-predicts the inputs' moment
+        self.check = StalenessCheck(fb.red.period)
 
     def preset_integral(
         self, moment: np.ndarray, params: np.ndarray, pitch: float, speed: float
@@ -217,6 +223,7 @@ class AttitudeLoop:
             return
         m0, jac = self._measure(params, pitch, speed, None)
         self._jac = (speed, m0, jac, pitch)
+        self.check.measured(self.fb.time, params)
         lim = self.integral_limit(self.gains.omega_a, jac, params)
         self.integral = np.clip((m0 - np.asarray(moment)) / self.inertia, -lim, lim)
 
@@ -297,16 +304,19 @@ class AttitudeLoop:
             return split_inputs(names, params, self.u)
         jp = pitch_cmd if jac_pitch is None else jac_pitch
         turn = np.zeros(3) if turn_rates is None else np.asarray(turn_rates, dtype=float)
+        at = params if jac_params is None else jac_params
         if (
             self._jac is None
             or abs(self._jac[0] - speed) > JAC_DV
             or abs(self._jac[3] - jp) > JAC_DPITCH
             or np.abs(self._turn - turn).max() > JAC_DRATE
         ):
-            at = params if jac_params is None else jac_params
             m0, jac = self._measure(at, jp, speed, turn if turn.any() else None)
             self._jac = (speed, m0, jac, jp)
             self._turn = turn
+            self.check.measured(self.fb.time, at)
+        elif REFRESH and self.straight:  # a new J only (attitude_refresh: M_0 stays)
+            self._jac = self.check.refreshed(self.fb, self._jac, at, jp, speed, self.u, turn)
         _, m0, jac, _ = self._jac
         # the flapping's own damping (each axis, >= 0) is part of the plant the gains are
         # placed for; what is left of the rate derivatives (cross terms, any negative

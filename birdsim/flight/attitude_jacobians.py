@@ -215,13 +215,19 @@ def measured_rate_derivatives(
 
 
 def held_mean_moments(
-    fb, params: np.ndarray, pitch: float, speed: float, omegas: list[np.ndarray]
+    fb,
+    params: np.ndarray,
+    pitch: float,
+    speed: float,
+    omegas: list[np.ndarray],
+    inputs: np.ndarray | None = None,
 ) -> list[np.ndarray]:
     """The wingbeat-mean moment (3,) (seed body axes, about the centre of mass) of the
-    held body (pitch ``pitch``, airspeed ``speed``) beating ``params`` with every input at
-    zero, over :data:`JAC_SAMPLES` phases, once per body rate in ``omegas`` (seed body
-    axes): the measurement :func:`measured_rate_derivatives` and
-    :mod:`birdsim.flight.attitude_stiffness` share."""
+    held body (pitch ``pitch``, airspeed ``speed``) beating ``params`` with the inputs
+    ``inputs`` (:data:`INPUTS`; default every input at zero), over :data:`JAC_SAMPLES`
+    phases, once per body rate in ``omegas`` (seed body axes): the measurement
+    :func:`measured_rate_derivatives`, :mod:`birdsim.flight.attitude_stiffness` and
+    :mod:`birdsim.flight.attitude_refresh` share."""
     m, cb, sched = fb.m, fb.cb, fb.schedule
     d = getattr(fb, "_jac_data", None)
     if d is None:
@@ -229,7 +235,8 @@ def held_mean_moments(
     n = JAC_SAMPLES
     times = np.arange(n) * (fb.red.period / n)
     names = sched.names
-    right, left, sh, tail = split_inputs(names, params, np.zeros(len(INPUTS)))
+    u = np.zeros(len(INPUTS)) if inputs is None else np.asarray(inputs, dtype=float)
+    right, left, sh, tail = split_inputs(names, params, u)
     z = np.zeros((n, len(names)))
     sw = np.repeat([np.concatenate([sh, sh])], n, axis=0)
     pres = sched.prescribe(
