@@ -162,7 +162,10 @@ def fly_steered(jobs: list[FlockJob], progress: Any = None) -> dict:
     cfg = SimConfig()
     dt = 2.0 * math.pi / cfg.control_per_beat
     gravity = reduced_bird(setups[0].bird).gravity
-    lock = Lockstep([s.reference for s in setups], flock.steering, gravity, dt)
+    from birdsim.flight import flock_step
+
+    paths = [s.reference for s in setups]
+    lock = Lockstep(paths, flock.steering, gravity, dt, shared_model=flock_step.SHARED_MODEL)
     if progress is not None:
         per_beat, beats = cfg.control_per_beat, setups[0].beats
         lock.on_update = lambda k: (k + 1) % per_beat or progress((k + 1) // per_beat, beats)

@@ -39,7 +39,14 @@ class _Aborted(BirdsimError):
 class Lockstep:
     """The turn-taking of ``n`` birds and their published states (reduced units)."""
 
-    def __init__(self, paths: list[FlockPath], cfg: SteeringConfig, gravity: float, dt: float):
+    def __init__(
+        self,
+        paths: list[FlockPath],
+        cfg: SteeringConfig,
+        gravity: float,
+        dt: float,
+        shared_model: bool = False,
+    ):
         self.paths = paths
         self.cfg = cfg
         self.gravity = float(gravity)
@@ -57,6 +64,10 @@ class Lockstep:
         self.updates = 0
         #: optional callable(k) after the rules of control update k
         self.on_update: Any = None
+        #: step every bird in one MuJoCo model (birdsim.flight.flock_step) where usable
+        self.shared_model = shared_model
+        self.fbs: list[Any] = [None] * n
+        self.shared: Any = None
 
     # ---- turns -----------------------------------------------------------------------
 
@@ -81,6 +92,8 @@ class Lockstep:
         """Bird ``i``'s ``control_hook`` for :func:`birdsim.flight.freeflight.fly`."""
 
         def control_hook(k: int, t: float, fb: Any) -> None:
+            if k == 0 and self.shared_model:
+                self._share(i, fb)
             self.pos[i] = fb.d.qpos[:3]
             self.pos[i, 1] += self.paths[i].shift_y  # the flown frame to the world's
             self.vel[i] = fb.d.qvel[:3]
@@ -93,6 +106,34 @@ class Lockstep:
             mujoco.set_mjcb_passive(fb.cb)
 
         return control_hook
+
+    def _share(self, i: int, fb: Any) -> None:
+        """Bird ``i``'s first control update: its ``step_many`` hands its intervals to
+        the shared model (built by the last bird, every bird's FreeBird known)."""
+        from birdsim.flight.flock_step import SharedFlock
+
+        self.fbs[i] = fb
+        original = fb.step_many
+
+        def step_many(pres: Any, wind: Any, record: Any = None, every: int = 1) -> None:
+            if self.shared is None:
+                return original(pres, wind, record, every)
+            self.shared.pending[i] = (pres, wind, record, every)
+            mujoco.set_mjcb_passive(None)
+            if i == self.n - 1:
+                self.shared.step()
+            self.pass_turn(i)
+            self.wait_turn(i)
+            mujoco.set_mjcb_passive(fb.cb)
+            return None
+
+        fb.step_many = step_many
+        if i == self.n - 1 and SharedFlock.usable(self.fbs):
+            mujoco.set_mjcb_passive(None)  # compiling runs MuJoCo (no bird's callback)
+            try:
+                self.shared = SharedFlock(self.fbs)
+            finally:
+                mujoco.set_mjcb_passive(fb.cb)
 
     def update(self) -> None:
         """Every bird at the same time: the rules' accelerations, held for the interval."""
