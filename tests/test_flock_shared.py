@@ -83,3 +83,18 @@ def test_the_shared_model_flies_the_lockstep_flight(tmp_path, monkeypatch):
         diff = np.max(np.abs(np.asarray(shared[k], float) - np.asarray(alone[k], float)))
         assert diff <= 1e-12, (k, diff)
     assert float(np.max(np.abs(shared["steer"]))) > 0.0  # the rules acted
+
+
+def test_two_processes_fly_the_one_process_flight(tmp_path):
+    """The same three steered birds split between two processes (states exchanged at
+    every control update): the flight of one process.  Tolerance 1e-9 semispan: the same
+    arithmetic in fresh processes, whose numpy sums may differ in the last bits with the
+    arrays' alignment (docs/fast-flight.md, "Batches"); measured bitwise equal."""
+    offsets = [(0.0, 0.0, 0.0), (-3.5, 3.5, 0.0), (-3.5, -3.5, 0.0)]
+    _, jobs = jobs_for(_flock(tmp_path, "steer", offsets), "m3", seconds=2.0 * 2.0 * np.pi)
+    one = fly_flock(jobs)
+    two = fly_flock(jobs, processes=2)
+    for k in ("x", "y", "z", "qpos", "qvel", "steer"):
+        diff = np.max(np.abs(np.asarray(one[k], float) - np.asarray(two[k], float)))
+        assert diff <= 1e-9, (k, diff)
+    assert float(np.max(np.abs(two["steer"]))) > 0.0

@@ -46,16 +46,25 @@ class Lockstep:
         gravity: float,
         dt: float,
         shared_model: bool = False,
+        local: list[int] | None = None,
+        exchange: Any = None,
     ):
+        """``paths``: every bird's; ``local``: the birds flown here (default all: the
+        others are flown by other processes, :mod:`birdsim.flight.flock_parallel`);
+        ``exchange(lock)`` at every control update fills the other birds' rows of
+        ``pos``, ``vel`` and ``time`` before the rules."""
         self.paths = paths
         self.cfg = cfg
         self.gravity = float(gravity)
         self.dt = float(dt)
-        n = len(paths)
+        n_all = len(paths)
+        self.local = list(range(n_all)) if local is None else [int(i) for i in local]
+        n = len(self.local)
         self.n = n
-        self.pos = np.zeros((n, 3))
-        self.vel = np.zeros((n, 3))
-        self.time = np.zeros(n)
+        self.pos = np.zeros((n_all, 3))
+        self.vel = np.zeros((n_all, 3))
+        self.time = np.zeros(n_all)
+        self.exchange = exchange
         # one event per bird: handing the turn on wakes the next bird only (a shared
         # condition variable woke every waiting bird at every hand-over)
         self.events = [threading.Event() for _ in range(n)]
@@ -89,15 +98,16 @@ class Lockstep:
     # ---- the control update ----------------------------------------------------------
 
     def hook(self, i: int) -> Any:
-        """Bird ``i``'s ``control_hook`` for :func:`birdsim.flight.freeflight.fly`."""
+        """The ``i``-th local bird's ``control_hook`` for :func:`birdsim.flight.freeflight.fly`."""
+        g = self.local[i]
 
         def control_hook(k: int, t: float, fb: Any) -> None:
             if k == 0 and self.shared_model:
                 self._share(i, fb)
-            self.pos[i] = fb.d.qpos[:3]
-            self.pos[i, 1] += self.paths[i].shift_y  # the flown frame to the world's
-            self.vel[i] = fb.d.qvel[:3]
-            self.time[i] = t
+            self.pos[g] = fb.d.qpos[:3]
+            self.pos[g, 1] += self.paths[g].shift_y  # the flown frame to the world's
+            self.vel[g] = fb.d.qvel[:3]
+            self.time[g] = t
             if i == self.n - 1:
                 self.update()
             mujoco.set_mjcb_passive(None)
@@ -137,11 +147,14 @@ class Lockstep:
 
     def update(self) -> None:
         """Every bird at the same time: the rules' accelerations, held for the interval."""
+        if self.exchange is not None:
+            self.exchange(self)
         t = float(self.time[0])
         if not np.allclose(self.time, t, rtol=0, atol=1e-9):
             raise BirdsimError(f"flock lockstep out of step: times {self.time.tolist()}")
-        goal, goal_v = np.zeros((self.n, 3)), np.zeros((self.n, 3))
-        delta, delta_v = np.zeros((self.n, 3)), np.zeros((self.n, 3))
+        n_all = len(self.paths)
+        goal, goal_v = np.zeros((n_all, 3)), np.zeros((n_all, 3))
+        delta, delta_v = np.zeros((n_all, 3)), np.zeros((n_all, 3))
         for j, p in enumerate(self.paths):
             g = p.goal(np.array([t]))
             goal[j] = [g["x"][0], g["y"][0], g["z"][0]]

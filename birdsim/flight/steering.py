@@ -34,6 +34,8 @@ TWO_PI = 2.0 * math.pi
 #: the path (wingbeats) it reaches.
 GRID_PER_BEAT = 256
 RATE_MARGIN_BEATS = 4.0
+#: goals kept by :meth:`FlockPath.goal` (times asked again within a control update)
+GOAL_CACHE = 256
 
 
 @dataclass(frozen=True)
@@ -119,6 +121,7 @@ class FlockPath:
 
     def __init__(self, base: Any, offset: np.ndarray, turn_offset: bool):
         self._base = base
+        self._goals: dict[tuple, dict[str, np.ndarray]] = {}
         self.offset = np.asarray(offset, dtype=float)
         self.turn_offset = bool(turn_offset)
         if self.turn_offset:  # the along-track offset as a time lag at the start's speed
