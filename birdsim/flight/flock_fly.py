@@ -248,6 +248,8 @@ def stack_logs(logs: list[dict[str, np.ndarray]], flock: Flock) -> dict[str, np.
         )
     out: dict[str, np.ndarray] = {}
     for key, first in logs[0].items():
+        if any(key not in log for log in logs):
+            continue  # e.g. a turn's bank_command, absent where a bird's path is still straight
         vals = [log[key] for log in logs]
         per_sample = first.ndim >= 1 and first.shape[0] == n and key not in _NOT_SAMPLES
         if per_sample or first.ndim == 0 and any(not np.array_equal(v, first) for v in vals):
