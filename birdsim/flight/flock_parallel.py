@@ -111,8 +111,12 @@ def _receive(conn: Any, proc: Any, group: list[int]) -> tuple:
     """The group's next message; an error if its process ended without one."""
     while not conn.poll(1.0):
         if not proc.is_alive() and not conn.poll(0.1):
-            return ("error", group, f"its process ended (exit code {proc.exitcode})")
-    return conn.recv()
+            break
+    try:
+        return conn.recv()
+    except EOFError:
+        proc.join(timeout=5)
+        return ("error", group, f"its process ended (exit code {proc.exitcode})")
 
 
 def _first_error(msgs: dict) -> int:
