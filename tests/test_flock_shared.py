@@ -89,7 +89,8 @@ def test_two_processes_fly_the_one_process_flight(tmp_path):
     """The same three steered birds split between two processes (states exchanged at
     every control update): the flight of one process.  Tolerance 1e-9 semispan: the same
     arithmetic in fresh processes, whose numpy sums may differ in the last bits with the
-    arrays' alignment (docs/fast-flight.md, "Batches"); measured bitwise equal."""
+    arrays' alignment (docs/fast-flight.md, "Batches"); the 12-bird preset over 36
+    wingbeats on 2 processes was measured within 3e-11 semispan (qvel 2.2e-10)."""
     offsets = [(0.0, 0.0, 0.0), (-3.5, 3.5, 0.0), (-3.5, -3.5, 0.0)]
     _, jobs = jobs_for(_flock(tmp_path, "steer", offsets), "m3", seconds=2.0 * 2.0 * np.pi)
     one = fly_flock(jobs)

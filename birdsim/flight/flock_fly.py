@@ -158,8 +158,9 @@ def fly_steered(jobs: list[FlockJob], progress: Any = None, processes: int = 1) 
     if processes > 1:
         from birdsim.flight.flock_parallel import fly_parallel
 
-        return fly_parallel(jobs, processes, progress)
-    logs = steered_logs(jobs, progress=progress)
+        logs = fly_parallel(steered_logs, jobs, processes, progress)
+    else:
+        logs = steered_logs(jobs, progress=progress)
     return stack_logs(logs, load_flock(jobs[0].source))
 
 

@@ -20,15 +20,16 @@ from typing import Any
 
 import numpy as np
 
-from birdsim.flight.flock import FlockError, load_flock
+from birdsim.flight.flock import FlockError
 
 
-def _worker(jobs: list, local: list[int], conn: Any) -> None:
-    """Fly the birds ``local`` of the flock; their logs (or one error line) to ``conn``."""
+def _worker(steered_logs: Any, jobs: list, local: list[int], conn: Any) -> None:
+    """Fly the birds ``local`` of the flock with ``steered_logs``
+    (:func:`birdsim.flight.flock_fly.steered_logs`, passed by name); their logs (or one
+    error line) to ``conn``."""
     from threadpoolctl import threadpool_limits
 
     from birdsim.errors import BirdsimError
-    from birdsim.flight.flock_fly import steered_logs
 
     def exchange(lock: Any) -> None:
         mine = lock.local
@@ -48,14 +49,14 @@ def _worker(jobs: list, local: list[int], conn: Any) -> None:
         conn.close()
 
 
-def fly_parallel(jobs: list, processes: int, progress: Any = None) -> dict:
-    """Fly a steered flock's birds on ``processes`` processes (at most one per bird) and
-    stack their logs in the birds' order; ``progress(beats_done, beats)`` every wingbeat.
+def fly_parallel(steered_logs: Any, jobs: list, processes: int, progress: Any = None) -> list[dict]:
+    """Fly a steered flock's birds on ``processes`` processes (at most one per bird), each
+    group with ``steered_logs(jobs, local=..., exchange=...)``; every bird's log in the
+    birds' order; ``progress(beats_done, beats)`` every wingbeat.
 
     Raises:
         FlockError: the first failed group's error (one line).
     """
-    from birdsim.flight.flock_fly import stack_logs
     from birdsim.flight.simulate import SimConfig
 
     n = len(jobs)
@@ -64,7 +65,7 @@ def fly_parallel(jobs: list, processes: int, progress: Any = None) -> dict:
     conns, procs = [], []
     for g in groups:
         parent, child = ctx.Pipe()
-        p = ctx.Process(target=_worker, args=(jobs, g, child), daemon=True)
+        p = ctx.Process(target=_worker, args=(steered_logs, jobs, g, child), daemon=True)
         p.start()
         child.close()
         conns.append(parent)
@@ -104,7 +105,7 @@ def fly_parallel(jobs: list, processes: int, progress: Any = None) -> dict:
             p.join(timeout=5)
             if p.is_alive():
                 p.terminate()
-    return stack_logs(logs, load_flock(jobs[0].source))
+    return logs
 
 
 def _receive(conn: Any, proc: Any, group: list[int]) -> tuple:

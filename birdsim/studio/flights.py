@@ -139,7 +139,7 @@ def fly_request(
     if req.path is None and is_flock(str(req.source)):
         from birdsim.studio.flock_flights import fly_flock_request
 
-        return fly_flock_request(req, progress)
+        return fly_flock_request(req, MAX_STUDIO_BEATS, progress)
     flight = (
         load_path(req.path) if req.path is not None else get_flight(str(req.source), turning=True)
     )

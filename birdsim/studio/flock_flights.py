@@ -28,7 +28,9 @@ def flock_beats(source: str) -> float:
     return float(get_flight(flock.path, turning=True).duration_beats)
 
 
-def fly_flock_request(req: Any, progress: Callable[[float], None] | None = None) -> tuple:
+def fly_flock_request(
+    req: Any, max_beats: float, progress: Callable[[float], None] | None = None
+) -> tuple:
     """Fly the flock ``req.source``: (its stacked log, a summary with the page's keys:
     ``rms_error`` and ``max_error`` the worst bird's after the start, in the birds'
     length unit, ``wingbeats_saturated`` the saturated samples over 64 a wingbeat).
@@ -38,7 +40,6 @@ def fly_flock_request(req: Any, progress: Callable[[float], None] | None = None)
     """
     from birdsim.flight.flock import load_birds
     from birdsim.flight.flock_fly import flock_summary, fly_flock, jobs_for
-    from birdsim.studio.flights import MAX_STUDIO_BEATS
 
     for name, bad in (("bird", req.bird), ("gusts", req.gusts), ("open loop", req.open_loop)):
         if bad:
@@ -50,9 +51,9 @@ def fly_flock_request(req: Any, progress: Callable[[float], None] | None = None)
     beats = flock_beats(str(req.source)) if req.seconds is None else None
     if beats is None:
         beats = req.seconds / load_birds(flock)[0].period
-    if beats > MAX_STUDIO_BEATS:
+    if beats > max_beats:
         raise BirdsimError(
-            f"the flock flies {beats:g} wingbeats; allowed: at most {MAX_STUDIO_BEATS:g} here"
+            f"the flock flies {beats:g} wingbeats; allowed: at most {max_beats:g} here"
         )
     report = None
     if progress is not None:  # -n: n wingbeats flown by every bird; n: n birds flown
