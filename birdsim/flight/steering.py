@@ -167,8 +167,22 @@ class FlockPath:
         ``y`` along its left normal and ``z`` up: parallel paths, the inner bird slower
         by ``1 - y kappa`` (a rigid formation turned about the leader would swing the
         birds behind it outwards at the turn's start).  Else: the leader's path plus
-        the offset (world axes)."""
+        the offset (world axes).
+
+        The goal is a function of ``t`` alone (the steering is added by :meth:`sample`):
+        the last :data:`GOAL_CACHE` are kept and handed out as copies (a control update
+        asks for the same times several times: the track's state, the lockstep's rules)."""
         t = np.asarray(t, dtype=float)
+        key = (t.shape, t.tobytes())
+        out = self._goals.get(key)
+        if out is None:
+            out = self._goal(t)
+            if len(self._goals) >= GOAL_CACHE:
+                self._goals.clear()
+            self._goals[key] = out
+        return {k: v.copy() for k, v in out.items()}
+
+    def _goal(self, t: np.ndarray) -> dict[str, np.ndarray]:
         ox, oy, oz = self.offset
         if not self.turn_offset:
             s = self._base.sample(t)
