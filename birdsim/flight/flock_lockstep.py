@@ -15,9 +15,11 @@ not parallelism.  MuJoCo's
 passive callback is process-wide: the bird holding the turn installs its own and
 removes it when it hands the turn on.
 
-This is the issue's lockstep "as a step": the issue's design (all birds in one MuJoCo
-model, one callback over every bird) is not built; the cost of the lockstep over flying
-the birds one after another is measured in ``benchmarks/bench_flock.py``.
+With ``shared_model`` (the default of :func:`birdsim.flight.flock_fly.steered_logs`) the
+birds are stepped in one MuJoCo model (:mod:`birdsim.flight.flock_step`): each bird's
+``step_many`` hands its interval over at its turn and the last bird steps every bird in
+one compiled call; each bird keeps its own controller and one-bird model.  ``local`` and
+``exchange`` let several processes fly a flock (:mod:`birdsim.flight.flock_parallel`).
 """
 
 from __future__ import annotations
