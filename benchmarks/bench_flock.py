@@ -5,13 +5,16 @@
   (target: 12 birds within 30 s), the worst bird's path RMS against its own reference
   (target: within 0.2 semispan), the smallest separation (target: at least one semispan),
   the saturated samples (target: none), the steering's largest displacement;
+* the preset on 1 and 2 processes (:mod:`birdsim.flight.flock_parallel`);
+* every bird in one MuJoCo model against each bird in its own (8 wingbeats, CPU);
 * the lockstep's cost: the preset's first 8 wingbeats steered (lockstep) and under the
   rule ``offsets`` (the same birds one after another, no rules), CPU side by side;
 * ``flock-v`` (12 pigeons in a straight V, 10 s, posed): as before the rules.
 
-``python benchmarks/bench_flock.py --birds N`` flies N seed birds (rows of 5, 3 semispans
-apart: 20 rows for 100) on the preset's path instead (issue 27: 100 birds within 5
-minutes).  Rows of 10 put the inner birds 13.5 semispans inside the leader's radius of
+``python benchmarks/bench_flock.py --birds N [--processes P] [--beats B]`` flies N seed
+birds (rows of 5, 3 semispans apart: 20 rows for 100) on the preset's path instead
+(issue 27: 100 birds within 5 minutes), on P processes, for B wingbeats (default the
+path's 36; 80 is a pigeon's 10 s).  CPU is this process's and its children's.  Rows of 10 put the inner birds 13.5 semispans inside the leader's radius of
 50 (speed 0.365 omega s): those saturated in the turn and diverged (measured:
 docs/fast-flight.md).
 """
@@ -19,6 +22,7 @@ docs/fast-flight.md).
 from __future__ import annotations
 
 import math
+import os
 import sys
 import tempfile
 import time
@@ -26,15 +30,24 @@ from pathlib import Path
 
 import numpy as np
 
+from birdsim.flight import flock_step
 from birdsim.flight.flock import PRESET_FOLDER, load_birds
 from birdsim.flight.flock_fly import flock_summary, fly_flock, jobs_for
 
 
-def _fly(source: str, seconds: float | None = None) -> tuple[dict, float, float, dict]:
+def _cpu() -> float:
+    """CPU seconds of this process and of its ended child processes (user + system)."""
+    t = os.times()
+    return t.user + t.system + t.children_user + t.children_system
+
+
+def _fly(
+    source: str, seconds: float | None = None, processes: int = 1
+) -> tuple[dict, float, float, dict]:
     flock, jobs = jobs_for(source, "m3", seconds=seconds)
-    w0, c0 = time.perf_counter(), time.process_time()
-    arrays = fly_flock(jobs)
-    wall, cpu = time.perf_counter() - w0, time.process_time() - c0
+    w0, c0 = time.perf_counter(), _cpu()
+    arrays = fly_flock(jobs, processes=processes)
+    wall, cpu = time.perf_counter() - w0, _cpu() - c0
     return flock_summary(arrays, load_birds(flock)[0].semispan), wall, cpu, arrays
 
 
@@ -67,15 +80,31 @@ def block(n: int, spacing: float = 3.0, per_row: int = 5) -> str:
 
 def main(argv: list[str] | None = None) -> None:
     argv = sys.argv[1:] if argv is None else argv
-    if argv[:1] == ["--birds"]:
-        n = int(argv[1])
+    opts = dict(zip(argv[::2], argv[1::2]))
+    processes = int(opts.get("--processes", 1))
+    beats = float(opts["--beats"]) if "--beats" in opts else None
+    seconds = None if beats is None else beats * 2 * math.pi  # the seed bird's time unit
+    if "--birds" in opts:
+        n = int(opts["--birds"])
         with tempfile.TemporaryDirectory() as tmp:
             p = Path(tmp) / f"block-{n}.toml"
             p.write_text(block(n))
-            print(_line(f"block of {n} seed birds (steered)", *_fly(str(p))))
+            name = f"block of {n} seed birds (steered, {processes} process(es))"
+            print(_line(name, *_fly(str(p), seconds, processes)))
         return
-    print(_line("flock preset (seed birds, turning, steered)", *_fly("flock")))
+    for procs in (1, 2):
+        name = f"flock preset (seed birds, turning, steered, {procs} process(es))"
+        print(_line(name, *_fly("flock", seconds, procs)))
     beats8 = 8 * 2 * math.pi  # the seed bird's 8 wingbeats in its time unit
+    cpus = []
+    for shared in (True, False):  # every bird in one MuJoCo model, or each in its own
+        flock_step.SHARED_MODEL = shared
+        cpus.append(_fly("flock", beats8)[2])
+    flock_step.SHARED_MODEL = True
+    print(
+        f"one MuJoCo model (flock, 8 wingbeats): {cpus[0]:.1f} s CPU, each bird its own "
+        f"model {cpus[1]:.1f} s CPU: {cpus[0] / cpus[1] - 1:+.1%}"
+    )
     s_info, s_wall, s_cpu, _ = _fly("flock", beats8)
     text = (PRESET_FOLDER / "flock.toml").read_text().replace('rule = "steer"', "")
     text = text.replace('path = "paths/', f'path = "{PRESET_FOLDER}/paths/')

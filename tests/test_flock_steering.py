@@ -170,13 +170,3 @@ def test_the_flock_preset_meets_the_issues_targets():
     assert info["saturated_samples"] == 0
     vx, vy = arrays["vx"][0], arrays["vy"][0]
     assert math.degrees(math.atan2(vy[-1], vx[-1])) == pytest.approx(90.0, abs=1.0)
-
-
-def test_a_steered_flock_refuses_jobs_in_one_line(capsys, tmp_path):
-    from birdsim.cli import main
-
-    out = tmp_path / "f.npz"
-    assert main(["fly", "flock", "--jobs", "2", "--out", str(out)]) == 2
-    err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 1 and "--jobs 2 with the steered flock 'flock'" in err[0], err
-    assert not out.exists()

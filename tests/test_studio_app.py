@@ -12,6 +12,7 @@ import pytest
 
 pytest.importorskip("flask", reason="the studio needs birdsim[studio] (flask)")
 
+from birdsim.flight.flock import preset_names as flock_presets  # noqa: E402
 from birdsim.studio.app import create_app  # noqa: E402
 from birdsim.studio.flights import MAX_KEYFRAMES, MAX_STUDIO_BEATS  # noqa: E402
 from birdsim.studio.safety import OutsideError, inside  # noqa: E402
@@ -61,6 +62,7 @@ def test_options_list_the_folder_and_the_shipped_birds(client, folder):
         "circle",
         "s-turn",
         "u-turn",
+        *flock_presets(),  # a flock flies every bird of its file (test_studio_flock.py)
     ]
     assert o["default_model"] == "m3"
 

@@ -39,7 +39,10 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="a batch: a text file with one manoeuvre per line (# comments), flown as with several MANOEUVREs",
     )
     p.add_argument(
-        "--jobs", metavar="N", help="a batch's local worker processes (default: one per core)"
+        "--jobs",
+        metavar="N",
+        help="a batch's local worker processes (default: one per core); a flock's: its "
+        "birds split between them (a steered flock: default one process)",
     )
     p.add_argument(
         "--dask",

@@ -8,11 +8,18 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 import time
 from pathlib import Path
 
 from birdsim.errors import BirdsimError
+
+
+def _children_cpu() -> float:
+    """User + system CPU seconds of this process's ended child processes."""
+    t = os.times()
+    return t.children_user + t.children_system
 
 
 def run_flock(args: argparse.Namespace, source: str, seconds: float | None) -> int:
@@ -44,13 +51,9 @@ def run_flock(args: argparse.Namespace, source: str, seconds: float | None) -> i
     flock, jobs = jobs_for(source, model, args.attitude, seconds)
     get_model(jobs[0].model)
     n_jobs = _jobs_arg(args.jobs)
-    if flock.rule == "steer" and n_jobs not in (None, 1):
-        raise BirdsimError(
-            f"--jobs {args.jobs} with the steered flock {flock.name!r}; allowed: no --jobs "
-            "(its birds fly in lockstep in one process)"
-        )
-    wall0, cpu0 = time.perf_counter(), time.process_time()
-    if n_jobs is None or n_jobs == 1:
+    steer = flock.rule == "steer"
+    wall0, cpu0, kids0 = time.perf_counter(), time.process_time(), _children_cpu()
+    if n_jobs is None or n_jobs == 1 or steer:
 
         def progress(done: int) -> None:
             if args.quiet or args.json:
@@ -61,7 +64,8 @@ def run_flock(args: argparse.Namespace, source: str, seconds: float | None) -> i
             else:
                 print(f"fly {flock.name}: bird {done}/{len(jobs)}", file=sys.stderr)
 
-        arrays = fly_flock(jobs, progress=progress)
+        # a steered flock on --jobs processes: its birds split, in lockstep across them
+        arrays = fly_flock(jobs, progress=progress, processes=n_jobs or 1)
     else:
         from birdsim.flight.batch import local_executor
 
@@ -74,6 +78,7 @@ def run_flock(args: argparse.Namespace, source: str, seconds: float | None) -> i
     info["attitude"] = str(arrays["attitude"]) if arrays["attitude"].ndim == 0 else None
     info["wall_s"] = wall
     info["cpu_s_this_process"] = cpu
+    info["cpu_s_child_processes"] = _children_cpu() - kids0
     info["jobs"] = n_jobs or 1
     if out is not None:
         save_log(arrays, out, args.force)

@@ -150,9 +150,26 @@ def fly_bird(job: FlockJob) -> dict[str, Any]:
         return {"index": job.index, "error": str(exc)}
 
 
-def fly_steered(jobs: list[FlockJob], progress: Any = None) -> dict:
+def fly_steered(jobs: list[FlockJob], progress: Any = None, processes: int = 1) -> dict:
     """Fly every bird of a steered flock in lockstep (:mod:`birdsim.flight.flock_lockstep`)
-    and stack their logs; ``progress(beats_done, beats)`` after every wingbeat."""
+    and stack their logs; ``progress(beats_done, beats)`` after every wingbeat.
+    ``processes`` > 1: the birds split between that many processes, their states
+    exchanged at every control update (:mod:`birdsim.flight.flock_parallel`)."""
+    if processes > 1:
+        from birdsim.flight.flock_parallel import fly_parallel
+
+        logs = fly_parallel(steered_logs, jobs, processes, progress)
+    else:
+        logs = steered_logs(jobs, progress=progress)
+    return stack_logs(logs, load_flock(jobs[0].source))
+
+
+def steered_logs(
+    jobs: list[FlockJob], local: Any = None, exchange: Any = None, progress: Any = None
+) -> list[dict[str, np.ndarray]]:
+    """The logs of the birds ``local`` (default all) of a steered flock flown in lockstep
+    here; ``exchange(lock)`` brings the other birds' states at every control update."""
+    from birdsim.flight import flock_step
     from birdsim.flight.flock_lockstep import Lockstep, run_lockstep
     from birdsim.flight.simulate import SimConfig
     from birdsim.physics.units import reduced_bird
@@ -162,12 +179,19 @@ def fly_steered(jobs: list[FlockJob], progress: Any = None) -> dict:
     cfg = SimConfig()
     dt = 2.0 * math.pi / cfg.control_per_beat
     gravity = reduced_bird(setups[0].bird).gravity
-    lock = Lockstep([s.reference for s in setups], flock.steering, gravity, dt)
+    paths = [s.reference for s in setups]
+    lock = Lockstep(
+        paths, flock.steering, gravity, dt, flock_step.SHARED_MODEL, local=local, exchange=exchange
+    )
     if progress is not None:
         per_beat, beats = cfg.control_per_beat, setups[0].beats
         lock.on_update = lambda k: (k + 1) % per_beat or progress((k + 1) // per_beat, beats)
-    results = run_lockstep(lambda i, hook: fly_setup(setups[i], jobs[i].model, hook), lock)
-    return stack_logs([r["arrays"] for r in results], flock)
+
+    def fly_one(i: int, hook: Any) -> dict:
+        g = lock.local[i]
+        return fly_setup(setups[g], jobs[g].model, hook)
+
+    return [r["arrays"] for r in run_lockstep(fly_one, lock)]
 
 
 def jobs_for(
@@ -182,17 +206,20 @@ def jobs_for(
     return flock, [FlockJob(source, b.index, model, attitude, seconds) for b in flock.birds]
 
 
-def fly_flock(jobs: list[FlockJob], executor: Any = None, progress: Any = None) -> dict:
+def fly_flock(
+    jobs: list[FlockJob], executor: Any = None, progress: Any = None, processes: int = 1
+) -> dict:
     """Fly every bird (in this process, or on ``executor``) and stack their logs; a
-    steered flock in lockstep in this process (:func:`fly_steered`).  ``progress(n)``:
-    n birds flown, or (steered) -n wingbeats flown by every bird."""
+    steered flock in lockstep (:func:`fly_steered`; in ``processes`` processes).
+    ``progress(n)``: n birds flown, or (steered) -n wingbeats flown by every bird."""
     if load_flock(jobs[0].source).rule == "steer":
         if executor is not None:
             raise FlockError(
-                "--jobs with a steered flock (rule 'steer'); allowed: one process (its "
-                "birds fly in lockstep)"
+                "an executor with a steered flock (rule 'steer'); allowed: processes "
+                "(its birds fly in lockstep)"
             )
-        return fly_steered(jobs, None if progress is None else lambda b, n: progress(-b))
+        report = None if progress is None else lambda b, n: progress(-b)
+        return fly_steered(jobs, report, processes)
     if executor is None:
         results = []
         for job in jobs:
@@ -222,6 +249,8 @@ def stack_logs(logs: list[dict[str, np.ndarray]], flock: Flock) -> dict[str, np.
         )
     out: dict[str, np.ndarray] = {}
     for key, first in logs[0].items():
+        if any(key not in log for log in logs):
+            continue  # e.g. a turn's bank_command, absent where a bird's path is still straight
         vals = [log[key] for log in logs]
         per_sample = first.ndim >= 1 and first.shape[0] == n and key not in _NOT_SAMPLES
         if per_sample or first.ndim == 0 and any(not np.array_equal(v, first) for v in vals):

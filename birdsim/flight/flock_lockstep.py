@@ -15,9 +15,11 @@ not parallelism.  MuJoCo's
 passive callback is process-wide: the bird holding the turn installs its own and
 removes it when it hands the turn on.
 
-This is the issue's lockstep "as a step": the issue's design (all birds in one MuJoCo
-model, one callback over every bird) is not built; the cost of the lockstep over flying
-the birds one after another is measured in ``benchmarks/bench_flock.py``.
+With ``shared_model`` (the default of :func:`birdsim.flight.flock_fly.steered_logs`) the
+birds are stepped in one MuJoCo model (:mod:`birdsim.flight.flock_step`): each bird's
+``step_many`` hands its interval over at its turn and the last bird steps every bird in
+one compiled call; each bird keeps its own controller and one-bird model.  ``local`` and
+``exchange`` let several processes fly a flock (:mod:`birdsim.flight.flock_parallel`).
 """
 
 from __future__ import annotations
@@ -39,16 +41,32 @@ class _Aborted(BirdsimError):
 class Lockstep:
     """The turn-taking of ``n`` birds and their published states (reduced units)."""
 
-    def __init__(self, paths: list[FlockPath], cfg: SteeringConfig, gravity: float, dt: float):
+    def __init__(
+        self,
+        paths: list[FlockPath],
+        cfg: SteeringConfig,
+        gravity: float,
+        dt: float,
+        shared_model: bool = False,
+        local: list[int] | None = None,
+        exchange: Any = None,
+    ):
+        """``paths``: every bird's; ``local``: the birds flown here (default all: the
+        others are flown by other processes, :mod:`birdsim.flight.flock_parallel`);
+        ``exchange(lock)`` at every control update fills the other birds' rows of
+        ``pos``, ``vel`` and ``time`` before the rules."""
         self.paths = paths
         self.cfg = cfg
         self.gravity = float(gravity)
         self.dt = float(dt)
-        n = len(paths)
+        n_all = len(paths)
+        self.local = list(range(n_all)) if local is None else [int(i) for i in local]
+        n = len(self.local)
         self.n = n
-        self.pos = np.zeros((n, 3))
-        self.vel = np.zeros((n, 3))
-        self.time = np.zeros(n)
+        self.pos = np.zeros((n_all, 3))
+        self.vel = np.zeros((n_all, 3))
+        self.time = np.zeros(n_all)
+        self.exchange = exchange
         # one event per bird: handing the turn on wakes the next bird only (a shared
         # condition variable woke every waiting bird at every hand-over)
         self.events = [threading.Event() for _ in range(n)]
@@ -57,6 +75,10 @@ class Lockstep:
         self.updates = 0
         #: optional callable(k) after the rules of control update k
         self.on_update: Any = None
+        #: step every bird in one MuJoCo model (birdsim.flight.flock_step) where usable
+        self.shared_model = shared_model
+        self.fbs: list[Any] = [None] * n
+        self.shared: Any = None
 
     # ---- turns -----------------------------------------------------------------------
 
@@ -78,13 +100,16 @@ class Lockstep:
     # ---- the control update ----------------------------------------------------------
 
     def hook(self, i: int) -> Any:
-        """Bird ``i``'s ``control_hook`` for :func:`birdsim.flight.freeflight.fly`."""
+        """The ``i``-th local bird's ``control_hook`` for :func:`birdsim.flight.freeflight.fly`."""
+        g = self.local[i]
 
         def control_hook(k: int, t: float, fb: Any) -> None:
-            self.pos[i] = fb.d.qpos[:3]
-            self.pos[i, 1] += self.paths[i].shift_y  # the flown frame to the world's
-            self.vel[i] = fb.d.qvel[:3]
-            self.time[i] = t
+            if k == 0 and self.shared_model:
+                self._share(i, fb)
+            self.pos[g] = fb.d.qpos[:3]
+            self.pos[g, 1] += self.paths[g].shift_y  # the flown frame to the world's
+            self.vel[g] = fb.d.qvel[:3]
+            self.time[g] = t
             if i == self.n - 1:
                 self.update()
             mujoco.set_mjcb_passive(None)
@@ -94,13 +119,44 @@ class Lockstep:
 
         return control_hook
 
+    def _share(self, i: int, fb: Any) -> None:
+        """Bird ``i``'s first control update: its ``step_many`` hands its intervals to
+        the shared model (built by the last bird, every bird's FreeBird known)."""
+        from birdsim.flight.flock_step import SharedFlock
+
+        self.fbs[i] = fb
+        original = fb.step_many
+
+        def step_many(pres: Any, wind: Any, record: Any = None, every: int = 1) -> None:
+            if self.shared is None:
+                return original(pres, wind, record, every)
+            self.shared.pending[i] = (pres, wind, record, every)
+            mujoco.set_mjcb_passive(None)
+            if i == self.n - 1:
+                self.shared.step()
+            self.pass_turn(i)
+            self.wait_turn(i)
+            mujoco.set_mjcb_passive(fb.cb)
+            return None
+
+        fb.step_many = step_many
+        if i == self.n - 1 and SharedFlock.usable(self.fbs):
+            mujoco.set_mjcb_passive(None)  # compiling runs MuJoCo (no bird's callback)
+            try:
+                self.shared = SharedFlock(self.fbs)
+            finally:
+                mujoco.set_mjcb_passive(fb.cb)
+
     def update(self) -> None:
         """Every bird at the same time: the rules' accelerations, held for the interval."""
+        if self.exchange is not None:
+            self.exchange(self)
         t = float(self.time[0])
         if not np.allclose(self.time, t, rtol=0, atol=1e-9):
             raise BirdsimError(f"flock lockstep out of step: times {self.time.tolist()}")
-        goal, goal_v = np.zeros((self.n, 3)), np.zeros((self.n, 3))
-        delta, delta_v = np.zeros((self.n, 3)), np.zeros((self.n, 3))
+        n_all = len(self.paths)
+        goal, goal_v = np.zeros((n_all, 3)), np.zeros((n_all, 3))
+        delta, delta_v = np.zeros((n_all, 3)), np.zeros((n_all, 3))
         for j, p in enumerate(self.paths):
             g = p.goal(np.array([t]))
             goal[j] = [g["x"][0], g["y"][0], g["z"][0]]

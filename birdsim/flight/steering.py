@@ -34,6 +34,8 @@ TWO_PI = 2.0 * math.pi
 #: the path (wingbeats) it reaches.
 GRID_PER_BEAT = 256
 RATE_MARGIN_BEATS = 4.0
+#: goals kept by :meth:`FlockPath.goal` (times asked again within a control update)
+GOAL_CACHE = 256
 
 
 @dataclass(frozen=True)
@@ -119,6 +121,7 @@ class FlockPath:
 
     def __init__(self, base: Any, offset: np.ndarray, turn_offset: bool):
         self._base = base
+        self._goals: dict[tuple, dict[str, np.ndarray]] = {}
         self.offset = np.asarray(offset, dtype=float)
         self.turn_offset = bool(turn_offset)
         if self.turn_offset:  # the along-track offset as a time lag at the start's speed
@@ -164,8 +167,22 @@ class FlockPath:
         ``y`` along its left normal and ``z`` up: parallel paths, the inner bird slower
         by ``1 - y kappa`` (a rigid formation turned about the leader would swing the
         birds behind it outwards at the turn's start).  Else: the leader's path plus
-        the offset (world axes)."""
+        the offset (world axes).
+
+        The goal is a function of ``t`` alone (the steering is added by :meth:`sample`):
+        the last :data:`GOAL_CACHE` are kept and handed out as copies (a control update
+        asks for the same times several times: the track's state, the lockstep's rules)."""
         t = np.asarray(t, dtype=float)
+        key = (t.shape, t.tobytes())
+        out = self._goals.get(key)
+        if out is None:
+            out = self._goal(t)
+            if len(self._goals) >= GOAL_CACHE:
+                self._goals.clear()
+            self._goals[key] = out
+        return {k: v.copy() for k, v in out.items()}
+
+    def _goal(self, t: np.ndarray) -> dict[str, np.ndarray]:
         ox, oy, oz = self.offset
         if not self.turn_offset:
             s = self._base.sample(t)

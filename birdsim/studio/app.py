@@ -44,6 +44,7 @@ def _shipped_birds() -> dict[str, Path]:
 
 def create_app(root: str | Path) -> Flask:
     """The studio for the folder ``root`` (the only folder it reads files from)."""
+    from birdsim.flight.flock import preset_names as flock_presets
     from birdsim.flight.presets import DEMO_MODEL, PATH_PRESETS
     from birdsim.flight.turn_presets import TURN_PRESETS
 
@@ -60,7 +61,8 @@ def create_app(root: str | Path) -> Flask:
             "birds": [*_shipped_birds(), *files],
             "models": list(MODELS),
             "default_model": DEMO_MODEL,
-            "presets": [*PATH_PRESETS, *TURN_PRESETS],  # the turns fly free (bank to turn)
+            # the turns fly free (bank to turn); a flock flies every bird of its file
+            "presets": [*PATH_PRESETS, *TURN_PRESETS, *flock_presets()],
             "files": files,
         }
 
@@ -76,7 +78,7 @@ def create_app(root: str | Path) -> Flask:
         from birdsim.flight.presets import PATH_PRESETS
         from birdsim.flight.turn_presets import TURN_PRESETS
 
-        if name in PATH_PRESETS or name in TURN_PRESETS:
+        if name in PATH_PRESETS or name in TURN_PRESETS or name in flock_presets():
             return name
         return str(inside(root, name, "manoeuvre file"))
 
@@ -107,9 +109,17 @@ def create_app(root: str | Path) -> Flask:
 
     @app.get("/api/path")
     def api_path():
+        from birdsim.flight.flock import is_flock, load_flock
         from birdsim.flight.path_file import get_flight
 
         name = request.args.get("source", "")
+        if is_flock(source_arg(name)):
+            flock = load_flock(source_arg(name))
+            return jsonify(
+                path=None,
+                note=f"{name!r} is a flock of {flock.n_birds} birds (rule {flock.rule}): "
+                "flown as its file says, every bird drawn; not edited here",
+            )
         flight = get_flight(source_arg(name), turning=True)
         if getattr(flight, "is_3d", False):  # the editor's table has no y, heading, turn_rate
             return jsonify(
@@ -180,6 +190,11 @@ def create_app(root: str | Path) -> Flask:
         from birdsim.studio.scene import flight_scene
 
         with f.lock:
+            if f.scene is None and "n_birds" in f.log:  # a flock: every bird
+                from birdsim.studio.flock_flights import flock_birds
+                from birdsim.studio.flock_view import flock_scene
+
+                f.scene = flock_scene(flock_birds(f.log), title=f.label)
             if f.scene is None:
                 f.scene = flight_scene(f.log, title=f.label)
         return f.scene

@@ -82,6 +82,11 @@ def make(kind: str, log: dict[str, Any], scene_html: Any = None, **opts: str) ->
         return log_bytes(log)
     if kind == "html":
         return scene_html().encode("utf-8")
+    if kind in ("bvh", "csv") and "n_birds" in log:
+        raise BirdsimError(
+            f"download {kind!r} of a flock: one file per bird; allowed: log, usd, mp4, html "
+            f"(or `birdsim export LOG --format {kind}` on the flock's log)"
+        )
     suffix = KINDS[kind][0]
     with tempfile.TemporaryDirectory(prefix="birdsim-studio-") as tmp:
         folder = Path(tmp)

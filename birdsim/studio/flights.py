@@ -127,6 +127,7 @@ def fly_request(
     """
     from birdsim.commands.fly import load_bird, load_table_for
     from birdsim.flight.flightlog import log_arrays, summary
+    from birdsim.flight.flock import is_flock
     from birdsim.flight.freeflight import DemandSchedule, fly, parse_gust
     from birdsim.flight.manoeuvre import Manoeuvre
     from birdsim.flight.path_file import get_flight
@@ -135,6 +136,10 @@ def fly_request(
     from birdsim.physics.kinematics import get_model
 
     check_sizes(req)
+    if req.path is None and is_flock(str(req.source)):
+        from birdsim.studio.flock_flights import fly_flock_request
+
+        return fly_flock_request(req, MAX_STUDIO_BEATS, progress)
     flight = (
         load_path(req.path) if req.path is not None else get_flight(str(req.source), turning=True)
     )

@@ -73,9 +73,14 @@ class Store:
 
         try:
             with self._fly_lock:
+                from birdsim.flight.flock import is_flock
                 from birdsim.flight.path_file import get_flight
 
-                if job.request.path is None:
+                if job.request.path is None and is_flock(str(job.request.source)):
+                    from birdsim.studio.flock_flights import flock_beats
+
+                    beats = flock_beats(str(job.request.source))
+                elif job.request.path is None:
                     flight = get_flight(str(job.request.source), turning=True)
                     beats = float(getattr(flight, "duration_beats", 0) or 0) or None
                 else:
