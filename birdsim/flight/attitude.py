@@ -54,6 +54,7 @@ from birdsim.flight.attitude_pitch import WING_PITCH_BEATS, pitch_allocation
 from birdsim.flight.attitude_stiffness import measured_pitch_stiffness
 from birdsim.flight.body_attitude import FIT_BEATS, euler_zyx, wingbeat_fit_matrix
 from birdsim.flight.bounded_lsq import bounded_lsq
+from birdsim.flight.tail_trim import operating_point, tail_elevation_range
 from birdsim.mujoco.tail import TailControls
 
 #: Wingbeats per time constant of the attitude loop.  Measured (seed bird): without the
@@ -106,6 +107,11 @@ LATERAL_INTEGRAL_RAD = 0.1
 #: Allocate pitch by :func:`birdsim.flight.attitude_pitch.pitch_allocation` (else the
 #: symmetric inputs together, by least squares, as roll and yaw).
 PITCH_SPLIT = True
+#: Straight flight: measure the Jacobians with the tail at its operating point
+#: (:func:`birdsim.flight.tail_trim.operating_point`: within its valid angle of attack at a
+#: steep body) and move the tail input about it (docs/free-body.md, fifth stage).
+TAIL_TRIM = False
+TAIL = [name for name, _, _ in INPUTS].index("tail_elevation")
 
 
 @dataclass(frozen=True)
@@ -205,6 +211,9 @@ class AttitudeLoop:
         #: slow to fast); turns keep the second stage's (with it: circle 0.083 -> 0.096)
         self.straight = False
         self.stiffness = np.zeros(3)  # restoring stiffness per axis (>= 0, table units)
+        #: the inputs' operating point the Jacobians were measured at (TAIL_TRIM)
+        self.u0 = np.zeros(len(INPUTS))
+        self.tail_range: tuple[float, float] | None = None  # ... and the tail's valid range
 
     def preset_integral(
         self, moment: np.ndarray, params: np.ndarray, pitch: float, speed: float
@@ -240,14 +249,17 @@ class AttitudeLoop:
         :data:`ROCKING`, what the body's rocking within the wingbeat does to them included
         (:func:`measured_with_rocking`)."""
         v = max(speed, 0.0)
+        u0 = operating_point(pitch) if self.straight and TAIL_TRIM else np.zeros(len(INPUTS))
+        self.u0 = u0
+        self.tail_range = tail_elevation_range(pitch) if self.straight and TAIL_TRIM else None
         if ROCKING:
             m0, jac, rate = measured_with_rocking(self.fb, params, pitch, v, self.inertia, turn)
         else:
-            m0, jac = measured_jacobian(self.fb, params, pitch, v, turn)
-            rate = measured_rate_derivatives(self.fb, params, pitch, v, turn)
+            m0, jac = measured_jacobian(self.fb, params, pitch, v, turn, u0)
+            rate = measured_rate_derivatives(self.fb, params, pitch, v, turn, u0)
         self.rate_jac = rate if RATE_CANCEL else np.zeros((3, 3))
         if self.straight:
-            k = measured_pitch_stiffness(self.fb, params, pitch, v, m0)
+            k = measured_pitch_stiffness(self.fb, params, pitch, v, m0, u0)
             self.stiffness = np.array([0.0, max(-k, 0.0), 0.0])
         return m0, jac
 
@@ -326,6 +338,9 @@ class AttitudeLoop:
         # acts on the rate error only, as the gains assume)
         demand += damping * (rate_err + np.asarray(rates, dtype=float) - turn)
         lo, hi = self.bounds(params)
+        if self.tail_range is not None:  # the tail within its valid angle of attack
+            lo[TAIL], hi[TAIL] = self.tail_range
+        lo, hi = lo - self.u0, hi - self.u0  # the allocation moves about the operating point
         u = np.zeros(len(INPUTS))
         miss, active, groups = 0.0, False, [(SYM_ROWS, SYM_INPUTS), (LAT_ROWS, LAT_INPUTS)]
         if PITCH_SPLIT and self.straight:  # pitch: slow moment by the wings, fast by the tail
@@ -350,9 +365,9 @@ class AttitudeLoop:
             u[cols] = x * scale
             active = active or bool(np.any(mask != 0))
             miss += float(np.linalg.norm(a @ x - demand[rows]))
-        self.u = u
+        self.u = u + self.u0
         self.saturated = bool(active and miss > 0.1 * np.linalg.norm(demand) + 1e-12)
-        return split_inputs(names, params, u)
+        return split_inputs(names, params, self.u)
 
 
 __all__ = [

@@ -57,12 +57,18 @@ def _hold(
 
 
 def measured_jacobian(
-    fb, params: np.ndarray, pitch: float, speed: float, omega_body: np.ndarray | None = None
+    fb,
+    params: np.ndarray,
+    pitch: float,
+    speed: float,
+    omega_body: np.ndarray | None = None,
+    u0: np.ndarray | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
     """(M_0 (3,), J (3, k)): the wingbeat-mean moment (seed body axes) with every input
-    at zero and its one-sided derivatives, measured in MuJoCo (see the module); the body
-    turning at ``omega_body`` (seed body axes; a steady turn's rates: the outer wing's
-    faster air is in M_0), else not rotating."""
+    at zero (or at the operating point ``u0``, :data:`INPUTS`' order) and its one-sided
+    derivatives, measured in MuJoCo (see the module); the body turning at ``omega_body``
+    (seed body axes; a steady turn's rates: the outer wing's faster air is in M_0), else
+    not rotating."""
 
     m, cb, sched = fb.m, fb.cb, fb.schedule
     d = getattr(fb, "_jac_data", None)
@@ -77,9 +83,10 @@ def measured_jacobian(
     quat = pitch_quat(pitch)
     omega_mj = np.zeros(3) if omega_body is None else np.asarray(omega_body) * (1.0, -1.0, -1.0)
     k_in = len(INPUTS) + 1
+    at = np.zeros(len(INPUTS)) if u0 is None else np.asarray(u0, dtype=float)
     # every input's wingbeat in one prescription (per sample: the same numbers as one
     # prescription per input)
-    split = [split_inputs(names, params, _unit(i)) for i in range(k_in)]
+    split = [split_inputs(names, params, at + _unit(i)) for i in range(k_in)]
     z = np.zeros((n * k_in, len(names)))
     sw = np.repeat([np.concatenate([sp[2], sp[2]]) for sp in split], n, axis=0)
     pres = sched.prescribe(
@@ -198,7 +205,12 @@ RATE_STEP = 0.01
 
 
 def measured_rate_derivatives(
-    fb, params: np.ndarray, pitch: float, speed: float, omega_body: np.ndarray | None = None
+    fb,
+    params: np.ndarray,
+    pitch: float,
+    speed: float,
+    omega_body: np.ndarray | None = None,
+    u0: np.ndarray | None = None,
 ) -> np.ndarray:
     """(3, 3): the wingbeat-mean moment's derivatives (seed body axes, about the centre of
     mass) with respect to the body rates p, q, r (seed body axes), measured like
@@ -210,18 +222,23 @@ def measured_rate_derivatives(
     (:meth:`AttitudeLoop.update`)."""
     base = np.zeros(3) if omega_body is None else np.asarray(omega_body, dtype=float)
     states = [base] + [base + RATE_STEP * np.eye(3)[i] for i in range(3)]
-    out = held_mean_moments(fb, params, pitch, speed, states)
+    out = held_mean_moments(fb, params, pitch, speed, states, u0)
     return np.stack([(o - out[0]) / RATE_STEP for o in out[1:]], axis=1)
 
 
 def held_mean_moments(
-    fb, params: np.ndarray, pitch: float, speed: float, omegas: list[np.ndarray]
+    fb,
+    params: np.ndarray,
+    pitch: float,
+    speed: float,
+    omegas: list[np.ndarray],
+    u0: np.ndarray | None = None,
 ) -> list[np.ndarray]:
     """The wingbeat-mean moment (3,) (seed body axes, about the centre of mass) of the
     held body (pitch ``pitch``, airspeed ``speed``) beating ``params`` with every input at
-    zero, over :data:`JAC_SAMPLES` phases, once per body rate in ``omegas`` (seed body
-    axes): the measurement :func:`measured_rate_derivatives` and
-    :mod:`birdsim.flight.attitude_stiffness` share."""
+    zero (or at the operating point ``u0``), over :data:`JAC_SAMPLES` phases, once per
+    body rate in ``omegas`` (seed body axes): the measurement
+    :func:`measured_rate_derivatives` and :mod:`birdsim.flight.attitude_stiffness` share."""
     m, cb, sched = fb.m, fb.cb, fb.schedule
     d = getattr(fb, "_jac_data", None)
     if d is None:
@@ -229,7 +246,8 @@ def held_mean_moments(
     n = JAC_SAMPLES
     times = np.arange(n) * (fb.red.period / n)
     names = sched.names
-    right, left, sh, tail = split_inputs(names, params, np.zeros(len(INPUTS)))
+    at = np.zeros(len(INPUTS)) if u0 is None else np.asarray(u0, dtype=float)
+    right, left, sh, tail = split_inputs(names, params, at)
     z = np.zeros((n, len(names)))
     sw = np.repeat([np.concatenate([sh, sh])], n, axis=0)
     pres = sched.prescribe(

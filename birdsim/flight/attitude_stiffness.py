@@ -15,25 +15,33 @@ import numpy as np
 from birdsim.flight.attitude_jacobians import JAC_STEP, held_mean_moments
 
 
-def _mean_moment(fb, params: np.ndarray, pitch: float, speed: float) -> np.ndarray:
+def _mean_moment(
+    fb, params: np.ndarray, pitch: float, speed: float, u0: np.ndarray | None = None
+) -> np.ndarray:
     """The wingbeat-mean moment (3,) of the held body, not rotating, as
     :func:`birdsim.flight.attitude_jacobians.measured_jacobian` measures its ``M_0``."""
-    return held_mean_moments(fb, params, pitch, speed, [np.zeros(3)])[0]
+    return held_mean_moments(fb, params, pitch, speed, [np.zeros(3)], u0)[0]
 
 
 def measured_pitch_stiffness(
-    fb, params: np.ndarray, pitch: float, speed: float, m0: np.ndarray | None = None
+    fb,
+    params: np.ndarray,
+    pitch: float,
+    speed: float,
+    m0: np.ndarray | None = None,
+    u0: np.ndarray | None = None,
 ) -> float:
     """dM_y / d theta (weight x semispan per rad, table units; < 0 restoring): the
     wingbeat-mean pitching moment's change when the held body pitches up by
     :data:`JAC_STEP` and the stroke plane (if the model has one) turns down by as much,
-    one-sided from ``m0`` (the moment at ``pitch``; measured if not given)."""
-    base = _mean_moment(fb, params, pitch, speed) if m0 is None else np.asarray(m0)
+    one-sided from ``m0`` (the moment at ``pitch``; measured if not given); the inputs at
+    the operating point ``u0`` (default zero)."""
+    base = _mean_moment(fb, params, pitch, speed, u0) if m0 is None else np.asarray(m0)
     moved = np.array(params, dtype=float)
     names = fb.schedule.names
     if "stroke_plane" in names:
         moved[names.index("stroke_plane")] -= JAC_STEP
-    up = _mean_moment(fb, moved, pitch + JAC_STEP, speed)
+    up = _mean_moment(fb, moved, pitch + JAC_STEP, speed, u0)
     return float((up[1] - base[1]) / JAC_STEP)
 
 
