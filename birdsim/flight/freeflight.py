@@ -301,7 +301,8 @@ def fly(
                     # the stroke plane turns by the table's pitch minus the body's (m3/m4:
                     # they compose about one axis), the body's predicted SP_LEAD ahead
                     offset = np.zeros(len(names))
-                    lead = float(rates[1]) * SP_LEAD * TWO_PI
+                    q_turn = 0.0 if turn_cmd is None else float(turn_cmd.turn_rates[1])
+                    lead = (float(rates[1]) - q_turn) * SP_LEAD * TWO_PI  # not the turn's q
                     # the table's pitch as its target (cmd.params), not the schedule's
                     # smoothed output, smoothed again (docs/free-body.md)
                     p_table = cmd.params[names.index("pitch")] if "pitch" in names else pitch
