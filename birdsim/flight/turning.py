@@ -86,7 +86,7 @@ SLOW_TURN_PITCH = 0.37
 #: ``I = (0.85, 3.29, 3.81)``; the slow turn's body sagged from its 21-degree posture to
 #: 15 degrees) and ``(I_y - I_x) p q`` in yaw.  Measured (seed bird, path RMS after two
 #: wingbeats, without / with): turn-90 0.0785 / 0.0718, circle 0.0826 / 0.0797, s-turn
-#: 0.1073 / 0.1049, u-turn 0.0666 / 0.0484 (docs/turning.md).
+#: 0.1073 / 0.1049, u-turn 0.0666 / 0.0484 (docs/turning.md, "Fourth pass").
 GYRO_FEEDFORWARD = True
 #: The body's pitch swing within a wingbeat (rad, peak to peak, the trim's probe
 #: wingbeat: ``FreeBird.start_rocking``) above which a turn takes the straight flight's
