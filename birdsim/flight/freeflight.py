@@ -17,7 +17,7 @@ from typing import Any
 import numpy as np
 
 from birdsim.errors import BirdsimError, limits_text, magnitude_ok
-from birdsim.flight.attitude import FIT_BEATS, AttitudeLoop
+from birdsim.flight.attitude import FIT_BEATS
 from birdsim.flight.attitude_commands import bank_command, body_rates, command_filter
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.demand_schedule import DemandSchedule, RefState
@@ -27,7 +27,7 @@ from birdsim.flight.pitch_plan import PitchPlan, feedforward_pitch
 from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
 from birdsim.flight.track import TrackFrame, is_three_d
 from birdsim.flight.trim import sample_reference, trim_start
-from birdsim.flight.turning import TURN_PITCH_PLAN, axis_beats, turn_command, turn_pitch
+from birdsim.flight.turning import TURN_PITCH_PLAN, attitude_loop_for, turn_command, turn_pitch
 from birdsim.flight.wingbeat import INPUT_SMOOTHING_BEATS, WingbeatSchedule
 from birdsim.physics.bird import Bird
 from birdsim.physics.units import reduced_bird, scales
@@ -208,8 +208,7 @@ def fly(
         pres = fb.schedule.prescribe(np.zeros(1), cmd.params[None, :], zeros, zeros)
         omega0, d_pitch0 = getattr(fb, "start_rotation", (None, 0.0))
         fb.start(pos0, vel0, pres, pitch=float(pres.pitch[0]) - d_pitch0, omega_body=omega0)
-        att = AttitudeLoop(fb, enabled=free and attitude_loop, **axis_beats(track))
-        att.straight = JAC_AT_COMMAND and track is None
+        att = attitude_loop_for(fb, free and attitude_loop, track, JAC_AT_COMMAND)
         if free and trim and hasattr(fb, "start_moment"):
             att.preset_integral(fb.start_moment, cmd.params, float(pres.pitch[0]), float(ref0.vx))
         compensate = free and stroke_compensation and "stroke_plane" in names
@@ -287,6 +286,7 @@ def fly(
                         dt_ctl,
                         (pitch_ref, pitch_rate_ref, pitch_acc_ref),
                         lat_int,
+                        att.inertia,
                     )
                     roll_cmd, yaw_cmd = turn_cmd.roll, turn_cmd.yaw
                     lateral_corr[0] = lat_accel - track.state(t).a_lat
@@ -295,13 +295,14 @@ def fly(
                     att_window, fb.d, config.log_per_beat, TWO_PI, zyx_pitch, roll_cmd, yaw_cmd
                 )
                 body_pitch = pitch_ref - float(err[1])  # the wingbeat-mean pitch
-                at_cmd = JAC_AT_COMMAND and turn_cmd is None  # where the Jacobians are measured
+                at_cmd = att.straight  # the Jacobians measured at the command (else the body's)
                 jac_pitch, jac_params = (pitch_ref if at_cmd else body_pitch), None
                 if compensate:
                     # the stroke plane turns by the table's pitch minus the body's (m3/m4:
                     # they compose about one axis), the body's predicted SP_LEAD ahead
                     offset = np.zeros(len(names))
-                    lead = float(rates[1]) * SP_LEAD * TWO_PI
+                    q_turn = 0.0 if turn_cmd is None else float(turn_cmd.turn_rates[1])
+                    lead = (float(rates[1]) - q_turn) * SP_LEAD * TWO_PI  # not the turn's q
                     # the table's pitch as its target (cmd.params), not the schedule's
                     # smoothed output, smoothed again (docs/free-body.md)
                     p_table = cmd.params[names.index("pitch")] if "pitch" in names else pitch

@@ -89,6 +89,7 @@ def trim_start(
     pitch = euler_zyx(np.array([r[1][3:7] for r in rec]))[:, 1]
     pitch_rate = -omega[1]  # nose up is about MuJoCo -y
     d_pitch = float((pitch - pres.pitch[0] - pitch_rate * t).mean())
+    fb.start_rocking = float(np.ptp(pitch - pitch_rate * t))  # the within-beat pitch swing
     # the wingbeat-mean aerodynamic moment about the centre of mass with every attitude
     # input at zero (seed body axes): what the attitude loop's integral starts from
     fb.start_moment = np.array([r[3] for r in rec]).mean(axis=0)

@@ -101,7 +101,13 @@ def turns_keyframes(
     return out
 
 
-def _level(name: str, deltas: list[float], speed: float, radius: float, ramp: float, text: str):
+def level_turns(
+    name: str, deltas: list[float], speed: float, radius: float, ramp: float, text: str
+) -> FlightPath:
+    """A level path of turns by ``deltas`` (rad, positive to the left) at ``speed``
+    [omega s] on ``radius`` [semispans] with ``ramp``-wingbeat turn-rate ramps, at the
+    cruise height, with :data:`STRAIGHT_BEATS` of straight flight before and after (the
+    first turn starts at x = 0); the shape of ``turn-90``, ``circle`` and ``s-turn``."""
     ks = turns_keyframes(STRAIGHT_BEATS, deltas, speed, radius, ramp, CRUISE_HEIGHT)
     first = _K(0.0, CRUISE_HEIGHT, V=speed, heading=0.0, turn_rate=0.0, regime="straight")
     ks[0] = _K(ks[0].t, ks[0].z, V=speed, heading=0.0, turn_rate=0.0, regime="turn")
@@ -178,7 +184,7 @@ def _solve_u_turn() -> tuple[float, float]:
 
 def _presets() -> dict[str, FlightPath]:
     quarter = 0.5 * math.pi
-    turn_90 = _level(
+    turn_90 = level_turns(
         "turn-90",
         [quarter],
         SLOW_SPEED,
@@ -187,7 +193,7 @@ def _presets() -> dict[str, FlightPath]:
         f"a level 90-degree turn to the left at V = {SLOW_SPEED:g} omega s, radius "
         f"{SLOW_RADIUS:g} semispans (Ros et al. 2011's pigeon turns)",
     )
-    circle = _level(
+    circle = level_turns(
         "circle",
         [TWO_PI],
         CRUISE_SPEED,
@@ -196,7 +202,7 @@ def _presets() -> dict[str, FlightPath]:
         f"a level 360-degree circle to the left at cruise speed, radius {CIRCLE_RADIUS:g} "
         "semispans",
     )
-    s_turn = _level(
+    s_turn = level_turns(
         "s-turn",
         [0.25 * math.pi, -0.25 * math.pi],
         CRUISE_SPEED,
@@ -221,6 +227,7 @@ __all__ = [
     "SLOW_SPEED",
     "TURN_PRESETS",
     "U_TURN_THETA",
+    "level_turns",
     "turn_keyframes",
     "turns_keyframes",
 ]

@@ -27,6 +27,7 @@ from typing import Any
 
 import numpy as np
 
+from birdsim.flight.attitude import AttitudeLoop
 from birdsim.flight.attitude_commands import command_filter
 from birdsim.flight.bank import TurnAttitude, lateral_acceleration, lateral_fit, turn_attitude
 
@@ -78,6 +79,45 @@ TURN_PITCH_PLAN = True
 #: 0.56; held at 0.30 / 0.37 / 0.45 rad: 0.27 (saturated) / 0.60 / 1.45; the settings of
 #: SLOW_TURN_AXIS_BEATS then made 0.37 fly; docs/turning.md.)
 SLOW_TURN_PITCH = 0.37
+#: Feed the rigid body's gyroscopic moment ``w x (I w)`` of the commanded body rates
+#: forward (:func:`turn_command`).  A body turning about the vertical while pitched up
+#: and banked rotates about all three of its axes; with unequal principal moments Euler's
+#: equations ask ``(I_z - I_x) p r`` of nose-up moment to hold the pitch (the seed bird:
+#: ``I = (0.85, 3.29, 3.81)``; the slow turn's body sagged from its 21-degree posture to
+#: 15 degrees) and ``(I_y - I_x) p q`` in yaw.  Measured (seed bird, path RMS after two
+#: wingbeats, without / with): turn-90 0.0785 / 0.0718, circle 0.0826 / 0.0797, s-turn
+#: 0.1073 / 0.1049, u-turn 0.0666 / 0.0484 (docs/turning.md, "Fourth pass").
+GYRO_FEEDFORWARD = True
+#: The body's pitch swing within a wingbeat (rad, peak to peak, the trim's probe
+#: wingbeat: ``FreeBird.start_rocking``) above which a turn takes the straight flight's
+#: fourth-stage pitch loop (:func:`fourth_stage_pitch`): the attitude loop's Jacobians
+#: are re-measured when the estimated pitch moves by ``attitude.JAC_DPITCH`` (0.1 rad),
+#: so a swing larger than that leaks into the one-wingbeat estimate and makes ``M_0``
+#: jump with it (docs/free-body.md, "The pigeon's attitude, fourth stage").
+ROCKING_LIMIT = 0.1
+
+
+def fourth_stage_pitch(track: Any, fb: Any) -> bool:
+    """Whether a flight on ``track`` (None: straight) takes the fourth-stage pitch loop
+    (``AttitudeLoop.straight``: Jacobians at the commanded pitch, the tail's stiffness in
+    the gains, the pitch integral bounded by authority, the pitch allocated slow to fast):
+    straight flight always; a turn when the body rocks by more than :data:`ROCKING_LIMIT`
+    within a wingbeat (``fb.start_rocking``), except a slow turn.
+
+    Why: the seed bird rocks 1.7 (cruise) and 3.7 (V = 0.2) degrees and keeps the second
+    stage's loop in its turns (with the fourth: s-turn 0.127 against 0.105 semispan); the
+    pigeon rocks 6.6 and 13.9 degrees, and with the second stage's loop its pitch
+    alternated by 20-40 degrees from wingbeat to wingbeat in every turn (its cruise turns
+    of 23 degrees of bank diverged; with the fourth stage they fly: docs/turning.md).  A
+    slow turn keeps the second stage: its lowered posture puts the compensated stroke
+    plane within 0.25 rad of its bound, the pigeon's body overshoots the posture by 15
+    degrees, the stroke plane clips, and the tail's stiffness the fourth stage's gains
+    count on (measured with the stroke plane holding the wings in the world) is not
+    there: the body sank nose down with the stroke plane at its bound (turn-90 3.5
+    semispans RMS against 0.31)."""
+    if track is None:
+        return True
+    return not track.slow_turn and float(getattr(fb, "start_rocking", 0.0)) > ROCKING_LIMIT
 
 
 def turn_pitch(
@@ -104,6 +144,16 @@ def turn_pitch(
     return p - w * e, dp - dw * e - w * dp, ddp - ddw * e - 2.0 * dw * dp - w * ddp
 
 
+def attitude_loop_for(fb: Any, enabled: bool, track: Any, at_command: bool) -> AttitudeLoop:
+    """The attitude loop of a flight on ``track`` (None: straight), with the time
+    constants of :func:`axis_beats` and, where ``at_command`` (``freeflight.JAC_AT_COMMAND``)
+    and :func:`fourth_stage_pitch` say so, the fourth-stage pitch loop
+    (``AttitudeLoop.straight``)."""
+    att = AttitudeLoop(fb, enabled=enabled, **axis_beats(track))
+    att.straight = at_command and fourth_stage_pitch(track, fb)
+    return att
+
+
 def axis_beats(track: Any) -> dict[str, Any]:
     """The attitude loop's time constants for a flight on ``track`` (None: straight
     flight, the loop's own), as keyword arguments of ``AttitudeLoop``; a turn keeps the
@@ -125,12 +175,14 @@ def turn_command(
     dt: float,
     pitch: tuple[float, float, float],
     lat_integral: list[float],
+    inertia: np.ndarray | None = None,
 ) -> tuple[TurnAttitude, float, tuple[float, float]]:
     """The turning attitude command at reduced time ``t``: ``lat_window`` the last
     wingbeat's (side offset, its rate) samples (to the left of the path), ``pitch`` the
     body's pitch command (value, rate, acceleration), ``filter_state`` the bank
     correction's filter (value, rate) and ``lat_integral`` (one number, updated here)
-    the integral of the side offset.  Returns the command, the commanded sideways
+    the integral of the side offset; ``inertia`` the body's principal moments (seed body
+    axes) for the gyroscopic feed-forward (:data:`GYRO_FEEDFORWARD`).  Returns the command, the commanded sideways
     acceleration (to the left; the force in the banked plane carries it) and the
     filter's new state."""
     heading, bank_ff = track.bank_plan(t)
@@ -149,18 +201,36 @@ def turn_command(
         h2, b2 = track.bank_plan(t + FF_LEAD * TWO_PI)
         ahead = turn_attitude(h2, (b2[0] + value, b2[1] + rate, b2[2]), pitch)
         cmd = replace(cmd, rate=np.asarray(ahead.rate), acc=np.asarray(ahead.acc))
+    if GYRO_FEEDFORWARD and inertia is not None:
+        cmd = replace(cmd, acc=cmd.acc + gyroscopic_acceleration(cmd.rate, inertia))
     return cmd, a_left, (value, rate)
+
+
+def gyroscopic_acceleration(rate: np.ndarray, inertia: np.ndarray) -> np.ndarray:
+    """The rigid body's gyroscopic term ``(w x (I w)) / I`` (per axis, per unit
+    inertia; body rates ``w`` and principal moments ``I`` in the same body axes): Euler's
+    equations ``I dw/dt + w x (I w) = M``, so the moment that turns the body at ``w(t)``
+    is ``I (dw/dt + this)``; the attitude loop multiplies its acceleration command by
+    ``I``."""
+    i = np.asarray(inertia, dtype=float)
+    w = np.asarray(rate, dtype=float)
+    return np.cross(w, i * w) / i
 
 
 __all__ = [
     "BANK_BEATS",
     "BANK_CORRECTION_MAX",
     "FF_LEAD",
+    "GYRO_FEEDFORWARD",
+    "ROCKING_LIMIT",
     "TURN_AXIS_BEATS",
     "SLOW_TURN_AXIS_BEATS",
     "SLOW_TURN_PITCH",
     "TURN_PITCH_PLAN",
+    "attitude_loop_for",
     "axis_beats",
+    "fourth_stage_pitch",
+    "gyroscopic_acceleration",
     "turn_command",
     "turn_pitch",
 ]
