@@ -252,24 +252,29 @@ class AttitudeLoop:
         return m0, jac
 
     def bounds(self, params: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        kin = self.fb.kin
-        spec = {p.name: p for p in kin.params}
-        lo, hi = [], []
-        for name, kind, bound in INPUTS:
-            if kind == "diff":
-                if name in kin.param_names and name.endswith("_amp"):
-                    # an amplitude stays within its bounds on both wings (>= 0)
-                    p = float(params[kin.param_names.index(name)])
-                    r = max(0.0, 2.0 * min(p - spec[name].lower, spec[name].upper - p))
-                    b = min(bound, r)
-                else:  # an angle (the stroke plane): the table's bounds bound the search only
-                    b = bound if name in kin.param_names else 0.0
-                lo.append(-b)
-                hi.append(b)
-            else:
-                lo.append(-bound)
-                hi.append(bound)
-        return np.array(lo), np.array(hi)
+        """(lo, hi) of :data:`INPUTS` at ``params``: a differential amplitude stays within
+        its parameter's bounds on both wings (>= 0); an angle (the stroke plane) is bounded
+        by its input bound only (the table's bounds bound the search)."""
+        plan = self.__dict__.get("_bounds_plan")
+        if plan is None:  # per input: (parameter index or -1, lower, upper, bound)
+            kin = self.fb.kin
+            names, spec = kin.param_names, {p.name: p for p in kin.params}
+            plan = []
+            for name, kind, bound in INPUTS:
+                if kind == "diff" and name in names and name.endswith("_amp"):
+                    plan.append((names.index(name), spec[name].lower, spec[name].upper, bound))
+                elif kind == "diff":
+                    plan.append((-1, 0.0, 0.0, bound if name in names else 0.0))
+                else:
+                    plan.append((-1, 0.0, 0.0, bound))
+            self._bounds_plan = plan
+        hi = []
+        for i, lower, upper, bound in plan:
+            if i >= 0:
+                p = float(params[i])
+                bound = min(bound, max(0.0, 2.0 * min(p - lower, upper - p)))
+            hi.append(bound)
+        return np.array([-b for b in hi]), np.array(hi)
 
     def update(
         self,
