@@ -106,6 +106,8 @@ LATERAL_INTEGRAL_RAD = 0.1
 #: Allocate pitch by :func:`birdsim.flight.attitude_pitch.pitch_allocation` (else the
 #: symmetric inputs together, by least squares, as roll and yaw).
 PITCH_SPLIT = True
+#: the groups as index arrays (integral_bound: the same entries as the lists pick)
+_AUTHORITY = ((SYM_ROWS, np.array(SYM_INPUTS)), (LAT_ROWS, np.array(LAT_INPUTS)))
 
 
 @dataclass(frozen=True)
@@ -166,10 +168,17 @@ def integral_bound(
         return lim
     half = (np.asarray(hi, dtype=float) - np.asarray(lo, dtype=float)) / 2
     auth = np.zeros(3)
-    for rows, cols in ((SYM_ROWS, SYM_INPUTS), (LAT_ROWS, LAT_INPUTS)):
+    jac = np.asarray(jac)
+    for rows, cols in _AUTHORITY:
+        h = half[cols]
         for r in rows:
-            auth[r] = float(np.abs(np.asarray(jac)[r, cols]) @ half[cols])
+            auth[r] = float(np.abs(jac[r, cols]) @ h)
     return np.where(axes, np.maximum(lim, auth / np.asarray(inertia, dtype=float)), lim)
+
+
+def _norm(v: np.ndarray) -> float:
+    """``np.linalg.norm`` of a float vector as it computes it (sqrt of the dot product)."""
+    return math.sqrt(v.dot(v))
 
 
 class AttitudeLoop:
@@ -344,7 +353,7 @@ class AttitudeLoop:
         for rows, cols in groups:
             cols = [c for c in cols if hi[c] > lo[c]]
             if not cols:
-                miss += float(np.linalg.norm(demand[rows]))
+                miss += _norm(demand[rows])
                 continue
             scale = (hi[cols] - lo[cols]) / 2
             a = jac[np.ix_(rows, cols)] * scale
@@ -354,9 +363,9 @@ class AttitudeLoop:
             x, mask = bounded_lsq(a_aug, b_aug, lo[cols] / scale, hi[cols] / scale)
             u[cols] = x * scale
             active = active or bool(np.any(mask != 0))
-            miss += float(np.linalg.norm(a @ x - demand[rows]))
+            miss += _norm(a @ x - demand[rows])
         self.u = u
-        self.saturated = bool(active and miss > 0.1 * np.linalg.norm(demand) + 1e-12)
+        self.saturated = bool(active and miss > 0.1 * _norm(demand) + 1e-12)
         return split_inputs(names, params, u)
 
 

@@ -38,8 +38,12 @@ def _lsq(
     scale = np.where(hi > lo, (hi - lo) / 2, 1.0)
     sa = a * scale
     reg = math.sqrt(lam) * max(float(np.abs(sa).max()), 1e-12)
-    a_aug = np.vstack([sa[None, :], reg * np.eye(len(a))])
-    b_aug = np.concatenate([[b], np.zeros(len(a))])
+    n = len(a)  # [sa; reg I] and [b; 0] (the same numbers as vstack / eye / concatenate)
+    a_aug = np.zeros((n + 1, n))
+    a_aug[0] = sa
+    a_aug[1:].flat[:: n + 1] = reg
+    b_aug = np.zeros(n + 1)
+    b_aug[0] = b
     x, mask = bounded_lsq(a_aug, b_aug, lo / scale, hi / scale)
     return x * scale, bool(np.any(mask != 0))
 
