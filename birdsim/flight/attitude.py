@@ -230,11 +230,16 @@ class AttitudeLoop:
         self.integral = np.clip((m0 - np.asarray(moment)) / self.inertia, -lim, lim)
 
     def integral_limit(
-        self, omega_a: np.ndarray, jac: np.ndarray, params: np.ndarray
+        self,
+        omega_a: np.ndarray,
+        jac: np.ndarray,
+        params: np.ndarray,
+        bounds: tuple[np.ndarray, np.ndarray] | None = None,
     ) -> np.ndarray:
         """Per axis bound of the integral's share (per unit inertia): :func:`integral_bound`
-        with this loop's inertia and the inputs' bounds at ``params``."""
-        lo, hi = self.bounds(params)
+        with this loop's inertia and the inputs' bounds at ``params`` (``bounds``: those
+        bounds when the caller has them)."""
+        lo, hi = self.bounds(params) if bounds is None else bounds
         auth = INTEGRAL_AUTHORITY if self.straight else False
         lim = integral_bound(omega_a, jac, lo, hi, self.inertia, auth)
         if self.lateral_integral_rad is not None:  # straight flight: no lateral bias
@@ -259,6 +264,21 @@ class AttitudeLoop:
             k = measured_pitch_stiffness(self.fb, params, pitch, v, m0)
             self.stiffness = np.array([0.0, max(-k, 0.0), 0.0])
         return m0, jac
+
+    def _plant(self) -> tuple[np.ndarray, np.ndarray, AttitudeGains, np.ndarray]:
+        """(the rate derivatives used, the flapping's damping per axis (>= 0), the gains
+        placed for it, the rate derivatives' residual after the damping), made again only
+        when a measurement replaced the rate derivatives or the stiffness."""
+        key = (self.rate_jac, self.stiffness, self.inertia, self.gains)
+        hit = self.__dict__.get("_plant_for")
+        if hit is not None and all(a is b for a, b in zip(hit[0], key)):
+            return hit[1]
+        d_used = self.rate_jac if RATE_CANCEL else np.zeros((3, 3))
+        damping = np.maximum(-np.diag(d_used), 0.0)
+        g = damped_gains(self.gains.omega_a, damping / self.inertia, self.stiffness / self.inertia)
+        out = (d_used, damping, g, d_used + np.diag(damping))
+        self._plant_for = (key, out)
+        return out
 
     def bounds(self, params: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(lo, hi) of :data:`INPUTS` at ``params``: a differential amplitude stays within
@@ -325,21 +345,18 @@ class AttitudeLoop:
         # the flapping's own damping (each axis, >= 0) is part of the plant the gains are
         # placed for; what is left of the rate derivatives (cross terms, any negative
         # damping) is cancelled with the estimated rates
-        d_used = self.rate_jac if RATE_CANCEL else np.zeros((3, 3))
-        damping = np.maximum(-np.diag(d_used), 0.0)
-        g = damped_gains(self.gains.omega_a, damping / self.inertia, self.stiffness / self.inertia)
-        lim = self.integral_limit(g.omega_a, jac, params)
+        d_used, damping, g, residual = self._plant()
+        lo, hi = self.bounds(params)
+        lim = self.integral_limit(g.omega_a, jac, params, (lo, hi))
         if not self.saturated:  # anti-windup: frozen while the inputs are at their bounds
             self.integral = np.clip(self.integral + dt * g.ki * err, -lim, lim)
         rate_err = (0.0 if rate_cmd is None else rate_cmd) - rates
         acc = 0.0 if acc_cmd is None else acc_cmd
         demand = self.inertia * (acc + g.kp * err + g.kd * rate_err + self.integral) - m0
-        residual = d_used + np.diag(damping)
         demand -= residual @ (np.asarray(rates, dtype=float) - turn)
         # the damping opposes the commanded rotation too: fed forward (the damping then
         # acts on the rate error only, as the gains assume)
         demand += damping * (rate_err + np.asarray(rates, dtype=float) - turn)
-        lo, hi = self.bounds(params)
         u = np.zeros(len(INPUTS))
         miss, active, groups = 0.0, False, [(SYM_ROWS, SYM_INPUTS), (LAT_ROWS, LAT_INPUTS)]
         if PITCH_SPLIT and self.straight:  # pitch: slow moment by the wings, fast by the tail
@@ -356,7 +373,7 @@ class AttitudeLoop:
                 miss += _norm(demand[rows])
                 continue
             scale = (hi[cols] - lo[cols]) / 2
-            a = jac[np.ix_(rows, cols)] * scale
+            a = jac[rows][:, cols] * scale  # jac[np.ix_(rows, cols)]
             reg = math.sqrt(LAMBDA) * max(float(np.abs(a).max()), 1e-12)
             a_aug = np.vstack([a, reg * np.eye(len(cols))])
             b_aug = np.concatenate([demand[rows], np.zeros(len(cols))])
