@@ -233,7 +233,9 @@ def fly(
             )
         lat_int, turn_cmd = [0.0], None
         roll_ref = roll_rate_ref = roll_acc_ref = 0.0  # turning's bank command (filtered)
-        att_window: list[tuple[np.ndarray, np.ndarray]] = []
+        # the attitude estimate's samples (quat, C_SEED omega) of the last FIT_BEATS
+        att_window = (np.empty((0, 4)), np.empty((0, 3)))
+        att_keep = FIT_BEATS * config.log_per_beat
         lat_window: list[tuple[float, float]] = []
         dt_ctl = steps_ctl * h
         for k in range(n_ctl):
@@ -349,7 +351,7 @@ def fly(
                 e_pos = np.stack([refs["x"] - q_new[:, 0], refs["z"] - q_new[:, 2]], axis=1)
                 e_vel = np.stack([refs["vx"] - v_new[:, 0], refs["vz"] - v_new[:, 2]], axis=1)
                 v_along = v_new[:, 0]
-                lat_window.extend(zip(q_new[:, 1], v_new[:, 1]))
+                lat_window.extend(zip(q_new[:, 1].tolist(), v_new[:, 1].tolist()))  # floats
                 y_ref = np.zeros(len(new))
             else:
                 e_pos, e_vel, v_along, lateral, refs = track.errors(
@@ -359,7 +361,10 @@ def fly(
                 y_ref = refs["y"]
             for j in range(len(new)):
                 window.add(e_pos[j], e_vel[j], float(v_along[j]))
-            att_window.extend(zip(q_new[:, 3:7], C_SEED * v_new[:, 3:6]))
+            att_window = (
+                np.concatenate([att_window[0], q_new[:, 3:7]])[-att_keep:],
+                np.concatenate([att_window[1], C_SEED * v_new[:, 3:6]])[-att_keep:],
+            )
             # |v - wind| as np.linalg.norm computes it (sqrt of the dot product)
             rows["V_air"].extend(math.sqrt(u.dot(u)) for u in v_new[:, :3] - wind)
             rows["params"].extend(pres.params[: len(new) * every : every])
@@ -368,7 +373,6 @@ def fly(
                 if pitch_ref is None
                 else [pitch_ref] * len(new)
             )
-            del att_window[: max(0, len(att_window) - FIT_BEATS * config.log_per_beat)]
             del lat_window[: max(0, len(lat_window) - FIT_BEATS * config.log_per_beat)]
             extend_rows(rows, refs, y_ref, cmd, fb.cb.tail_controls, att, turn_cmd)
             if progress is not None:
