@@ -53,7 +53,7 @@ from birdsim.flight.attitude_jacobians import (
 from birdsim.flight.attitude_pitch import WING_PITCH_BEATS, pitch_allocation
 from birdsim.flight.attitude_stiffness import measured_pitch_stiffness
 from birdsim.flight.body_attitude import FIT_BEATS, euler_zyx, wingbeat_fit_matrix
-from birdsim.flight.bounded_lsq import bounded_lsq
+from birdsim.flight.bounded_lsq import bounded_lsq, vector_norm
 from birdsim.mujoco.tail import TailControls
 
 #: Wingbeats per time constant of the attitude loop.  Measured (seed bird): without the
@@ -176,11 +176,6 @@ def integral_bound(
     return np.where(axes, np.maximum(lim, auth / np.asarray(inertia, dtype=float)), lim)
 
 
-def _norm(v: np.ndarray) -> float:
-    """``np.linalg.norm`` of a float vector as it computes it (sqrt of the dot product)."""
-    return math.sqrt(v.dot(v))
-
-
 class AttitudeLoop:
     """The inner loop for one flight (see the module docstring)."""
 
@@ -230,15 +225,10 @@ class AttitudeLoop:
         self.integral = np.clip((m0 - np.asarray(moment)) / self.inertia, -lim, lim)
 
     def integral_limit(
-        self,
-        omega_a: np.ndarray,
-        jac: np.ndarray,
-        params: np.ndarray,
-        bounds: tuple[np.ndarray, np.ndarray] | None = None,
+        self, omega_a: np.ndarray, jac: np.ndarray, params: np.ndarray, bounds: tuple | None = None
     ) -> np.ndarray:
         """Per axis bound of the integral's share (per unit inertia): :func:`integral_bound`
-        with this loop's inertia and the inputs' bounds at ``params`` (``bounds``: those
-        bounds when the caller has them)."""
+        with this loop's inertia and the inputs' bounds at ``params`` (or ``bounds``)."""
         lo, hi = self.bounds(params) if bounds is None else bounds
         auth = INTEGRAL_AUTHORITY if self.straight else False
         lim = integral_bound(omega_a, jac, lo, hi, self.inertia, auth)
@@ -266,9 +256,8 @@ class AttitudeLoop:
         return m0, jac
 
     def _plant(self) -> tuple[np.ndarray, np.ndarray, AttitudeGains, np.ndarray]:
-        """(the rate derivatives used, the flapping's damping per axis (>= 0), the gains
-        placed for it, the rate derivatives' residual after the damping), made again only
-        when a measurement replaced the rate derivatives or the stiffness."""
+        """(rate derivatives used, damping per axis (>= 0), the gains placed for it, the
+        residual), made again when a measurement replaced the rate derivatives or stiffness."""
         key = (self.rate_jac, self.stiffness, self.inertia, self.gains)
         hit = self.__dict__.get("_plant_for")
         if hit is not None and all(a is b for a, b in zip(hit[0], key)):
@@ -281,9 +270,7 @@ class AttitudeLoop:
         return out
 
     def bounds(self, params: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """(lo, hi) of :data:`INPUTS` at ``params``: a differential amplitude stays within
-        its parameter's bounds on both wings (>= 0); an angle (the stroke plane) is bounded
-        by its input bound only (the table's bounds bound the search)."""
+        """(lo, hi) of :data:`INPUTS` at ``params`` (per input: parameter index, bounds)."""
         plan = self.__dict__.get("_bounds_plan")
         if plan is None:  # per input: (parameter index or -1, lower, upper, bound)
             kin = self.fb.kin
@@ -291,11 +278,11 @@ class AttitudeLoop:
             plan = []
             for name, kind, bound in INPUTS:
                 if kind == "diff" and name in names and name.endswith("_amp"):
+                    # an amplitude stays within its bounds on both wings (>= 0)
                     plan.append((names.index(name), spec[name].lower, spec[name].upper, bound))
-                elif kind == "diff":
-                    plan.append((-1, 0.0, 0.0, bound if name in names else 0.0))
-                else:
-                    plan.append((-1, 0.0, 0.0, bound))
+                else:  # an angle (the stroke plane): the table's bounds bound the search only
+                    b = 0.0 if kind == "diff" and name not in names else bound
+                    plan.append((-1, 0.0, 0.0, b))
             self._bounds_plan = plan
         hi = []
         for i, lower, upper, bound in plan:
@@ -370,7 +357,7 @@ class AttitudeLoop:
         for rows, cols in groups:
             cols = [c for c in cols if hi[c] > lo[c]]
             if not cols:
-                miss += _norm(demand[rows])
+                miss += vector_norm(demand[rows])
                 continue
             scale = (hi[cols] - lo[cols]) / 2
             a = jac[rows][:, cols] * scale  # jac[np.ix_(rows, cols)]
@@ -380,9 +367,9 @@ class AttitudeLoop:
             x, mask = bounded_lsq(a_aug, b_aug, lo[cols] / scale, hi[cols] / scale)
             u[cols] = x * scale
             active = active or bool(np.any(mask != 0))
-            miss += _norm(a @ x - demand[rows])
+            miss += vector_norm(a @ x - demand[rows])
         self.u = u
-        self.saturated = bool(active and miss > 0.1 * _norm(demand) + 1e-12)
+        self.saturated = bool(active and miss > 0.1 * vector_norm(demand) + 1e-12)
         return split_inputs(names, params, u)
 
 

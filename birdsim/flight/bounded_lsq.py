@@ -24,6 +24,8 @@ allocation's shapes (3x2 to 6x4, regularisation rows down to 1e-6), and tested
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from scipy.optimize import lsq_linear
 
@@ -105,4 +107,9 @@ def _lstsq(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return np.linalg.lstsq(a, b, rcond=-1)[0]
 
 
-__all__ = ["bounded_lsq"]
+def vector_norm(v: np.ndarray) -> float:
+    """``np.linalg.norm`` of a float vector as it computes it (sqrt of the dot product)."""
+    return math.sqrt(v.dot(v))
+
+
+__all__ = ["bounded_lsq", "vector_norm"]

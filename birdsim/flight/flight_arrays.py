@@ -49,6 +49,12 @@ def attitude_estimate(
     return fit[0] @ err, fit[0] @ rate
 
 
+def keep_last(window: tuple, new: tuple, n: int) -> tuple:
+    """``window``'s arrays (samples along the first axis) with ``new``'s appended, the
+    last ``n`` samples of each."""
+    return tuple(np.concatenate([a, b])[-n:] for a, b in zip(window, new))
+
+
 def error_rotvec(
     quat: np.ndarray, pitch_cmd: float, roll_cmd: float = 0.0, yaw_cmd: float = 0.0
 ) -> np.ndarray:

@@ -21,7 +21,7 @@ from birdsim.flight.attitude import FIT_BEATS, AttitudeLoop
 from birdsim.flight.attitude_commands import bank_command, body_rates, command_filter
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.demand_schedule import DemandSchedule, RefState
-from birdsim.flight.flight_arrays import attitude_estimate, extend_rows, flight_arrays
+from birdsim.flight.flight_arrays import attitude_estimate, extend_rows, flight_arrays, keep_last
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
 from birdsim.flight.pitch_plan import PitchPlan, feedforward_pitch
 from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
@@ -233,11 +233,9 @@ def fly(
             )
         lat_int, turn_cmd = [0.0], None
         roll_ref = roll_rate_ref = roll_acc_ref = 0.0  # turning's bank command (filtered)
-        # the attitude estimate's samples (quat, C_SEED omega) of the last FIT_BEATS
-        att_window = (np.empty((0, 4)), np.empty((0, 3)))
-        att_keep = FIT_BEATS * config.log_per_beat
+        att_window = (np.empty((0, 4)), np.empty((0, 3)))  # quat, C_SEED omega (FIT_BEATS)
         lat_window: list[tuple[float, float]] = []
-        dt_ctl = steps_ctl * h
+        dt_ctl, n_fit = steps_ctl * h, FIT_BEATS * config.log_per_beat
         for k in range(n_ctl):
             t = fb.time
             _ = control_hook and control_hook(k, t, fb)  # a flock's lockstep
@@ -361,10 +359,7 @@ def fly(
                 y_ref = refs["y"]
             for j in range(len(new)):
                 window.add(e_pos[j], e_vel[j], float(v_along[j]))
-            att_window = (
-                np.concatenate([att_window[0], q_new[:, 3:7]])[-att_keep:],
-                np.concatenate([att_window[1], C_SEED * v_new[:, 3:6]])[-att_keep:],
-            )
+            att_window = keep_last(att_window, (q_new[:, 3:7], C_SEED * v_new[:, 3:6]), n_fit)
             # |v - wind| as np.linalg.norm computes it (sqrt of the dot product)
             rows["V_air"].extend(math.sqrt(u.dot(u)) for u in v_new[:, :3] - wind)
             rows["params"].extend(pres.params[: len(new) * every : every])
