@@ -134,6 +134,22 @@ class ErrorWindow:
         self.ev.append(ev)
         self.vx.append(vx)
 
+    def add_many(self, e_pos: np.ndarray, e_vel: np.ndarray, vx_air: np.ndarray) -> None:
+        """:meth:`add` of every row of ``e_pos``, ``e_vel`` (n, 2) and ``vx_air`` (n,)."""
+        e_pos, e_vel = np.asarray(e_pos, dtype=float), np.asarray(e_vel, dtype=float)
+        vx = np.asarray(vx_air, dtype=float).tolist()
+        k, n = len(self.vx), len(vx)
+        while k + n > self._rows[2].shape[0]:
+            self._rows = [np.concatenate([r, np.empty_like(r)]) for r in self._rows]
+        self._rows[0][k : k + n], self._rows[1][k : k + n], self._rows[2][k : k + n] = (
+            e_pos,
+            e_vel,
+            vx,
+        )
+        self.ep.extend(e_pos)
+        self.ev.extend(e_vel)
+        self.vx.extend(vx)
+
     def _window(self, xs: list, k: int) -> np.ndarray:
         n = len(xs)
         if n >= k:  # the arrays' rows: the same numbers, no list

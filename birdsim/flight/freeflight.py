@@ -357,8 +357,7 @@ def fly(
                 )
                 lat_window.extend(map(tuple, lateral))
                 y_ref = refs["y"]
-            for j in range(len(new)):
-                window.add(e_pos[j], e_vel[j], float(v_along[j]))
+            window.add_many(e_pos, e_vel, v_along)
             att_window = keep_last(att_window, (q_new[:, 3:7], C_SEED * v_new[:, 3:6]), n_fit)
             # |v - wind| as np.linalg.norm computes it (sqrt of the dot product)
             rows["V_air"].extend(math.sqrt(u.dot(u)) for u in v_new[:, :3] - wind)
