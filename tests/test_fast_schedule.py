@@ -113,3 +113,23 @@ def test_aero_constants_follow_the_spread_and_switches():
             for x, y in zip(got, fresh):
                 assert np.array_equal(x, y)
         assert aero_kernel.parameters(cb)[0] is aero_kernel.parameters(cb)[0]  # cached
+
+
+def test_lookup_row_is_lookup_many():
+    """Bitwise: the controller's one-row lookup against lookup_many's dict (random
+    demands inside the grid and beyond its edges, clipped)."""
+    from birdsim.tables.lookup import load_table
+
+    table = load_table("tables/m4.npz")
+    names = list(table.param_names) + ["achieved_Fx", "achieved_Fz", "achieved_P", "cost"]
+    rng = np.random.default_rng(5)
+    lo = [float(table.axes[a][0]) for a in table.axis_names]
+    hi = [float(table.axes[a][-1]) for a in table.axis_names]
+    for _ in range(200):
+        fx, fz, v = (
+            float(rng.uniform(a - 0.1 * (b - a), b + 0.1 * (b - a))) for a, b in zip(lo, hi)
+        )
+        row = table.lookup_row(fx, fz, v)
+        raw = table.lookup_many(fx, fz, v, clip=True)
+        assert np.array_equal(row, np.array([float(raw[n]) for n in names]))
+    assert table.lookup_row(float("nan"), -0.1, 0.5) is None  # lookup_many refuses it

@@ -313,6 +313,13 @@ class Controller:
             or abs(clipped.get("climb", 0.0) - used.get("climb", 0.0)) > V_CLIP_TOLERANCE
         )
         extra = {"climb": clipped["climb"]} if self.has_climb else {}
+        row_of = None if self.has_climb else getattr(self.table, "lookup_row", None)
+        row = row_of(clipped["Fx"], clipped["Fz"], clipped["V"]) if row_of else None
+        if row is not None:  # lookup_many's numbers, one row (birdsim.tables.lookup)
+            d = len(self.names)
+            miss = max(abs(float(row[d]) - clipped["Fx"]), abs(float(row[d + 1]) - clipped["Fz"]))
+            saturated = saturated or miss > REACH_TOLERANCE
+            return Command(fx, fz, v_air, row[:d].copy(), bool(saturated), a_cmd, 0.0)
         raw = self.table.lookup_many(clipped["Fx"], clipped["Fz"], clipped["V"], clip=True, **extra)
         params = np.array([float(raw[n]) for n in self.names])
         if "achieved_Fx" in raw:  # the cells' achieved forces, interpolated like the parameters
