@@ -8,8 +8,8 @@ schedule's numpy filters (``fast_schedule``, bitwise).  The compiled
 loop does the same operations in the same order except two sums (the tail's
 ``xmat @ f``, which numpy hands to BLAS, and the wings' power ``applied[W] @ qvel[W]``),
 summed naively; the prescription's ball joint sums two 3-term products in another order
-than numpy's einsum and stacked matmul; the lookup and the allocation are bitwise
-scipy's.  Tolerances: one wingbeat from one state, every log entry within 1e-12 (an ulp
+than numpy's einsum and stacked matmul; the lookup is bitwise scipy's, the allocation's
+unbounded solve numba's ``lstsq`` (the same gelsd: round-off).  Tolerances: one wingbeat from one state, every log entry within 1e-12 (an ulp
 of the tail force grown over 128 steps stays far below); the prescription's rows within
 1e-15 (measured 6e-17); a closed-loop flight of 10 wingbeats with a gust, every
 switch on against every switch off: the path within 1e-9 semispan (issue 27's bound;
