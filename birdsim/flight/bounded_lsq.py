@@ -47,9 +47,10 @@ def bounded_lsq(
 ) -> tuple[np.ndarray, np.ndarray]:
     """``argmin |a x - b|`` with ``lb <= x <= ub``: (x, active mask as lsq_linear's:
     -1 / 1 where a lower / upper bound is active, 0 elsewhere)."""
-    if ENABLED and kernel is not None and a.dtype == b.dtype == np.float64:
+    if ENABLED and kernel is not None and a.dtype == b.dtype == np.float64 and a.ndim == 2:
         x = np.empty(a.shape[1])
-        state = kernel(np.ascontiguousarray(a), np.ascontiguousarray(b), lb, ub, x)
+        lo, hi = np.asarray(lb, dtype=float), np.asarray(ub, dtype=float)
+        state = kernel(np.ascontiguousarray(a), np.ascontiguousarray(b), lo, hi, x)
         if state == 1:  # solved within the bounds
             return x, np.zeros(x.shape[0])
         if state == 0:  # outside them: lsq_linear
