@@ -258,7 +258,7 @@ class AttitudeLoop:
     def _plant(self) -> tuple[np.ndarray, np.ndarray, AttitudeGains, np.ndarray]:
         """(rate derivatives used, damping per axis (>= 0), the gains placed for it, the
         residual), made again when a measurement replaced the rate derivatives or stiffness."""
-        key = (self.rate_jac, self.stiffness, self.inertia, self.gains)
+        key = (self.rate_jac, self.stiffness, self.inertia, self.gains, RATE_CANCEL)
         hit = self.__dict__.get("_plant_for")
         if hit is not None and all(a is b for a, b in zip(hit[0], key)):
             return hit[1]
