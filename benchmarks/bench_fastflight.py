@@ -27,6 +27,7 @@ from birdsim.flight import (
     fast_path,
     fast_prescription,
     fast_schedule,
+    fast_window,
 )
 from birdsim.flight.freeflight import fly
 from birdsim.flight.path import FlightPath, PathKeyframe
@@ -85,7 +86,7 @@ def _model_figures(model: str, bird: Bird, long: bool) -> dict[str, float]:
     warm = FlightPath("warm", 1.0, False, False, (PathKeyframe(0.0, 6.0, V=0.9),))
     switches = (
         *(fast_loop, fast_prescription, fast_lookup, bounded_lsq),
-        *(fast_path, fast_estimate, fast_schedule),
+        *(fast_path, fast_estimate, fast_schedule, fast_window),
     )
     saved = [s.ENABLED for s in switches]
     best: dict[str, float] = {}

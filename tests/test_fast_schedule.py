@@ -133,3 +133,24 @@ def test_lookup_row_is_lookup_many():
         raw = table.lookup_many(fx, fz, v, clip=True)
         assert np.array_equal(row, np.array([float(raw[n]) for n in names]))
     assert table.lookup_row(float("nan"), -0.1, 0.5) is None  # lookup_many refuses it
+
+
+@pytest.mark.parametrize("per_beat", [4, 64, 200])
+def test_compiled_error_estimate_is_numpys(monkeypatch, per_beat):
+    """Bitwise: ErrorWindow.estimate with the compiled means (numpy's pairwise sum along
+    the airspeed, row by row along the errors) against numpy's, window after window."""
+    from birdsim.flight import fast_window
+    from birdsim.flight.controller import ErrorWindow
+
+    rng = np.random.default_rng(per_beat)
+    windows = {on: ErrorWindow(per_beat, 2 * np.pi) for on in (True, False)}
+    for _ in range(3 * per_beat):
+        ep, ev, vx = rng.normal(size=2) * 1e-3, rng.normal(size=2) * 1e-2, 0.9 + 0.1 * rng.normal()
+        got = {}
+        for on, w in windows.items():
+            w.add(ep, ev, vx)
+            monkeypatch.setattr(fast_window, "ENABLED", on)
+            got[on] = w.estimate()
+        for a, b in zip(got[True], got[False]):
+            assert np.array_equal(a, b)
+    assert fast_window.estimate(windows[True]._rows, per_beat, per_beat, 0.1, 1.0) is None

@@ -39,6 +39,7 @@ from typing import Any, Protocol
 import numpy as np
 
 from birdsim.errors import BirdsimError
+from birdsim.flight import fast_window
 from birdsim.flight.demand import (
     air_path_angle,
 )  # one air-path rule (CLIMB_SPEED re-exported)
@@ -167,6 +168,11 @@ class ErrorWindow:
             return np.zeros(2), np.zeros(2), 0.0
         # the mean of n samples lags the newest by (n - 1) / 2 sample intervals
         n, half = self.n, 0.5 * (self.period - self.dt)
+        count = len(self.vx)
+        if count == len(self.ep) == len(self.ev):  # a full window: compiled, bitwise
+            fast = fast_window.estimate(self._rows, count, n, half, self.period)
+            if fast is not None:
+                return fast
         ev_win = self._window(self.ev, n + 1)
         ep = self._window(self.ep, n).mean(axis=0)
         ev = ev_win[1:].mean(axis=0)
