@@ -12,7 +12,7 @@ with the legs tucked, then reaching out (prescribed in flight like the wings,
 :func:`reach_motion`), on past the path's end; the flight is cut at the last logged
 sample before a foot touches (:func:`_handover`) and the contact phase starts from that
 state: the wings stop where they are (their velocity set to zero, the whole bird
-keeping its momentum) and fold back to :data:`~birdsim.flight.contact.REST_WINGS` over
+keeping its momentum) and fold back to their rest pose (:func:`~birdsim.flight.contact.rest_wings`: folded for m5) over
 a wingbeat, the legs brake the body within a few hundredths of a semispan, and the hips
 balance it and lower it to the standing pitch.  The flight is flown again (at most
 :data:`PASSES` times) until the pitch, the feet's aim and the arrival speed agree with
@@ -28,7 +28,7 @@ from typing import Any
 import mujoco
 import numpy as np
 
-from birdsim.flight.contact import REST_WINGS, STEPS_PER_BEAT, ContactBird
+from birdsim.flight.contact import STEPS_PER_BEAT, ContactBird, rest_wings
 from birdsim.flight.freeflight import FlightResult, fly
 from birdsim.flight.leg_motion import LegMotion, LegPlan
 from birdsim.flight.legwork import touchdown, touchdown_speed
@@ -309,7 +309,7 @@ def land(
             STAND_BEATS,
             pitch_to=STAND_PITCH,
             rise_beats=LOWER_BEATS,
-            fold=(stopped, REST_WINGS),
+            fold=(stopped, rest_wings(model)),
             balance=True,
             stand_beats=STAND_UP_BEATS,
         )
