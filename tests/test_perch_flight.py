@@ -87,6 +87,35 @@ def _check_landing(r) -> None:
     # at rest at the end: the last wingbeat's speed below 1e-3 omega s
     assert np.max(np.linalg.norm(a["qvel"][-64:, :3], axis=1)) < 1e-3
     _legs_move_smoothly(r)
+    # the feet touch while the bird still flies its approach, not after a hover: at the
+    # flight's last sample the path's reference moves at more than half the touchdown
+    # speed (measured: 0.93-0.97 of it, the bird arriving 0.3 wingbeat early), and the bird
+    # arrives moving forward and mostly down (path: 75 deg below the horizontal;
+    # measured 67-74 deg)
+    last = int(np.nonzero(a["phase"] == "flight")[0][-1])
+    dt = a["t"][last] - a["t"][last - 1]
+    v_ref = np.hypot(
+        a["x_ref"][last] - a["x_ref"][last - 1], a["z_ref"][last] - a["z_ref"][last - 1]
+    )
+    assert v_ref / dt > 0.5 * legs["touchdown_speed_target"]
+    vx, vz = legs["touchdown_velocity"]
+    assert 0.0 < vx < -vz
+    # the wings stopped flapping and rest at their rest pose (m3: swept back)
+    _wings_at_rest(r, "m3")
+
+
+def _wings_at_rest(r, model: str) -> None:
+    """The wings' joints over the last wingbeat: at the model's rest pose (within 1e-4
+    rad: each step sets the held pose at its start and MuJoCo's step moves it by up to
+    1e-5, measured)."""
+    from birdsim.flight.contact import ContactBird, rest_wings
+    from birdsim.mujoco.driver import wing_arrays
+
+    cb = ContactBird(model, r.bird)
+    pq = cb._pres_qpos()
+    rest = wing_arrays(cb.m, rest_wings(model))[0][0][pq]
+    q = r.arrays["qpos"][-64:][:, pq]
+    assert np.max(np.abs(q - rest)) < 1e-4
 
 
 def test_take_off_jumps_and_flies_seed():
@@ -101,6 +130,41 @@ def test_landing_touches_down_and_stands_seed():
 def test_take_off_and_landing_pigeon():
     _check_take_off(_take_off("pigeon"))
     _check_landing(_land("pigeon"))
+
+
+def test_landing_path_ends_on_the_perch_moving():
+    """The landing path's reference ends at the touchdown point moving at the measured
+    touchdown speed (0.060 omega s, 75 deg down), not at rest above the perch."""
+    from birdsim.flight.perch_landing import landing_path, touchdown_velocity
+
+    path = landing_path(PATH_PRESETS["landing"], 1.75, 5.9)
+    end = path.state(path.duration)
+    vx, vz = touchdown_velocity()
+    assert (end.x, end.z) == pytest.approx((5.9, 1.75), abs=1e-9)
+    assert (end.vx, end.vz) == pytest.approx((vx, vz), abs=1e-9)
+    assert np.hypot(vx, vz) == pytest.approx(1.0 / 16.63, rel=1e-9)  # 1 m/s, pigeon
+    assert vx > 0 and vz < 0
+
+
+def test_rest_wings_fold_where_the_wing_folds():
+    from birdsim.flight.contact import FOLDED_WINGS, REST_WINGS, rest_wings
+
+    assert rest_wings("m3") == REST_WINGS
+    assert rest_wings("m5") == FOLDED_WINGS and FOLDED_WINGS["elbow"] < -2.0
+
+
+@pytest.mark.slow
+def test_landing_m5_folds_its_wings_and_stands():
+    """m5 (the folding wing) lands, folds its wings (elbow and wrist flexed) and stands
+    (measured: touchdown 0.065 omega s, peak 3.44 weights, on the perch 0.007)."""
+    bird = _bird("seed")
+    r = land(PATH_PRESETS["landing"], load_table_for(bird, "m5", None), bird, "m5")
+    legs = r.meta["legs"]
+    assert legs["touchdown_speed"] == pytest.approx(legs["touchdown_speed_target"], rel=0.1)
+    assert np.linalg.norm(legs["final_offset"]) < 0.05
+    assert legs["weight_carried"] == pytest.approx(1.0, abs=0.05)
+    assert not np.any(r.arrays["saturated"])
+    _wings_at_rest(r, "m5")
 
 
 @pytest.mark.slow

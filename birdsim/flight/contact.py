@@ -88,6 +88,20 @@ WingPath = Callable[[float], tuple[np.ndarray, np.ndarray, np.ndarray]]
 #: The wings' rest pose while standing (core joint angles, rad): swept back along the
 #: body (sweep positive = tips back) and a little down.  m3 has no fold: a drawing choice.
 REST_WINGS = {"sweep": 1.35, "flap": 0.1}
+#: The folding wing's rest pose (m5): the swept-back arm's elbow flexed so that the forearm
+#: (which carries the arm panel) lies forward along it and the wrist flexed so that the
+#: hand lies back along the body, a Z fold (a drawing choice: the wrist ends 0.07 ahead
+#: of the shoulder, the whole bird's centre of mass 0.015 semispan further forward than
+#: with the wing extended and swept back).
+FOLDED_WINGS = {**REST_WINGS, "elbow": -2.8, "wrist_sweep": 2.8}
+
+
+def rest_wings(model_name: str) -> dict:
+    """The wings' rest pose for ``model_name``: folded where the model has the folding
+    wing (an elbow and a wrist that flexes in the wing plane), else swept back."""
+    names = {j.name for j in get_model(model_name).joints}
+    return dict(FOLDED_WINGS if {"elbow", "wrist_sweep"} <= names else REST_WINGS)
+
 
 #: A leg law: (reduced time since the phase began, leg q (2,), leg qdot (2,)) -> force (2,)
 LegLaw = Callable[[float, np.ndarray, np.ndarray], np.ndarray]
@@ -328,4 +342,4 @@ def beats_to_steps(beats: float) -> int:
     return int(round(beats * STEPS_PER_BEAT))
 
 
-__all__ = ["ContactBird", "LegMuscle", "beats_to_steps"]
+__all__ = ["FOLDED_WINGS", "REST_WINGS", "ContactBird", "LegMuscle", "beats_to_steps", "rest_wings"]

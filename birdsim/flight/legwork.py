@@ -250,6 +250,7 @@ def touchdown_speed(pigeon_speed_unit: float = PIGEON_SPEED_UNIT) -> float:
 #: over BALANCE_DAMPING (reduced time).
 BALANCE_GAIN = 1.0
 BALANCE_DAMPING = 3.0
+BALANCE_RAMP_BEATS = 0.25
 
 
 def balance_hip(cb: ContactBird) -> float:
@@ -272,6 +273,7 @@ def touchdown(
     rise_beats: float = 5.0,
     fold: tuple[dict, dict] | None = None,
     balance: bool = False,
+    stand_beats: float = SETTLE_BEATS,
 ) -> TouchdownResult:
     """The legs absorb a touchdown on ``target`` (world point on the perch or ground)
     and the bird stands.  ``speed`` (omega s): place the bird with its soles just
@@ -280,8 +282,9 @@ def touchdown(
     end).  ``pitch_to``: once stopped, the hips lower the body to this pitch over
     ``rise_beats``.  ``fold``: (stopped, rest) core joint angles of the wings: from the
     touchdown they fold to the rest pose over ``FOLD_BEATS``.  ``balance``: once stopped,
-    the hips also keep the centre of mass over the soles (:func:`balance_hip`).  Runs
-    ``beats`` wingbeats."""
+    the hips also keep the centre of mass over the soles (:func:`balance_hip`, brought in
+    over BALANCE_RAMP_BEATS).  ``stand_beats``: once stopped, the legs stretch from where
+    the braking left them to standing over this long.  Runs ``beats`` wingbeats."""
     d = cb.d
     if speed is not None:
         cb.place_standing(np.asarray(target, dtype=float))
@@ -325,10 +328,11 @@ def touchdown(
         if hip_to is not None:
             b = min((t - settle[0]) / (rise_beats * TWO_PI), 1.0)
             hip = settle[2] + 0.5 * (1.0 - math.cos(math.pi * b)) * (hip_to - settle[2])
-        cb.hip_ref = hip + balance_hip(cb) if balance else hip
-        blend = 0.5 * (
-            1.0 - math.cos(math.pi * min((t - settle[0]) / (SETTLE_BEATS * TWO_PI), 1.0))
-        )
+        # the balance's correction comes in over BALANCE_RAMP_BEATS (at once, its step
+        # kicked the hips and the feet hopped off the bar for a tenth of a wingbeat)
+        ramp = min(1.0, (t - settle[0]) / (BALANCE_RAMP_BEATS * TWO_PI))
+        cb.hip_ref = hip + ramp * balance_hip(cb) if balance else hip
+        blend = 0.5 * (1.0 - math.cos(math.pi * min((t - settle[0]) / (stand_beats * TWO_PI), 1.0)))
         return mu.spring(q, qd, settle[1] + blend * (mu.q_ref_stand - settle[1]))
 
     cb.set_leg_damping(False)

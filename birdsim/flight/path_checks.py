@@ -94,6 +94,8 @@ def check_obstacles(path: Any) -> None:
         floor[tb <= (ks[1].t if len(ks) > 1 else np.inf)] = GROUND_REST_Z
     if supports[1] == "ground" or getattr(path, "low_end", False):
         floor[tb >= (ks[-2].t if len(ks) > 1 else -np.inf)] = GROUND_REST_Z
+    if getattr(path, "low_end", False) and len(ks) > 2:  # a landing's flare and descent
+        floor[tb >= ks[-3].t] = GROUND_REST_Z
     low = s["z"] < floor - 1e-9
     checks = [(low, f"below the floor clearance z >= {FLOOR_CLEARANCE:g} semispans")]
     for j, p in enumerate(scene.perches, 1):

@@ -2,7 +2,7 @@
 :mod:`birdsim.flight.legwork` joined to free flight (:func:`birdsim.flight.freeflight.fly`).
 
 Take-off: the bird stands on the perch at :data:`STAND_PITCH` with its wings folded
-back (:data:`~birdsim.flight.contact.REST_WINGS`), its hips raise the body to the pitch
+back (:func:`~birdsim.flight.contact.rest_wings`: folded for m5), its hips raise the body to the pitch
 of the first wingbeat, it crouches while its wings open to that wingbeat's first pose,
 and jumps (:class:`~birdsim.flight.legwork.JumpProfile`).  At lift-off
 (the feet's normal force zero) the flight takes over: a path from the lift-off state
@@ -26,7 +26,7 @@ from typing import Any
 import numpy as np
 
 from birdsim.flight.attitude import INPUTS
-from birdsim.flight.contact import REST_WINGS, STEPS_PER_BEAT, ContactBird
+from birdsim.flight.contact import STEPS_PER_BEAT, ContactBird, rest_wings
 from birdsim.flight.controller import Controller, gains_for
 from birdsim.flight.flight_arrays import flight_arrays
 from birdsim.flight.freeflight import FlightResult, fly
@@ -231,14 +231,15 @@ def take_off(
                 cb.m, cb.kin, cb.red, params0, smoothing=config.smoothing_beats * TWO_PI
             )
             first = first_pose(sched, params0)
-            cb.hold_qpos = wing_arrays(cb.m, REST_WINGS)[0][0]  # standing: wings folded back
+            rest = rest_wings(model)
+            cb.hold_qpos = wing_arrays(cb.m, rest)[0][0]  # standing: wings folded back
             cb.place_standing(surface, STAND_PITCH)
             jr = jump(
                 cb,
                 profile or JumpProfile(),
                 after_beats=0.0,
                 pitch_to=pitch0,
-                unfold=(REST_WINGS, first),
+                unfold=(rest, first),
             )
             lo_pos = cb.d.qpos[:3].copy()
             # the legs tuck in flight from their lift-off pose (prescribed like the wings)
