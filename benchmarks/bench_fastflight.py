@@ -20,21 +20,12 @@ import time
 import mujoco
 import numpy as np
 
-from birdsim.flight import (
-    bounded_lsq,
-    fast_estimate,
-    fast_loop,
-    fast_path,
-    fast_prescription,
-    fast_schedule,
-    fast_window,
-)
+from birdsim.flight.compiled_switches import SWITCHES
 from birdsim.flight.freeflight import fly
 from birdsim.flight.path import FlightPath, PathKeyframe
 from birdsim.flight.simulate import FreeBird, SimConfig
 from birdsim.physics.bird import Bird
 from birdsim.physics.kinematics import get_model
-from birdsim.tables import fast_lookup
 from birdsim.tables.lookup import load_table
 
 BEATS = 20.0
@@ -84,10 +75,7 @@ def _model_figures(model: str, bird: Bird, long: bool) -> dict[str, float]:
     path = FlightPath("cruise", BEATS, False, False, (PathKeyframe(0.0, 6.0, V=0.9),))
     long_path = FlightPath("cruise", LONG, False, False, (PathKeyframe(0.0, 6.0, V=0.9),))
     warm = FlightPath("warm", 1.0, False, False, (PathKeyframe(0.0, 6.0, V=0.9),))
-    switches = (
-        *(fast_loop, fast_prescription, fast_lookup, bounded_lsq),
-        *(fast_path, fast_estimate, fast_schedule, fast_window),
-    )
+    switches = SWITCHES
     saved = [s.ENABLED for s in switches]
     best: dict[str, float] = {}
 

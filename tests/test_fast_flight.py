@@ -27,14 +27,11 @@ from scipy.optimize import lsq_linear
 
 from birdsim.flight import bounded_lsq as bounded_lsq_module
 from birdsim.flight import (
-    fast_estimate,
     fast_loop,
-    fast_path,
     fast_prescription,
-    fast_schedule,
-    fast_window,
 )
 from birdsim.flight.bounded_lsq import bounded_lsq
+from birdsim.flight.compiled_switches import SWITCHES
 from birdsim.flight.freeflight import fly
 from birdsim.flight.gust import Gust
 from birdsim.flight.path import FlightPath, PathKeyframe
@@ -112,16 +109,7 @@ def test_compiled_flight_follows_the_reference_flight(monkeypatch, model):
     gust = (Gust(4.0, 1.0, 0.1, -0.05, wy=0.05),)  # lateral too: the roll loop acts
     logs = {}
     for compiled in (True, False):
-        for switch in (
-            fast_loop,
-            fast_prescription,
-            fast_lookup,
-            bounded_lsq_module,
-            fast_path,
-            fast_estimate,
-            fast_schedule,
-            fast_window,
-        ):
+        for switch in SWITCHES:
             monkeypatch.setattr(switch, "ENABLED", compiled)
         r = fly(path, table, BIRD, model, config=SimConfig(attitude="free"), gusts=gust)
         logs[compiled] = r.arrays

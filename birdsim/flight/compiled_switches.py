@@ -1,0 +1,31 @@
+"""Every compiled path's switch in one place: the modules whose ``ENABLED`` flag chooses
+their compiled (numba) code over the numpy / Python reference they are tested against
+(the compiled step loop, prescription, table lookup, bounded least squares, path curves,
+attitude estimate, schedule filters and error window).  Tests and benchmarks flip them
+together to fly the reference path."""
+
+from __future__ import annotations
+
+from types import ModuleType
+
+from birdsim.flight import (
+    bounded_lsq,
+    fast_estimate,
+    fast_loop,
+    fast_path,
+    fast_prescription,
+    fast_schedule,
+    fast_window,
+)
+from birdsim.tables import fast_lookup
+
+SWITCHES: tuple[ModuleType, ...] = (
+    fast_loop,
+    fast_prescription,
+    fast_lookup,
+    bounded_lsq,
+    fast_path,
+    fast_estimate,
+    fast_schedule,
+    fast_window,
+)
