@@ -22,10 +22,14 @@ def _places():
     flock = load_flock("flock")
     path = get_flight(flock.path, turning=True)
     birds = load_birds(flock)
-    return flock, path, [
-        FlockPath(path, np.array(e.offset) / b.semispan, turn_offset=True)
-        for e, b in zip(flock.birds, birds, strict=True)
-    ]
+    return (
+        flock,
+        path,
+        [
+            FlockPath(path, np.array(e.offset) / b.semispan, turn_offset=True)
+            for e, b in zip(flock.birds, birds, strict=True)
+        ],
+    )
 
 
 def test_every_place_of_the_flock_is_a_turn_the_pigeon_flies():
