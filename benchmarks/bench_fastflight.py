@@ -26,6 +26,8 @@ from birdsim.flight import (
     fast_loop,
     fast_path,
     fast_prescription,
+    fast_schedule,
+    fast_window,
 )
 from birdsim.flight.freeflight import fly
 from birdsim.flight.path import FlightPath, PathKeyframe
@@ -82,7 +84,10 @@ def _model_figures(model: str, bird: Bird, long: bool) -> dict[str, float]:
     path = FlightPath("cruise", BEATS, False, False, (PathKeyframe(0.0, 6.0, V=0.9),))
     long_path = FlightPath("cruise", LONG, False, False, (PathKeyframe(0.0, 6.0, V=0.9),))
     warm = FlightPath("warm", 1.0, False, False, (PathKeyframe(0.0, 6.0, V=0.9),))
-    switches = (fast_loop, fast_prescription, fast_lookup, bounded_lsq, fast_path, fast_estimate)
+    switches = (
+        *(fast_loop, fast_prescription, fast_lookup, bounded_lsq),
+        *(fast_path, fast_estimate, fast_schedule, fast_window),
+    )
     saved = [s.ENABLED for s in switches]
     best: dict[str, float] = {}
 

@@ -3,12 +3,14 @@
 The reference: the Python step loop with the Python aero callback
 (``fast_loop.ENABLED = False``), the numpy prescription (``fast_prescription``), scipy's
 table interpolation (``fast_lookup``), ``lsq_linear`` (``bounded_lsq``), scipy's path curves
-(``fast_path``, bitwise) and the numpy attitude error (``fast_estimate``, round-off).  The compiled
+(``fast_path``, bitwise), the numpy attitude error (``fast_estimate``, round-off) and the
+schedule's numpy filters and the error window's means (``fast_schedule``, ``fast_window``:
+bitwise).  The compiled
 loop does the same operations in the same order except two sums (the tail's
 ``xmat @ f``, which numpy hands to BLAS, and the wings' power ``applied[W] @ qvel[W]``),
 summed naively; the prescription's ball joint sums two 3-term products in another order
-than numpy's einsum and stacked matmul; the lookup and the allocation are bitwise
-scipy's.  Tolerances: one wingbeat from one state, every log entry within 1e-12 (an ulp
+than numpy's einsum and stacked matmul; the lookup is bitwise scipy's, the allocation's
+unbounded solve numba's ``lstsq`` (the same gelsd: round-off).  Tolerances: one wingbeat from one state, every log entry within 1e-12 (an ulp
 of the tail force grown over 128 steps stays far below); the prescription's rows within
 1e-15 (measured 6e-17); a closed-loop flight of 10 wingbeats with a gust, every
 switch on against every switch off: the path within 1e-9 semispan (issue 27's bound;
@@ -24,7 +26,14 @@ import pytest
 from scipy.optimize import lsq_linear
 
 from birdsim.flight import bounded_lsq as bounded_lsq_module
-from birdsim.flight import fast_estimate, fast_loop, fast_path, fast_prescription
+from birdsim.flight import (
+    fast_estimate,
+    fast_loop,
+    fast_path,
+    fast_prescription,
+    fast_schedule,
+    fast_window,
+)
 from birdsim.flight.bounded_lsq import bounded_lsq
 from birdsim.flight.freeflight import fly
 from birdsim.flight.gust import Gust
@@ -110,6 +119,8 @@ def test_compiled_flight_follows_the_reference_flight(monkeypatch, model):
             bounded_lsq_module,
             fast_path,
             fast_estimate,
+            fast_schedule,
+            fast_window,
         ):
             monkeypatch.setattr(switch, "ENABLED", compiled)
         r = fly(path, table, BIRD, model, config=SimConfig(attitude="free"), gusts=gust)

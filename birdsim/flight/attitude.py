@@ -35,11 +35,11 @@ and the tail really do in the simulation (the analytic core's Jacobians, when
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import mujoco
 import numpy as np
 
+from birdsim.flight.attitude_gains import AttitudeGains, damped_gains
 from birdsim.flight.attitude_jacobians import (
     INPUTS,
     JAC_SAMPLES,
@@ -54,7 +54,7 @@ from birdsim.flight.attitude_pitch import WING_PITCH_BEATS, pitch_allocation
 from birdsim.flight.attitude_refresh import StalenessCheck
 from birdsim.flight.attitude_stiffness import measured_pitch_stiffness
 from birdsim.flight.body_attitude import FIT_BEATS, euler_zyx, wingbeat_fit_matrix
-from birdsim.flight.bounded_lsq import bounded_lsq
+from birdsim.flight.bounded_lsq import bounded_lsq, vector_norm
 from birdsim.mujoco.tail import TailControls
 
 #: Wingbeats per time constant of the attitude loop.  Measured (seed bird): without the
@@ -110,16 +110,8 @@ LATERAL_INTEGRAL_RAD = 0.1
 #: Allocate pitch by :func:`birdsim.flight.attitude_pitch.pitch_allocation` (else the
 #: symmetric inputs together, by least squares, as roll and yaw).
 PITCH_SPLIT = True
-
-
-@dataclass(frozen=True)
-class AttitudeGains:
-    """Per axis (roll, pitch, yaw) arrays, per unit inertia."""
-
-    omega_a: np.ndarray
-    kp: np.ndarray
-    kd: np.ndarray
-    ki: np.ndarray
+#: the groups as index arrays (integral_bound: the same entries as the lists pick)
+_AUTHORITY = ((SYM_ROWS, np.array(SYM_INPUTS)), (LAT_ROWS, np.array(LAT_INPUTS)))
 
 
 def attitude_gains(omega: float = 1.0, beats: object = AXIS_BEATS) -> AttitudeGains:
@@ -127,27 +119,6 @@ def attitude_gains(omega: float = 1.0, beats: object = AXIS_BEATS) -> AttitudeGa
     number (every axis) or three (roll, pitch, yaw)."""
     wa = omega / (2.0 * math.pi * np.broadcast_to(np.asarray(beats, dtype=float), (3,)))
     return AttitudeGains(wa, 3.0 * wa * wa, 3.0 * wa, wa**3)
-
-
-def damped_gains(
-    omega_a: np.ndarray, damping: np.ndarray, stiffness: object = 0.0
-) -> AttitudeGains:
-    """Per axis gains (per unit inertia) for a body whose wingbeat-mean rotation already
-    has the damping ``c`` and the restoring stiffness ``k`` (per unit inertia, >= 0; the
-    flapping's and the tail's, measured): closed-loop poles at ``-p``, ``p = max(c,
-    omega_a)`` (the natural pole kept where it is faster than the design), and the roots
-    of ``s^2 + 2 omega_a s + q``, ``q = max(omega_a^2, k)`` (a double pole at
-    ``-omega_a``, or, where the stiffness alone is stiffer than the design, the natural
-    frequency kept): ``Kd = p + 2 omega_a - c``, ``Kp = 2 p omega_a + q - k``, ``Ki = p
-    q``; at ``c = k = 0`` the triple pole of :func:`attitude_gains`."""
-    wa = np.asarray(omega_a, dtype=float)
-    c = np.asarray(damping, dtype=float)
-    k = np.asarray(stiffness, dtype=float)
-    p = np.maximum(c, wa)
-    stiff = k > wa * wa
-    q = np.where(stiff, k, wa * wa)
-    ki = np.where(stiff, p * k, p * wa * wa)
-    return AttitudeGains(wa, 2.0 * p * wa + q - k, p + 2.0 * wa - c, ki)
 
 
 def integral_bound(
@@ -170,9 +141,11 @@ def integral_bound(
         return lim
     half = (np.asarray(hi, dtype=float) - np.asarray(lo, dtype=float)) / 2
     auth = np.zeros(3)
-    for rows, cols in ((SYM_ROWS, SYM_INPUTS), (LAT_ROWS, LAT_INPUTS)):
+    jac = np.asarray(jac)
+    for rows, cols in _AUTHORITY:
+        h = half[cols]
         for r in rows:
-            auth[r] = float(np.abs(np.asarray(jac)[r, cols]) @ half[cols])
+            auth[r] = float(np.abs(jac[r, cols]) @ h)
     return np.where(axes, np.maximum(lim, auth / np.asarray(inertia, dtype=float)), lim)
 
 
@@ -228,11 +201,11 @@ class AttitudeLoop:
         self.integral = np.clip((m0 - np.asarray(moment)) / self.inertia, -lim, lim)
 
     def integral_limit(
-        self, omega_a: np.ndarray, jac: np.ndarray, params: np.ndarray
+        self, omega_a: np.ndarray, jac: np.ndarray, params: np.ndarray, bounds: tuple | None = None
     ) -> np.ndarray:
         """Per axis bound of the integral's share (per unit inertia): :func:`integral_bound`
-        with this loop's inertia and the inputs' bounds at ``params``."""
-        lo, hi = self.bounds(params)
+        with this loop's inertia and the inputs' bounds at ``params`` (or ``bounds``)."""
+        lo, hi = self.bounds(params) if bounds is None else bounds
         auth = INTEGRAL_AUTHORITY if self.straight else False
         lim = integral_bound(omega_a, jac, lo, hi, self.inertia, auth)
         if self.lateral_integral_rad is not None:  # straight flight: no lateral bias
@@ -258,25 +231,42 @@ class AttitudeLoop:
             self.stiffness = np.array([0.0, max(-k, 0.0), 0.0])
         return m0, jac
 
+    def _plant(self) -> tuple[np.ndarray, np.ndarray, AttitudeGains, np.ndarray]:
+        """(rate derivatives used, damping per axis (>= 0), the gains placed for it, the
+        residual), made again when a measurement replaced the rate derivatives or stiffness."""
+        key = (self.rate_jac, self.stiffness, self.inertia, self.gains, RATE_CANCEL)
+        hit = self.__dict__.get("_plant_for")
+        if hit is not None and all(a is b for a, b in zip(hit[0], key)):
+            return hit[1]
+        d_used = self.rate_jac if RATE_CANCEL else np.zeros((3, 3))
+        damping = np.maximum(-np.diag(d_used), 0.0)
+        g = damped_gains(self.gains.omega_a, damping / self.inertia, self.stiffness / self.inertia)
+        out = (d_used, damping, g, d_used + np.diag(damping))
+        self._plant_for = (key, out)
+        return out
+
     def bounds(self, params: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        kin = self.fb.kin
-        spec = {p.name: p for p in kin.params}
-        lo, hi = [], []
-        for name, kind, bound in INPUTS:
-            if kind == "diff":
-                if name in kin.param_names and name.endswith("_amp"):
+        """(lo, hi) of :data:`INPUTS` at ``params`` (per input: parameter index, bounds)."""
+        plan = self.__dict__.get("_bounds_plan")
+        if plan is None:  # per input: (parameter index or -1, lower, upper, bound)
+            kin = self.fb.kin
+            names, spec = kin.param_names, {p.name: p for p in kin.params}
+            plan = []
+            for name, kind, bound in INPUTS:
+                if kind == "diff" and name in names and name.endswith("_amp"):
                     # an amplitude stays within its bounds on both wings (>= 0)
-                    p = float(params[kin.param_names.index(name)])
-                    r = max(0.0, 2.0 * min(p - spec[name].lower, spec[name].upper - p))
-                    b = min(bound, r)
+                    plan.append((names.index(name), spec[name].lower, spec[name].upper, bound))
                 else:  # an angle (the stroke plane): the table's bounds bound the search only
-                    b = bound if name in kin.param_names else 0.0
-                lo.append(-b)
-                hi.append(b)
-            else:
-                lo.append(-bound)
-                hi.append(bound)
-        return np.array(lo), np.array(hi)
+                    b = 0.0 if kind == "diff" and name not in names else bound
+                    plan.append((-1, 0.0, 0.0, b))
+            self._bounds_plan = plan
+        hi = []
+        for i, lower, upper, bound in plan:
+            if i >= 0:
+                p = float(params[i])
+                bound = min(bound, max(0.0, 2.0 * min(p - lower, upper - p)))
+            hi.append(bound)
+        return np.array([-b for b in hi]), np.array(hi)
 
     def update(
         self,
@@ -321,21 +311,18 @@ class AttitudeLoop:
         # the flapping's own damping (each axis, >= 0) is part of the plant the gains are
         # placed for; what is left of the rate derivatives (cross terms, any negative
         # damping) is cancelled with the estimated rates
-        d_used = self.rate_jac if RATE_CANCEL else np.zeros((3, 3))
-        damping = np.maximum(-np.diag(d_used), 0.0)
-        g = damped_gains(self.gains.omega_a, damping / self.inertia, self.stiffness / self.inertia)
-        lim = self.integral_limit(g.omega_a, jac, params)
+        d_used, damping, g, residual = self._plant()
+        lo, hi = self.bounds(params)
+        lim = self.integral_limit(g.omega_a, jac, params, (lo, hi))
         if not self.saturated:  # anti-windup: frozen while the inputs are at their bounds
             self.integral = np.clip(self.integral + dt * g.ki * err, -lim, lim)
         rate_err = (0.0 if rate_cmd is None else rate_cmd) - rates
         acc = 0.0 if acc_cmd is None else acc_cmd
         demand = self.inertia * (acc + g.kp * err + g.kd * rate_err + self.integral) - m0
-        residual = d_used + np.diag(damping)
         demand -= residual @ (np.asarray(rates, dtype=float) - turn)
         # the damping opposes the commanded rotation too: fed forward (the damping then
         # acts on the rate error only, as the gains assume)
         demand += damping * (rate_err + np.asarray(rates, dtype=float) - turn)
-        lo, hi = self.bounds(params)
         u = np.zeros(len(INPUTS))
         miss, active, groups = 0.0, False, [(SYM_ROWS, SYM_INPUTS), (LAT_ROWS, LAT_INPUTS)]
         if PITCH_SPLIT and self.straight:  # pitch: slow moment by the wings, fast by the tail
@@ -349,19 +336,19 @@ class AttitudeLoop:
         for rows, cols in groups:
             cols = [c for c in cols if hi[c] > lo[c]]
             if not cols:
-                miss += float(np.linalg.norm(demand[rows]))
+                miss += vector_norm(demand[rows])
                 continue
             scale = (hi[cols] - lo[cols]) / 2
-            a = jac[np.ix_(rows, cols)] * scale
+            a = jac[rows][:, cols] * scale  # jac[np.ix_(rows, cols)]
             reg = math.sqrt(LAMBDA) * max(float(np.abs(a).max()), 1e-12)
             a_aug = np.vstack([a, reg * np.eye(len(cols))])
             b_aug = np.concatenate([demand[rows], np.zeros(len(cols))])
             x, mask = bounded_lsq(a_aug, b_aug, lo[cols] / scale, hi[cols] / scale)
             u[cols] = x * scale
             active = active or bool(np.any(mask != 0))
-            miss += float(np.linalg.norm(a @ x - demand[rows]))
+            miss += vector_norm(a @ x - demand[rows])
         self.u = u
-        self.saturated = bool(active and miss > 0.1 * np.linalg.norm(demand) + 1e-12)
+        self.saturated = bool(active and miss > 0.1 * vector_norm(demand) + 1e-12)
         return split_inputs(names, params, u)
 
 

@@ -29,6 +29,10 @@ from birdsim.flight.bounded_lsq import bounded_lsq
 #: 0.0052, 1.6 / 0.020, 14.5 / 0.037, 16.1 (the first two measured with a prototype).
 WING_PITCH_BEATS = 0.25
 
+#: the shoulders' inputs and the tail elevation's (indices into INPUTS)
+_WINGS = [i for i, (_, kind, _) in enumerate(INPUTS) if kind == "shoulder"]
+_TAIL = [name for name, _, _ in INPUTS].index("tail_elevation")
+
 
 def _lsq(
     a: np.ndarray, b: float, lo: np.ndarray, hi: np.ndarray, lam: float
@@ -38,8 +42,12 @@ def _lsq(
     scale = np.where(hi > lo, (hi - lo) / 2, 1.0)
     sa = a * scale
     reg = math.sqrt(lam) * max(float(np.abs(sa).max()), 1e-12)
-    a_aug = np.vstack([sa[None, :], reg * np.eye(len(a))])
-    b_aug = np.concatenate([[b], np.zeros(len(a))])
+    n = len(a)  # [sa; reg I] and [b; 0] (the same numbers as vstack / eye / concatenate)
+    a_aug = np.zeros((n + 1, n))
+    a_aug[0] = sa
+    a_aug[1:].flat[:: n + 1] = reg
+    b_aug = np.zeros(n + 1)
+    b_aug[0] = b
     x, mask = bounded_lsq(a_aug, b_aug, lo / scale, hi / scale)
     return x * scale, bool(np.any(mask != 0))
 
@@ -54,8 +62,7 @@ def pitch_allocation(
     row of the Jacobian (table units per rad), ``lo`` / ``hi`` the inputs' bounds; ``lam``
     the allocation's regularisation."""
     u = np.zeros(len(row))
-    wings = [i for i, (_, kind, _) in enumerate(INPUTS) if kind == "shoulder"]
-    tail = [name for name, _, _ in INPUTS].index("tail_elevation")
+    wings, tail = _WINGS, _TAIL
     w = [c for c in wings if hi[c] > lo[c]]
     active = False
     if w:

@@ -6,7 +6,7 @@ compensation of :mod:`birdsim.flight.freeflight` keeps it there).  Mostly the ta
 and the seed bird's cruise, about nothing at hover.  Per unit inertia it is four times
 larger for the pigeon (pitch inertia 0.78 reduced, the seed bird's 3.3) than for the
 seed bird, and larger than the attitude loop's own proportional gain: the pitch loop's
-gains count it as part of the plant (:func:`birdsim.flight.attitude.damped_gains`)."""
+gains count it as part of the plant (:func:`birdsim.flight.attitude_gains.damped_gains`)."""
 
 from __future__ import annotations
 

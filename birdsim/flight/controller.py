@@ -39,6 +39,7 @@ from typing import Any, Protocol
 import numpy as np
 
 from birdsim.errors import BirdsimError
+from birdsim.flight import fast_window
 from birdsim.flight.demand import (
     air_path_angle,
 )  # one air-path rule (CLIMB_SPEED re-exported)
@@ -134,6 +135,22 @@ class ErrorWindow:
         self.ev.append(ev)
         self.vx.append(vx)
 
+    def add_many(self, e_pos: np.ndarray, e_vel: np.ndarray, vx_air: np.ndarray) -> None:
+        """:meth:`add` of every row of ``e_pos``, ``e_vel`` (n, 2) and ``vx_air`` (n,)."""
+        e_pos, e_vel = np.asarray(e_pos, dtype=float), np.asarray(e_vel, dtype=float)
+        vx = np.asarray(vx_air, dtype=float).tolist()
+        k, n = len(self.vx), len(vx)
+        while k + n > self._rows[2].shape[0]:
+            self._rows = [np.concatenate([r, np.empty_like(r)]) for r in self._rows]
+        self._rows[0][k : k + n], self._rows[1][k : k + n], self._rows[2][k : k + n] = (
+            e_pos,
+            e_vel,
+            vx,
+        )
+        self.ep.extend(e_pos)
+        self.ev.extend(e_vel)
+        self.vx.extend(vx)
+
     def _window(self, xs: list, k: int) -> np.ndarray:
         n = len(xs)
         if n >= k:  # the arrays' rows: the same numbers, no list
@@ -151,6 +168,11 @@ class ErrorWindow:
             return np.zeros(2), np.zeros(2), 0.0
         # the mean of n samples lags the newest by (n - 1) / 2 sample intervals
         n, half = self.n, 0.5 * (self.period - self.dt)
+        count = len(self.vx)
+        if count == len(self.ep) == len(self.ev):  # a full window: compiled, bitwise
+            fast = fast_window.estimate(self._rows, count, n, half, self.period)
+            if fast is not None:
+                return fast
         ev_win = self._window(self.ev, n + 1)
         ep = self._window(self.ep, n).mean(axis=0)
         ev = ev_win[1:].mean(axis=0)
@@ -297,6 +319,13 @@ class Controller:
             or abs(clipped.get("climb", 0.0) - used.get("climb", 0.0)) > V_CLIP_TOLERANCE
         )
         extra = {"climb": clipped["climb"]} if self.has_climb else {}
+        row_of = None if self.has_climb else getattr(self.table, "lookup_row", None)
+        row = row_of(clipped["Fx"], clipped["Fz"], clipped["V"]) if row_of else None
+        if row is not None:  # lookup_many's numbers, one row (birdsim.tables.lookup)
+            d = len(self.names)
+            miss = max(abs(float(row[d]) - clipped["Fx"]), abs(float(row[d + 1]) - clipped["Fz"]))
+            saturated = saturated or miss > REACH_TOLERANCE
+            return Command(fx, fz, v_air, row[:d].copy(), bool(saturated), a_cmd, 0.0)
         raw = self.table.lookup_many(clipped["Fx"], clipped["Fz"], clipped["V"], clip=True, **extra)
         params = np.array([float(raw[n]) for n in self.names])
         if "achieved_Fx" in raw:  # the cells' achieved forces, interpolated like the parameters

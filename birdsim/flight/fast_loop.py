@@ -133,10 +133,23 @@ def _run_steps(
     return out
 
 
+def _all_finite(qpos, qvel):
+    """Whether every entry of ``qpos`` and ``qvel`` is finite (FreeBird._check_finite)."""
+    for i in range(qpos.shape[0]):
+        if not np.isfinite(qpos[i]):
+            return False
+    for i in range(qvel.shape[0]):
+        if not np.isfinite(qvel[i]):
+            return False
+    return True
+
+
 if numba is not None and capi.AVAILABLE and step_kernel.AVAILABLE:
     run_steps = numba.njit(cache=True)(_run_steps)
+    all_finite = numba.njit(cache=True)(_all_finite)
 else:  # pragma: no cover
     run_steps = None
+    all_finite = _all_finite
 
 
 class _Plan:
@@ -252,7 +265,8 @@ def step(fb, pres, wind: np.ndarray, record: list | None, every: int) -> bool:
         )  # one tuple per sample, as the reference appends them
     if fb.config.momentum_projection and n:
         fb.projection_max = max(fb.projection_max, float(stats[0]), float(stats[1]) * h)
-    fb._check_finite()
+    if not all_finite(plan.static[2], plan.static[3]):
+        fb._check_finite()  # raises, naming the time
     return True
 
 

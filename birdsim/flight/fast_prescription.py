@@ -268,13 +268,25 @@ def _prescribe(
         )  # fmt: skip
 
 
+def _all_finite(*arrays):
+    """Whether every entry of the 2-D arrays is finite."""
+    for a in arrays:
+        for i in range(a.shape[0]):
+            for j in range(a.shape[1]):
+                if not np.isfinite(a[i, j]):
+                    return False
+    return True
+
+
 if numba is not None:
+    all_finite = numba.njit(cache=True)(_all_finite)
     _coef = numba.njit(cache=True)(_coef)
     _shifted = numba.njit(cache=True)(_shifted)
     _side = numba.njit(cache=True)(_side)
     prescribe_kernel = numba.njit(cache=True)(_prescribe)
 else:  # pragma: no cover
     prescribe_kernel = None
+    all_finite = _all_finite
 
 _GEOMETRY: dict[int, tuple] = {}
 
@@ -336,7 +348,7 @@ def wing_rows(
         f(times, dtype=float), f(p), f(dp), f(ddp), *(f(a) for a in pl), *(f(a) for a in sh),
         use_sh, *sp, float(bird.omega), *geo, qpos, qvel, qacc,
     )  # fmt: skip
-    if not (np.isfinite(qpos).all() and np.isfinite(qvel).all() and np.isfinite(qacc).all()):
+    if not all_finite(qpos, qvel, qacc):
         return None  # the reference names the joint
     return qpos, qvel, qacc
 

@@ -24,24 +24,35 @@ def attitude_estimate(
     yaw_cmd: float = 0.0,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Wingbeat-mean attitude error and body rates (seed body axes) over the last
-    wingbeat of samples ``(quat, omega_body)``: the error is the rotation vector that
+    wingbeat of samples ``(quat, omega_body)`` (a list of pairs, or the pair of arrays): the error is the rotation vector that
     turns the body onto the command (``roll_cmd``, ``pitch_cmd``, ``yaw_cmd``), ``log(S^T S_cmd)``
     -- no Euler angles, so no gimbal lock at a steep body; before a whole wingbeat the
     missing samples are the start's."""
-    if not window:
-        window = [(np.array(d.qpos[3:7]), C_SEED * np.array(d.qvel[3:6]))]
-    quat = np.array([w[0] for w in window])
-    rate = np.array([w[1] for w in window])
+    if isinstance(window, tuple):  # the samples as two arrays (quat (n, 4), omega (n, 3))
+        quat, rate = (np.array(a, dtype=float) for a in window)
+        if not len(quat):
+            window = []
+    if not isinstance(window, tuple):
+        if not window:
+            window = [(np.array(d.qpos[3:7]), C_SEED * np.array(d.qvel[3:6]))]
+        quat = np.array([w[0] for w in window])
+        rate = np.array([w[1] for w in window])
     err = fast_estimate.error_rotvec(quat, pitch_cmd, roll_cmd, yaw_cmd)  # compiled
     if err is None:
         err = error_rotvec(quat, pitch_cmd, roll_cmd, yaw_cmd)
     n = FIT_BEATS * per_beat
-    if len(window) < n:
-        pad = n - len(window)
+    if len(quat) < n:
+        pad = n - len(quat)
         err = np.vstack([np.repeat(err[:1], pad, axis=0), err])
         rate = np.vstack([np.zeros((pad, 3)), rate])
     fit = fit_matrix(n, period)
     return fit[0] @ err, fit[0] @ rate
+
+
+def keep_last(window: tuple, new: tuple, n: int) -> tuple:
+    """``window``'s arrays (samples along the first axis) with ``new``'s appended, the
+    last ``n`` samples of each."""
+    return tuple(np.concatenate([a, b])[-n:] for a, b in zip(window, new))
 
 
 def error_rotvec(

@@ -21,7 +21,7 @@ from birdsim.flight.attitude import FIT_BEATS
 from birdsim.flight.attitude_commands import bank_command, body_rates, command_filter
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.demand_schedule import DemandSchedule, RefState
-from birdsim.flight.flight_arrays import attitude_estimate, extend_rows, flight_arrays
+from birdsim.flight.flight_arrays import attitude_estimate, extend_rows, flight_arrays, keep_last
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
 from birdsim.flight.pitch_plan import PitchPlan, feedforward_pitch
 from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
@@ -232,9 +232,9 @@ def fly(
             )
         lat_int, turn_cmd = [0.0], None
         roll_ref = roll_rate_ref = roll_acc_ref = 0.0  # turning's bank command (filtered)
-        att_window: list[tuple[np.ndarray, np.ndarray]] = []
+        att_window = (np.empty((0, 4)), np.empty((0, 3)))  # quat, C_SEED omega (FIT_BEATS)
         lat_window: list[tuple[float, float]] = []
-        dt_ctl = steps_ctl * h
+        dt_ctl, n_fit = steps_ctl * h, FIT_BEATS * config.log_per_beat
         for k in range(n_ctl):
             t = fb.time
             _ = control_hook and control_hook(k, t, fb)  # a flock's lockstep
@@ -350,7 +350,7 @@ def fly(
                 e_pos = np.stack([refs["x"] - q_new[:, 0], refs["z"] - q_new[:, 2]], axis=1)
                 e_vel = np.stack([refs["vx"] - v_new[:, 0], refs["vz"] - v_new[:, 2]], axis=1)
                 v_along = v_new[:, 0]
-                lat_window.extend(zip(q_new[:, 1], v_new[:, 1]))
+                lat_window.extend(zip(q_new[:, 1].tolist(), v_new[:, 1].tolist()))  # floats
                 y_ref = np.zeros(len(new))
             else:
                 e_pos, e_vel, v_along, lateral, refs = track.errors(
@@ -358,9 +358,8 @@ def fly(
                 )
                 lat_window.extend(map(tuple, lateral))
                 y_ref = refs["y"]
-            for j in range(len(new)):
-                window.add(e_pos[j], e_vel[j], float(v_along[j]))
-            att_window.extend(zip(q_new[:, 3:7], C_SEED * v_new[:, 3:6]))
+            window.add_many(e_pos, e_vel, v_along)
+            att_window = keep_last(att_window, (q_new[:, 3:7], C_SEED * v_new[:, 3:6]), n_fit)
             # |v - wind| as np.linalg.norm computes it (sqrt of the dot product)
             rows["V_air"].extend(math.sqrt(u.dot(u)) for u in v_new[:, :3] - wind)
             rows["params"].extend(pres.params[: len(new) * every : every])
@@ -369,7 +368,6 @@ def fly(
                 if pitch_ref is None
                 else [pitch_ref] * len(new)
             )
-            del att_window[: max(0, len(att_window) - FIT_BEATS * config.log_per_beat)]
             del lat_window[: max(0, len(lat_window) - FIT_BEATS * config.log_per_beat)]
             extend_rows(rows, refs, y_ref, cmd, fb.cb.tail_controls, att, turn_cmd)
             if progress is not None:

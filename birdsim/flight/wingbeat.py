@@ -29,7 +29,7 @@ import mujoco
 import numpy as np
 
 from birdsim.errors import BirdsimError
-from birdsim.flight import fast_prescription
+from birdsim.flight import fast_prescription, fast_schedule
 from birdsim.flight.playback import joint_derivatives
 from birdsim.mujoco.driver import set_root, wing_arrays
 from birdsim.physics.bird import Bird
@@ -166,12 +166,16 @@ class WingbeatSchedule:
         left = right if target_left is None else np.asarray(target_left, dtype=float)
         sh = np.asarray(self.shoulder_target, dtype=float)
         rel = times - t_now
-        mean = self.filter.advance(0.5 * (right + left), rel, dt)
         n = len(self.names)
         off = np.zeros(n) if offset is None else np.asarray(offset, dtype=float)
-        inputs = self.input_filter.advance(
-            np.concatenate([0.5 * (right - left), off, sh, sh]), rel, dt
-        )
+        u = 0.5 * (right + left)
+        v = np.concatenate([0.5 * (right - left), off, sh, sh])
+        fast = fast_schedule.advance(self.filter, self.input_filter, u, v, rel, dt, n)
+        if fast is not None:  # the same numbers, compiled (birdsim.flight.fast_schedule)
+            r, lft, shoulder = fast
+            return self.prescribe(times, *r, left=lft, shoulder=shoulder)
+        mean = self.filter.advance(u, rel, dt)
+        inputs = self.input_filter.advance(v, rel, dt)
         r = tuple(a + b[:, :n] + b[:, n : 2 * n] for a, b in zip(mean, inputs))
         lft = tuple(a - b[:, :n] + b[:, n : 2 * n] for a, b in zip(mean, inputs))
         return self.prescribe(times, *r, left=lft, shoulder=tuple(b[:, 2 * n :] for b in inputs))

@@ -55,10 +55,23 @@ def fold_addresses(cb: AeroCallback) -> np.ndarray:
 def parameters(cb: AeroCallback) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The callback's constants and switches for :func:`apply_aero`: (floats, ints,
     tail frame (3, 3): columns chord, span, normal in torso axes)."""
-    b, pol = cb.bird, cb.bird.polar
     ctl = cb.tail_controls if cb.tail else TailControls()
     clipped = ctl.clipped()
-    spread = min(max(float(ctl.spread), SPREAD_MIN), 1.0)
+    floats, ints = constants(cb, clipped.spread)
+    return floats, ints, np.ascontiguousarray(tail_frame(clipped))
+
+
+def constants(cb: AeroCallback, spread: float) -> tuple[np.ndarray, np.ndarray]:
+    """(floats, ints) of :func:`parameters` for the tail's clipped ``spread``; the same
+    arrays again while the callback's switches and the spread are unchanged (the control
+    loop moves the tail's elevation and roll at every update, rarely its spread).  Read
+    only: the kernels do not write them."""
+    key = (cb.enabled, cb.body_drag, cb.tail, cb.tail_site, cb.torso_site, cb.torso_body, spread)
+    hit = cb.__dict__.get("_aero_constants")
+    if hit is not None and hit[0] == key and hit[1] is cb.bird:
+        return hit[2]
+    b, pol = cb.bird, cb.bird.polar
+    spread = min(max(float(spread), SPREAD_MIN), 1.0)
     floats = np.array(
         [b.rho, pol.cd0, pol.cd_max, pol.cl_max, b.body_drag_area, b.tail_span * spread, 0.0]
         + [b.hand_fold_area_loss]
@@ -70,7 +83,8 @@ def parameters(cb: AeroCallback) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         + [tail_site, cb.torso_body],
         dtype=np.int64,
     )
-    return floats, ints, np.ascontiguousarray(tail_frame(clipped))
+    cb.__dict__["_aero_constants"] = (key, b, (floats, ints))
+    return floats, ints
 
 
 def _wings(

@@ -223,7 +223,7 @@ def set_root(
     in ``qpos`` and sets the velocity to zero.
     """
     pitch = np.asarray(pitch, dtype=float)
-    if not np.all(np.isfinite(pitch)):
+    if not np.isfinite(pitch).all():
         raise BirdsimError(f"pitch={pitch!r} is not finite; allowed: an angle in radians")
     if position_seed is not None:
         qpos[..., 0:3] = np.asarray(position_seed, dtype=float) * np.array([1.0, -1.0, -1.0])

@@ -33,6 +33,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -108,8 +109,9 @@ class KinematicModel:
     #: per panel: the joint whose angle sets the panel's area (m5's hand), or None
     area_folds: tuple[str | None, ...] = ()
 
-    @property
+    @cached_property
     def param_names(self) -> tuple[str, ...]:
+        # made once per (frozen) model: the control loops read it many times a step
         return tuple(p.name for p in self.params)
 
     @property

@@ -235,17 +235,27 @@ class LookupTable:
         ``climb`` (positive up) other than 0 needs a table with a climb axis."""
         point = fast_lookup.scalar_point(self.axes, self.axis_names, (Fx, Fz, V), climb, clip)
         pts, shape = point if point is not None else self._points(Fx, Fz, V, clip, climb)
+        vals = self._values(pts)
+        d = len(self.param_names)
+        names = list(self.param_names) + [f"achieved_{n}" for n in ACHIEVED_NAMES] + ["cost"]
+        return {n: vals[:, k].reshape(shape) for k, n in enumerate(names[: d + 4])}
+
+    def _values(self, pts: np.ndarray) -> np.ndarray:
+        """The interpolated (parameters, achieved Fx, Fz, P, cost) at ``pts`` (n, axes)."""
         fast = self.__dict__.get("_fast")
         if fast is None:
             rgi = self._interpolator()
             fast = fast_lookup.Interpolant(rgi.grid, rgi.values)
             object.__setattr__(self, "_fast", fast)
         vals = fast_lookup.interpolate(fast, pts)  # scipy's numbers, compiled
-        if vals is None:
-            vals = self._interpolator()(pts)
-        d = len(self.param_names)
-        names = list(self.param_names) + [f"achieved_{n}" for n in ACHIEVED_NAMES] + ["cost"]
-        return {n: vals[:, k].reshape(shape) for k, n in enumerate(names[: d + 4])}
+        return self._interpolator()(pts) if vals is None else vals
+
+    def lookup_row(self, Fx: float, Fz: float, V: float) -> np.ndarray | None:
+        """:meth:`lookup_many`'s numbers for one level demand of floats, clipped to the
+        grid, as one row (parameters in ``param_names`` order, then achieved Fx, Fz, P
+        and the cost), without the dict; None where :meth:`lookup_many` is needed."""
+        point = fast_lookup.scalar_point(self.axes, self.axis_names, (Fx, Fz, V), 0.0, True)
+        return None if point is None else self._values(point[0])[0]
 
     def lookup(
         self, Fx: float, Fz: float, V: float, clip: bool = False, *, climb: float = 0.0
