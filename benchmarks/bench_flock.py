@@ -1,6 +1,9 @@
 """Issue 27's flocks, flown in this process:
 
-* the shipped ``flock`` preset (12 seed birds, 36 wingbeats, m3, attitude free, turning
+* the shipped ``flock`` preset (12 pigeons, 10 s, m3, attitude free, turning 90 degrees,
+  rule ``offsets``): wall and CPU time in this process (target: within 30 s), the worst
+  bird's path RMS, the smallest separation, the saturated samples;
+* the ``flock-seed`` preset (12 seed birds, 36 wingbeats, m3, attitude free, turning
   90 degrees, steered by Reynolds' rules, the birds in lockstep): wall and CPU time
   (target: 12 birds within 30 s), the worst bird's path RMS against its own reference
   (target: within 0.2 semispan), the smallest separation (target: at least one semispan),
@@ -12,7 +15,7 @@
 * ``flock-v`` (12 pigeons in a straight V, 10 s, posed): as before the rules.
 
 ``python benchmarks/bench_flock.py --birds N [--processes P] [--beats B]`` flies N seed
-birds (rows of 5, 3 semispans apart: 20 rows for 100) on the preset's path instead
+birds (rows of 5, 3 semispans apart: 20 rows for 100) on the flock-seed preset's path instead
 (issue 27: 100 birds within 5 minutes), on P processes, for B wingbeats (default the
 path's 36; 80 is a pigeon's 10 s).  CPU is this process's and its children's.  Rows of 10 put the inner birds 13.5 semispans inside the leader's radius of
 50 (speed 0.365 omega s): those saturated in the turn and diverged (measured:
@@ -92,28 +95,29 @@ def main(argv: list[str] | None = None) -> None:
             name = f"block of {n} seed birds (steered, {processes} process(es))"
             print(_line(name, *_fly(str(p), seconds, processes)))
         return
+    print(_line("flock preset (12 pigeons, turning, offsets, 10 s)", *_fly("flock")))
     for procs in (1, 2):
-        name = f"flock preset (seed birds, turning, steered, {procs} process(es))"
-        print(_line(name, *_fly("flock", seconds, procs)))
+        name = f"flock-seed preset (seed birds, turning, steered, {procs} process(es))"
+        print(_line(name, *_fly("flock-seed", seconds, procs)))
     beats8 = 8 * 2 * math.pi  # the seed bird's 8 wingbeats in its time unit
     cpus = []
     for shared in (True, False):  # every bird in one MuJoCo model, or each in its own
         flock_step.SHARED_MODEL = shared
-        cpus.append(_fly("flock", beats8)[2])
+        cpus.append(_fly("flock-seed", beats8)[2])
     flock_step.SHARED_MODEL = True
     print(
-        f"one MuJoCo model (flock, 8 wingbeats): {cpus[0]:.1f} s CPU, each bird its own "
+        f"one MuJoCo model (flock-seed, 8 wingbeats): {cpus[0]:.1f} s CPU, each bird its own "
         f"model {cpus[1]:.1f} s CPU: {cpus[0] / cpus[1] - 1:+.1%}"
     )
-    s_info, s_wall, s_cpu, _ = _fly("flock", beats8)
-    text = (PRESET_FOLDER / "flock.toml").read_text().replace('rule = "steer"', "")
+    s_info, s_wall, s_cpu, _ = _fly("flock-seed", beats8)
+    text = (PRESET_FOLDER / "flock-seed.toml").read_text().replace('rule = "steer"', "")
     text = text.replace('path = "paths/', f'path = "{PRESET_FOLDER}/paths/')
     with tempfile.TemporaryDirectory() as tmp:
         p = Path(tmp) / "offsets.toml"
         p.write_text(text)
         o_info, o_wall, o_cpu, _ = _fly(str(p), beats8)
     print(
-        f"lockstep cost (flock, 8 wingbeats): steered in lockstep {s_cpu:.1f} s CPU, "
+        f"lockstep cost (flock-seed, 8 wingbeats): steered in lockstep {s_cpu:.1f} s CPU, "
         f"one by one (rule offsets) {o_cpu:.1f} s CPU: {s_cpu / o_cpu - 1:+.1%}"
     )
     print(_line("flock-v preset (pigeons, straight V, posed)", *_fly("flock-v")))

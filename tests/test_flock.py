@@ -95,13 +95,18 @@ def test_stacking_and_unstacking_keeps_a_birds_log(tmp_path):
 
 
 def test_the_flock_presets_parse():
-    """`flock`: 12 seed birds steered on a turning path (attitude free); `flock-v`: 12
-    pigeons in a straight V (posed)."""
-    assert {"flock", "flock-v"} <= set(preset_names())
+    """`flock`: 12 pigeons on a turning path under the rule `offsets` (attitude free, 10
+    s); `flock-seed`: 12 seed birds steered on a turning path; `flock-v`: 12 pigeons in a
+    straight V (posed)."""
+    assert {"flock", "flock-seed", "flock-v"} <= set(preset_names())
     flock = load_flock("flock")
-    assert flock.n_birds == 12 and flock.rule == "steer" and flock.attitude == "free"
-    assert {b.name for b in load_birds(flock)} == {"seed"}
+    assert flock.n_birds == 12 and flock.rule == "offsets" and flock.attitude == "free"
+    assert flock.seconds == 10.0
+    assert {b.name for b in load_birds(flock)} == {"pigeon"}
     assert get_flight(flock.path, turning=True).is_3d
+    seed = load_flock("flock-seed")
+    assert seed.n_birds == 12 and seed.rule == "steer" and seed.attitude == "free"
+    assert {b.name for b in load_birds(seed)} == {"seed"}
     v = load_flock("flock-v")
     assert v.n_birds == 12 and v.rule == "offsets"
     assert {b.name for b in load_birds(v)} == {"pigeon"}

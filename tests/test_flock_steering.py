@@ -77,7 +77,7 @@ def test_the_rules_are_bounded_and_fade_in():
 
 
 def test_a_place_by_a_turning_path_is_a_parallel_path():
-    """On the flock preset's turning path (radius 50): the place 7 semispans left flies
+    """On the flock-seed preset's turning path (radius 50): the place 7 semispans left flies
     the parallel arc of radius 43 at speed 0.5 x 43 / 50 in the steady turn, 7
     semispans from the leader's track; its rates are its positions' derivatives
     (central differences, 1e-6)."""
@@ -155,13 +155,13 @@ def test_steering_needs_the_free_attitude_and_known_keys(tmp_path):
         load_flock(str(bad))
 
 
-@pytest.mark.slow  # 12 birds x 36 wingbeats, attitude free (~40 s CPU)
-def test_the_flock_preset_meets_the_issues_targets():
-    """`flock` (12 seed birds steered through a 90-degree turn): every bird within 0.2
+@pytest.mark.slow  # 12 birds x 36 wingbeats, attitude free (~20-40 s CPU)
+def test_the_seed_flock_preset_meets_the_issues_targets():
+    """`flock-seed` (12 seed birds steered through a 90-degree turn): every bird within 0.2
     semispan RMS of its own reference after the start, no two birds closer than one
     semispan at any sample, no saturated sample (issue 27's targets); the birds turn
     (the leader's heading changes by 90 degrees to 1 degree)."""
-    flock, jobs = jobs_for("flock", "m3")
+    flock, jobs = jobs_for("flock-seed", "m3")
     arrays = fly_flock(jobs)
     info = flock_summary(arrays, 1.0)
     assert info["n_birds"] == 12
