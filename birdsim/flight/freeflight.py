@@ -17,6 +17,7 @@ from typing import Any
 import numpy as np
 
 from birdsim.errors import BirdsimError, limits_text, magnitude_ok
+from birdsim.flight import turning
 from birdsim.flight.attitude import FIT_BEATS
 from birdsim.flight.attitude_commands import bank_command, body_rates, command_filter
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
@@ -290,6 +291,7 @@ def fly(
                     )
                     roll_cmd, yaw_cmd = turn_cmd.roll, turn_cmd.yaw
                     lateral_corr[0] = lat_accel - track.state(t).a_lat
+                    att.lateral_integral_rad = turning.lateral_integral_bound(track, t)
                 zyx_pitch = pitch_ref if turn_cmd is None else turn_cmd.pitch
                 err, rates = attitude_estimate(
                     att_window, fb.d, config.log_per_beat, TWO_PI, zyx_pitch, roll_cmd, yaw_cmd

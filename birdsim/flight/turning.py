@@ -27,7 +27,7 @@ from typing import Any
 
 import numpy as np
 
-from birdsim.flight.attitude import AttitudeLoop
+from birdsim.flight.attitude import LATERAL_INTEGRAL_RAD, AttitudeLoop
 from birdsim.flight.attitude_commands import command_filter
 from birdsim.flight.bank import TurnAttitude, lateral_acceleration, lateral_fit, turn_attitude
 
@@ -165,6 +165,31 @@ def axis_beats(track: Any) -> dict[str, Any]:
     return {"beats": beats, "lateral_integral_rad": None}
 
 
+#: A track's plan is straight at t when its bank and bank rate are below this (rad, rad
+#: per time unit) now and FF_LEAD ahead (:func:`lateral_integral_bound`).
+STRAIGHT_BANK_TOL = 1e-6
+
+
+def lateral_integral_bound(track: Any, t: float) -> float | None:
+    """The roll and yaw integrals' bound (``AttitudeLoop.lateral_integral_rad``) on
+    ``track`` at ``t``: straight flight's :data:`attitude.LATERAL_INTEGRAL_RAD` where the
+    plan is straight now and :data:`FF_LEAD` ahead (no bank to trim), else None (a turn
+    keeps the full bound: its bank and yaw rate leave a bias to trim).
+
+    Why: after a turn the pigeon flew straight on with the turn's unbounded lateral
+    integrals and a roll-yaw oscillation of about 5.5 wingbeats grew from the roll-out
+    until the differential inputs saturated (90 degrees on R = 50 then 40 wingbeats
+    straight: diverged at wingbeat 47.8; bounded from the roll-out: path RMS 0.0118, none
+    saturated).  The same loop on a straight track at heading 0 with a 10 % side gust
+    diverged too (no turn, no heading change) and flew back with the bound
+    (docs/turning.md, "Straight flight after a turn")."""
+    for tt in (t, t + FF_LEAD * TWO_PI):
+        bank = track.bank_plan(tt)[1]
+        if abs(bank[0]) > STRAIGHT_BANK_TOL or abs(bank[1]) > STRAIGHT_BANK_TOL:
+            return None
+    return LATERAL_INTEGRAL_RAD
+
+
 def turn_command(
     track: Any,
     t: float,
@@ -226,11 +251,13 @@ __all__ = [
     "TURN_AXIS_BEATS",
     "SLOW_TURN_AXIS_BEATS",
     "SLOW_TURN_PITCH",
+    "STRAIGHT_BANK_TOL",
     "TURN_PITCH_PLAN",
     "attitude_loop_for",
     "axis_beats",
     "fourth_stage_pitch",
     "gyroscopic_acceleration",
+    "lateral_integral_bound",
     "turn_command",
     "turn_pitch",
 ]
