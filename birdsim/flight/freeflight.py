@@ -291,7 +291,7 @@ def fly(
                     )
                     roll_cmd, yaw_cmd = turn_cmd.roll, turn_cmd.yaw
                     lateral_corr[0] = lat_accel - track.state(t).a_lat
-                    att.lateral_integral_rad = turning.lateral_integral_bound(track, t)
+                    turning.straight_parts(att, track, t)  # the straight parts' loop
                 zyx_pitch = pitch_ref if turn_cmd is None else turn_cmd.pitch
                 err, rates = attitude_estimate(
                     att_window, fb.d, config.log_per_beat, TWO_PI, zyx_pitch, roll_cmd, yaw_cmd

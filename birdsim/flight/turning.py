@@ -27,7 +27,7 @@ from typing import Any
 
 import numpy as np
 
-from birdsim.flight.attitude import LATERAL_INTEGRAL_RAD, AttitudeLoop
+from birdsim.flight.attitude import AXIS_BEATS, LATERAL_INTEGRAL_RAD, AttitudeLoop, attitude_gains
 from birdsim.flight.attitude_commands import command_filter
 from birdsim.flight.bank import TurnAttitude, lateral_acceleration, lateral_fit, turn_attitude
 
@@ -190,6 +190,28 @@ def lateral_integral_bound(track: Any, t: float) -> float | None:
     return LATERAL_INTEGRAL_RAD
 
 
+#: On a track's straight parts a bird on the fourth-stage pitch loop (``att.straight``:
+#: one that rocks, the pigeon) also takes straight flight's time constants
+#: (``attitude.AXIS_BEATS``: roll 1 wingbeat against the turn's 1.25).  Measured (pigeon,
+#: 90 degrees at 0.5 omega s on R 55 started 1.91 / 2.86 wingbeats after wingbeat 20,
+#: then straight to 81; the flock's centreline birds): with the integrals' bound only,
+#: diverged (4.1 / 5.3 m RMS); with these too 0.0122 / 0.0233 m, none saturated.  The
+#: seed bird keeps the turn's (its presets with them: turn-90 0.0917 against 0.0684).
+STRAIGHT_PART_BEATS = True
+
+
+def straight_parts(att: AttitudeLoop, track: Any, t: float) -> None:
+    """Set ``att`` for ``track`` at ``t``: the roll and yaw integrals' bound of
+    :func:`lateral_integral_bound`, and, for a bird on the fourth-stage pitch loop,
+    straight flight's time constants on the straight parts (:data:`STRAIGHT_PART_BEATS`)."""
+    bound = lateral_integral_bound(track, t)
+    att.lateral_integral_rad = bound
+    if STRAIGHT_PART_BEATS and att.straight and not track.slow_turn:
+        beats = AXIS_BEATS if bound is not None else TURN_AXIS_BEATS
+        if getattr(att, "axis_beats", TURN_AXIS_BEATS) != beats:
+            att.axis_beats, att.gains = beats, attitude_gains(att.fb.red.omega, beats)
+
+
 def turn_command(
     track: Any,
     t: float,
@@ -252,12 +274,14 @@ __all__ = [
     "SLOW_TURN_AXIS_BEATS",
     "SLOW_TURN_PITCH",
     "STRAIGHT_BANK_TOL",
+    "STRAIGHT_PART_BEATS",
     "TURN_PITCH_PLAN",
     "attitude_loop_for",
     "axis_beats",
     "fourth_stage_pitch",
     "gyroscopic_acceleration",
     "lateral_integral_bound",
+    "straight_parts",
     "turn_command",
     "turn_pitch",
 ]
