@@ -28,6 +28,13 @@ def folder(tmp_path_factory) -> Path:
     w = tmp_path_factory.mktemp("studio-browser")
     (w / "climb.toml").write_text((REPO / "examples" / "climb-and-level.toml").read_text())
     (w / "broken.toml").write_text("name = = 1\n[keyframe\n")
+    from birdsim.flight.flock import PRESET_FOLDER
+
+    turning = PRESET_FOLDER / "paths" / "turning.toml"  # a flock of two, 3 wingbeats
+    text = f'path = "{turning}"\nmodel = "m3"\nattitude = "free"\nrule = "offsets"\n'
+    text += f"seconds = {3 * 2 * np.pi}\n"
+    text += "[[bird]]\noffset = [0.0, 0.0, 0.0]\n[[bird]]\noffset = [-3.5, 3.5, 0.0]\n"
+    (w / "two.toml").write_text(text)
     return w
 
 
@@ -311,3 +318,31 @@ def test_the_view_of_a_flock_frames_every_bird(browser, tmp_path):
     finally:
         page.close()
     assert _errors(messages) == []
+
+
+def test_a_flock_is_flown_from_the_page(server, browser):
+    """Choosing a flock disables the page's bird, model, gusts and open loop (its file gives
+    them; the server refuses them) and the page flies it and draws both birds; the page
+    used to send its default bird with every flight, so a flock was refused in the browser."""
+    page = browser.new_page()
+    messages: list[str] = []
+    page.on("console", lambda m: messages.append(f"{m.type}: {m.text}"))
+    page.on("pageerror", lambda e: messages.append(f"pageerror: {e}"))
+    try:
+        page.goto(server.url)
+        page.wait_for_selector("#keyframes tbody tr")
+        page.select_option("#source", "two.toml")
+        page.wait_for_function("document.getElementById('bird').disabled")
+        assert page.evaluate("document.getElementById('add-gust').disabled")
+        page.click("#fly")
+        page.wait_for_function(
+            "window.birdsimViewers && window.birdsimViewers.length >= 1", timeout=120_000
+        )
+        assert page.evaluate("document.getElementById('error').hidden")
+        summary = page.inner_text(".st-flight .st-summary")
+        assert "2 birds, worst bird" in summary, summary
+        page.select_option("#source", "cruise")
+        page.wait_for_function("!document.getElementById('bird').disabled")
+        assert _errors(messages) == []
+    finally:
+        page.close()

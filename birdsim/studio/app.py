@@ -117,6 +117,7 @@ def create_app(root: str | Path) -> Flask:
             flock = load_flock(source_arg(name))
             return jsonify(
                 path=None,
+                flock=True,
                 note=f"{name!r} is a flock of {flock.n_birds} birds (rule {flock.rule}): "
                 "flown as its file says, every bird drawn; not edited here",
             )

@@ -9,7 +9,7 @@ const OPTIONS = JSON.parse(document.getElementById("birdsim-options").textConten
 const KEY_COLUMNS = ["t", "x", "V", "z", "vx", "vz", "regime"];
 const GUST_COLUMNS = ["t0", "duration", "wx", "wz"];
 const DOWNLOADS = ["mp4", "usd", "bvh", "csv", "log", "html"];
-const state = { path: null, note: "", handles: null };
+const state = { path: null, note: "", handles: null, flock: false };
 
 function el(tag, attrs = {}, parent = null, text = "") {
   const e = document.createElement(tag);
@@ -91,11 +91,24 @@ function fillPath(path, note) {
   if (path) for (const row of path.keyframe) addRow(t, KEY_COLUMNS, row);
 }
 
+// A flock's file gives its birds, path and model: the page's bird, gusts and open loop do
+// not apply (the server refuses them), so they are disabled and not sent.
+const FLOCK_FIXED = ["bird", "model", "open-loop", "add-gust"];
+
+function setFlock(flock) {
+  state.flock = flock;
+  for (const id of FLOCK_FIXED) {
+    const e = document.getElementById(id);
+    if (e) e.disabled = flock;
+  }
+}
+
 async function loadPath() {
   showError("");
   try {
     const data = await api(`/api/path?source=${encodeURIComponent(document.getElementById("source").value)}`);
     fillPath(data.path, data.note);
+    setFlock(Boolean(data.flock));
   } catch (err) {
     fillPath(null, "");
     showError(err.message);
@@ -137,13 +150,15 @@ function showHandles(viewer) {
 async function fly() {
   showError("");
   const progress = document.getElementById("progress");
-  const body = {
-    bird: document.getElementById("bird").value,
-    model: document.getElementById("model").value,
-    gusts: readRows(document.getElementById("gusts")).map((g) => GUST_COLUMNS.map((c) => g[c] ?? 0).join(":")),
-    open_loop: document.getElementById("open-loop").checked,
-    label: document.getElementById("source").value,
-  };
+  const body = state.flock
+    ? { label: document.getElementById("source").value }
+    : {
+        bird: document.getElementById("bird").value,
+        model: document.getElementById("model").value,
+        gusts: readRows(document.getElementById("gusts")).map((g) => GUST_COLUMNS.map((c) => g[c] ?? 0).join(":")),
+        open_loop: document.getElementById("open-loop").checked,
+        label: document.getElementById("source").value,
+      };
   const path = currentPath();
   if (path) body.path = path;
   else body.source = document.getElementById("source").value;
@@ -179,7 +194,7 @@ async function openFlight(fid, body) {
     "span",
     { class: "st-summary" },
     bar,
-    `${fid}: ${body.label} (${body.bird || "seed"}) error RMS ${fmt(s.rms_error)} max ${fmt(s.max_error)} ${scene.units.length}` +
+    `${fid}: ${body.label} (${scene.flock ? `${scene.flock.n_birds} birds, worst bird` : body.bird || "seed"}) error RMS ${fmt(s.rms_error)} max ${fmt(s.max_error)} ${scene.units.length}` +
       (s.wingbeats_saturated ? `, saturated in ${s.wingbeats_saturated} wingbeat(s)` : ""),
   );
   for (const kind of DOWNLOADS) {
