@@ -6,7 +6,7 @@ bird keeps the turn's.
 Tolerances: which time constants apply where is exact; the pigeon's 360-degree turn
 at cruise speed on R = 50 semispans is bounded by the issue's tracking target (path RMS
 after two wingbeats 0.1 semispan; measured 0.0094 m = 0.028 semispan; with the turn's
-time constants it diverged inside the turn, 11.9 m RMS, docs/turning.md, "The pigeon's
+time constants it diverged inside the turn, 12.0 m RMS, docs/turning.md, "The pigeon's
 long turns"), no saturated sample.
 """
 

@@ -203,7 +203,7 @@ STRAIGHT_PART_BEATS = True
 #: wingbeats): with the turn's (1.25, 3, 2) R 50 diverged inside the turn (the
 #: wingbeat-mean pitch swinging about its command with a period of about 4 wingbeats,
 #: growing from 5 to 30 degrees, the roll error following it, the differential inputs at
-#: their bounds from wingbeat 30): 11.9 m; (1, 3, 2) 9.9 m; (1.25, 2, 2) 31 m; (1.25,
+#: their bounds from wingbeat 30): 12.0 m; (1, 3, 2) 9.9 m; (1.25, 2, 2) 31 m; (1.25,
 #: 2.5, 2) 45 m; (1, 2, 2) 0.0092 m but the flock preset's bird 3 (inner, second row)
 #: diverged (1.2 semispans); (1, 2.5, 2) R 50 0.0095 m, R 35 6.5 m; (1, 2.25, 2) R 40 /
 #: 45 / 50 / 70 0.0122 / 0.0107 / 0.0094 / 0.0064 m, none saturated, the flock preset's
