@@ -191,23 +191,38 @@ def lateral_integral_bound(track: Any, t: float) -> float | None:
 
 
 #: On a track's straight parts a bird on the fourth-stage pitch loop (``att.straight``:
-#: one that rocks, the pigeon) also takes straight flight's time constants
+#: one that rocks, the pigeon) takes straight flight's time constants
 #: (``attitude.AXIS_BEATS``: roll 1 wingbeat against the turn's 1.25).  Measured (pigeon,
 #: 90 degrees at 0.5 omega s on R 55 started 1.91 / 2.86 wingbeats after wingbeat 20,
 #: then straight to 81; the flock's centreline birds): with the integrals' bound only,
 #: diverged (4.1 / 5.3 m RMS); with these too 0.0122 / 0.0233 m, none saturated.  The
 #: seed bird keeps the turn's (its presets with them: turn-90 0.0917 against 0.0684).
 STRAIGHT_PART_BEATS = True
+#: ... and in its turns (not slow ones) :data:`FOURTH_STAGE_TURN_BEATS`.  Measured
+#: (pigeon, m3, free; 360 degrees at 0.5 omega s, 6-wingbeat ramps; path RMS after two
+#: wingbeats): with the turn's (1.25, 3, 2) R 50 diverged inside the turn (the
+#: wingbeat-mean pitch swinging about its command with a period of about 4 wingbeats,
+#: growing from 5 to 30 degrees, the roll error following it, the differential inputs at
+#: their bounds from wingbeat 30): 12.0 m; (1, 3, 2) 9.9 m; (1.25, 2, 2) 31 m; (1.25,
+#: 2.5, 2) 45 m; (1, 2, 2) 0.0092 m but the flock preset's bird 3 (inner, second row)
+#: diverged (1.2 semispans); (1, 2.5, 2) R 50 0.0095 m, R 35 6.5 m; (1, 2.25, 2) R 40 /
+#: 45 / 50 / 70 0.0122 / 0.0107 / 0.0094 / 0.0064 m, none saturated, the flock preset's
+#: worst 0.0256 semispan (docs/turning.md, "The pigeon's long turns").
+FOURTH_STAGE_TURN_BEATS = True
+#: The fourth-stage bird's time constants in a turn (roll, pitch, yaw; wingbeats).
+FOURTH_STAGE_TURN_AXIS_BEATS = (1.0, 2.25, 2.0)
 
 
 def straight_parts(att: AttitudeLoop, track: Any, t: float) -> None:
     """Set ``att`` for ``track`` at ``t``: the roll and yaw integrals' bound of
     :func:`lateral_integral_bound`, and, for a bird on the fourth-stage pitch loop,
-    straight flight's time constants on the straight parts (:data:`STRAIGHT_PART_BEATS`)."""
+    straight flight's time constants on the straight parts (:data:`STRAIGHT_PART_BEATS`)
+    and :data:`FOURTH_STAGE_TURN_AXIS_BEATS` in the turns (:data:`FOURTH_STAGE_TURN_BEATS`)."""
     bound = lateral_integral_bound(track, t)
     att.lateral_integral_rad = bound
     if STRAIGHT_PART_BEATS and att.straight and not track.slow_turn:
-        beats = AXIS_BEATS if bound is not None else TURN_AXIS_BEATS
+        turn = FOURTH_STAGE_TURN_AXIS_BEATS if FOURTH_STAGE_TURN_BEATS else TURN_AXIS_BEATS
+        beats = AXIS_BEATS if bound is not None else turn
         if getattr(att, "axis_beats", TURN_AXIS_BEATS) != beats:
             att.axis_beats, att.gains = beats, attitude_gains(att.fb.red.omega, beats)
 
@@ -268,6 +283,8 @@ __all__ = [
     "BANK_BEATS",
     "BANK_CORRECTION_MAX",
     "FF_LEAD",
+    "FOURTH_STAGE_TURN_AXIS_BEATS",
+    "FOURTH_STAGE_TURN_BEATS",
     "GYRO_FEEDFORWARD",
     "ROCKING_LIMIT",
     "TURN_AXIS_BEATS",
