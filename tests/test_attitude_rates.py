@@ -88,11 +88,9 @@ def test_pitch_plan_has_no_lag_and_starts_at_the_start():
     assert [const.step(k, 0.3)[0] for k in range(40)] == [0.3] * 40
 
 
-def test_vertical_gust_is_flown_back_as_posed():
-    """A one-wingbeat up gust of 30 % of cruise speed in cruise, attitude free: the largest
-    error as the posed body's (measured 0.099 semispan; posed 0.105; before the stroke
-    plane's compensation took the table's pitch target: 0.233) and back within 0.05
-    semispan for good 5 wingbeats after the gust (measured 4)."""
+def free_cruise_with_gust(beats: float, gust: str) -> dict:
+    """The log arrays of the cruise preset flown free (seed bird, the demo model) for
+    ``beats`` wingbeats through one gust ``T0:DURATION:WX:WY:WZ``."""
     from birdsim.commands.fly import load_table_for
     from birdsim.flight.freeflight import fly
     from birdsim.flight.gust import parse_gust
@@ -101,16 +99,19 @@ def test_vertical_gust_is_flown_back_as_posed():
 
     bird = demo_bird()
     table = load_table_for(bird, DEMO_MODEL, None)
-    r = fly(
-        PATH_PRESETS["cruise"],
-        table,
-        bird,
-        DEMO_MODEL,
-        beats=12,
-        gusts=[parse_gust("3:1:0:0:0.15")],
-        config=SimConfig(attitude="free"),
-    )
-    a = r.arrays
+    config = SimConfig(attitude="free")
+    path = PATH_PRESETS["cruise"]
+    return fly(
+        path, table, bird, DEMO_MODEL, beats=beats, gusts=[parse_gust(gust)], config=config
+    ).arrays
+
+
+def test_vertical_gust_is_flown_back_as_posed():
+    """A one-wingbeat up gust of 30 % of cruise speed in cruise, attitude free: the largest
+    error as the posed body's (measured 0.099 semispan; posed 0.105; before the stroke
+    plane's compensation took the table's pitch target: 0.233) and back within 0.05
+    semispan for good 5 wingbeats after the gust (measured 4)."""
+    a = free_cruise_with_gust(12, "3:1:0:0:0.15")
     err = np.hypot(a["x_ref"] - a["x"], a["z_ref"] - a["z"])
     assert err.max() < 0.12
     assert err[(4 + 5) * 64 :].max() <= 0.05

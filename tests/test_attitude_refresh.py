@@ -124,23 +124,9 @@ def test_a_50_percent_headwind_gust_is_flown_back():
     (measured: back from wingbeat 6, 0.023 at the end; without the check the set measured
     in the gust's transient stayed and the error was 0.068 at wingbeat 16), the peak
     0.17 (the gust does move the bird: above 0.1)."""
-    from birdsim.commands.fly import load_table_for
-    from birdsim.flight.freeflight import fly
-    from birdsim.flight.gust import parse_gust
-    from birdsim.flight.presets import DEMO_MODEL, PATH_PRESETS, demo_bird
-    from birdsim.flight.simulate import SimConfig
+    from test_attitude_rates import free_cruise_with_gust
 
-    bird = demo_bird()
-    r = fly(
-        PATH_PRESETS["cruise"],
-        load_table_for(bird, DEMO_MODEL, None),
-        bird,
-        DEMO_MODEL,
-        beats=16,
-        gusts=[parse_gust("3:1:-0.25:0:0")],
-        config=SimConfig(attitude="free"),
-    )
-    a = r.arrays
+    a = free_cruise_with_gust(16, "3:1:-0.25:0:0")
     err = np.sqrt((a["x_ref"] - a["x"]) ** 2 + a["y"] ** 2 + (a["z_ref"] - a["z"]) ** 2)
     assert err.max() > 0.1
     assert err[12 * 64 :].max() <= 0.05, err[12 * 64 :].max()
