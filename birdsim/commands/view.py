@@ -60,8 +60,8 @@ def parse_fps(raw: str) -> float:
 
 
 def run(args: argparse.Namespace) -> int:
-    from birdsim.io import check_output, write_atomic
-    from birdsim.studio.page import MAX_VIEW_BYTES, view_html
+    from birdsim.io import check_output
+    from birdsim.studio.page import MAX_VIEW_BYTES
     from birdsim.studio.scene import ViewOptions, flight_scene
 
     fps = parse_fps(args.fps)
@@ -101,42 +101,41 @@ def run(args: argparse.Namespace) -> int:
         log, _ = fly_request(req)
         how = "flown in MuJoCo"
     scene = flight_scene(log, ViewOptions(fps=fps), title=Path(args.source).stem)
+    _write_view(scene, out, args.force, ("the view", MAX_VIEW_BYTES, "lower --fps"), "", how)
+    return 0
+
+
+def _write_view(
+    scene: dict, out: Path, force: bool, limit: tuple[str, int, str], birds: str, how: str
+) -> None:
+    """Write ``scene``'s page to ``out`` atomically (refused above ``limit``: its name, the
+    bytes allowed and the hint) and print the one line (``birds``: "N birds, " or "")."""
+    from birdsim.io import check_output, write_atomic
+    from birdsim.studio.page import view_html
+
+    name, most, hint = limit
     page = view_html(scene).encode("utf-8")
-    if len(page) > MAX_VIEW_BYTES:
+    if len(page) > most:
         raise BirdsimError(
-            f"the view would be {len(page) / 1e6:.1f} MB; allowed: at most {MAX_VIEW_BYTES / 1e6:g} MB (lower --fps)"
+            f"{name} would be {len(page) / 1e6:.1f} MB; allowed: at most {most / 1e6:g} MB ({hint})"
         )
-    check_output(out, args.force, "--out")
+    check_output(out, force, "--out")
     write_atomic(out, page)
     tb = scene["time_base"]
     print(
-        f"wrote {out} ({len(page) / 1e6:.2f} MB, {len(scene['t'])} frames over "
+        f"wrote {out} ({len(page) / 1e6:.2f} MB, {birds}{len(scene['t'])} frames over "
         f"{scene['duration']:.3g} {scene['units']['time']}, {how}; playback 1x = {tb['label']})"
     )
-    return 0
 
 
 def _view_flock(args: argparse.Namespace, out: Path, fps: float) -> int:
     """A flock's log: every bird drawn (birdsim.studio.flock_view)."""
     from birdsim.flight.flock_log import load_flock_log
-    from birdsim.io import check_output, write_atomic
     from birdsim.studio.flock_view import MAX_FLOCK_VIEW_BYTES, flock_scene
-    from birdsim.studio.page import view_html
     from birdsim.studio.scene import ViewOptions
 
     data, birds = load_flock_log(args.source, "SOURCE")
     scene = flock_scene(birds, ViewOptions(fps=fps), title=Path(args.source).stem)
-    page = view_html(scene).encode("utf-8")
-    if len(page) > MAX_FLOCK_VIEW_BYTES:
-        raise BirdsimError(
-            f"the flock's view would be {len(page) / 1e6:.1f} MB; allowed: at most "
-            f"{MAX_FLOCK_VIEW_BYTES / 1e6:g} MB (lower --fps, or a shorter log)"
-        )
-    check_output(out, args.force, "--out")
-    write_atomic(out, page)
-    tb = scene["time_base"]
-    print(
-        f"wrote {out} ({len(page) / 1e6:.2f} MB, {len(birds)} birds, {len(scene['t'])} frames over "
-        f"{scene['duration']:.3g} {scene['units']['time']}, from the flock's log; playback 1x = {tb['label']})"
-    )
+    limit = ("the flock's view", MAX_FLOCK_VIEW_BYTES, "lower --fps, or a shorter log")
+    _write_view(scene, out, args.force, limit, f"{len(birds)} birds, ", "from the flock's log")
     return 0
