@@ -59,9 +59,7 @@ def browser():
 def studio(server, browser):
     """The studio page after flying the cruise preset (the first flight)."""
     page = browser.new_page()
-    messages: list[str] = []
-    page.on("console", lambda m: messages.append(f"{m.type}: {m.text}"))
-    page.on("pageerror", lambda e: messages.append(f"pageerror: {e}"))
+    messages = _listen(page)
     page.goto(server.url)
     page.wait_for_selector("#keyframes tbody tr")
     t0 = time.perf_counter()
@@ -72,6 +70,14 @@ def studio(server, browser):
     print(f"\nstudio: cruise in the page {time.perf_counter() - t0:.2f} s after pressing fly")
     page.messages = messages
     return page
+
+
+def _listen(page) -> list[str]:
+    """The page's console messages and page errors, as they come ("type: text")."""
+    messages: list[str] = []
+    page.on("console", lambda m: messages.append(f"{m.type}: {m.text}"))
+    page.on("pageerror", lambda e: messages.append(f"pageerror: {e}"))
+    return messages
 
 
 def _errors(messages):
@@ -248,9 +254,7 @@ def test_the_view_plays_with_the_network_blocked(server, browser, tmp_path):
 
     page.route("http*://**/*", block)
     page.context.set_offline(True)
-    messages: list[str] = []
-    page.on("console", lambda m: messages.append(f"{m.type}: {m.text}"))
-    page.on("pageerror", lambda e: messages.append(f"pageerror: {e}"))
+    messages = _listen(page)
     try:
         page.goto(out.as_uri())
         page.wait_for_function("window.birdsimViewer && window.birdsimViewer.ready", timeout=30_000)
@@ -294,9 +298,7 @@ def test_the_view_of_a_flock_frames_every_bird(browser, tmp_path):
     out = tmp_path / "flock.html"
     assert main(["view", str(log), "--out", str(out)]) == 0
     page = browser.new_page()
-    messages: list[str] = []
-    page.on("pageerror", lambda e: messages.append(f"pageerror: {e}"))
-    page.on("console", lambda m: messages.append(f"{m.type}: {m.text}"))
+    messages = _listen(page)
     try:
         page.goto(out.as_uri())
         page.wait_for_function("window.birdsimViewer && window.birdsimViewer.ready", timeout=30_000)
@@ -325,9 +327,7 @@ def test_a_flock_is_flown_from_the_page(server, browser):
     them; the server refuses them) and the page flies it and draws both birds; the page
     used to send its default bird with every flight, so a flock was refused in the browser."""
     page = browser.new_page()
-    messages: list[str] = []
-    page.on("console", lambda m: messages.append(f"{m.type}: {m.text}"))
-    page.on("pageerror", lambda e: messages.append(f"pageerror: {e}"))
+    messages = _listen(page)
     try:
         page.goto(server.url)
         page.wait_for_selector("#keyframes tbody tr")
