@@ -24,6 +24,7 @@ from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.demand_schedule import DemandSchedule, RefState
 from birdsim.flight.flight_arrays import attitude_estimate, extend_rows, flight_arrays, keep_last
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
+from birdsim.flight.pitch_observer import pitch_source
 from birdsim.flight.pitch_plan import PitchPlan, feedforward_pitch
 from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
 from birdsim.flight.track import TrackFrame, is_three_d
@@ -119,12 +120,9 @@ def fly(
         )
     gains = gains or gains_for(red)
     demands_only = bool(getattr(reference, "open_loop_demands", False))
+    no_table = (lambda *a, **k: (0.0, 0.0)) if demands_only else None
     ctl = Controller(
-        table,
-        red,
-        gains,
-        open_loop=open_loop or demands_only,
-        to_table=to_table or ((lambda *a, **k: (0.0, 0.0)) if demands_only else None),
+        table, red, gains, open_loop=open_loop or demands_only, to_table=to_table or no_table
     )
     names = ctl.names
     per_beat_ctl = config.control_per_beat
@@ -236,6 +234,7 @@ def fly(
         att_window = (np.empty((0, 4)), np.empty((0, 3)))  # quat, C_SEED omega (FIT_BEATS)
         lat_window: list[tuple[float, float]] = []
         dt_ctl, n_fit = steps_ctl * h, FIT_BEATS * config.log_per_beat
+        comp_pitch = pitch_source(att, config.log_per_beat, dt_ctl, compensate and track is None)
         for k in range(n_ctl):
             t = fb.time
             _ = control_hook and control_hook(k, t, fb)  # a flock's lockstep
@@ -296,7 +295,8 @@ def fly(
                 err, rates = attitude_estimate(
                     att_window, fb.d, config.log_per_beat, TWO_PI, zyx_pitch, roll_cmd, yaw_cmd
                 )
-                body_pitch = pitch_ref - float(err[1])  # the wingbeat-mean pitch
+                v_air = v_est - float(wind[0])
+                body_pitch = comp_pitch(att_window, pitch_ref, err, rates, v_air)  # wingbeat-mean
                 at_cmd = att.straight  # the Jacobians measured at the command (else the body's)
                 jac_pitch, jac_params = (pitch_ref if at_cmd else body_pitch), None
                 if compensate:
@@ -325,7 +325,7 @@ def fly(
                 right, left, shoulder, tail = att.update(
                     cmd.params,
                     pitch_ref,
-                    v_est - float(wind[0]),
+                    v_air,
                     err,
                     rates,
                     dt_ctl,
