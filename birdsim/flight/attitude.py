@@ -318,8 +318,9 @@ class AttitudeLoop:
         split = PITCH_SPLIT and self.straight
         a_lp = 1.0 - math.exp(-dt / (WING_PITCH_BEATS * self.fb.red.period)) if split else 0.0
         if fast_attitude.allocate(  # the rest compiled, the same numbers (fast_attitude)
-            self, params, g, m0, jac, residual, damping, err, rates, dt, rate_cmd, acc_cmd,
-            turn, INTEGRAL_LIMIT_RAD, _AXES[self.straight], split, a_lp, LAMBDA,
+            self, ((SYM_ROWS, SYM_INPUTS), (LAT_ROWS, LAT_INPUTS)), params, g, m0, jac,
+            residual, damping, err, rates, dt, rate_cmd, acc_cmd, turn, INTEGRAL_LIMIT_RAD,
+            _AXES[self.straight], split, a_lp, LAMBDA,
         ):  # fmt: skip
             return split_inputs(names, params, self.u)
         lo, hi = self.bounds(params)

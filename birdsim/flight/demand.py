@@ -102,9 +102,23 @@ def air_path_angle(vx: Any, vz: Any, climb_speed: float = CLIMB_SPEED) -> Any:
     ``climb_speed`` (none at hover, none when flying backwards through the air: hovering up
     or down is not level flight turned by 90 degrees as far as the table's reach goes).
     ``vx``, ``vz``: velocity relative to the air [omega s], floats or arrays."""
+    if isinstance(vx, float) and isinstance(vz, float):  # one demand (the controller's)
+        return _air_path_angle_float(vx, vz, climb_speed)
     vx, vz = np.asarray(vx, dtype=float), np.asarray(vz, dtype=float)
     gamma = np.where(np.hypot(vx, vz) > 0, np.arctan2(vz, vx), 0.0)
     return gamma * np.minimum(1.0, (np.maximum(vx, 0.0) / climb_speed) ** 2)
+
+
+def _air_path_angle_float(vx: float, vz: float, climb_speed: float) -> np.float64:
+    """:func:`air_path_angle` of two floats, the same bits: numpy's ``hypot`` and
+    ``arctan2`` (they differ from the C library's in the last bit), numpy's maximum
+    ``vx if vx >= 0 or vx is NaN else 0``, the power of the numpy scalar that makes (the C
+    library's ``pow``, as Python's ``**``: not always ``f * f``) and numpy's minimum ``1
+    if 1 <= f else f`` in Python floats."""
+    gamma = np.arctan2(vz, vx) if np.hypot(vx, vz) > 0 else np.float64(0.0)
+    f = vx if (vx >= 0.0 or vx != vx) else 0.0
+    f = (f / climb_speed) ** 2
+    return gamma * (1.0 if 1.0 <= f else f)
 
 
 def air_path_demand(

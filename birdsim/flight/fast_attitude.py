@@ -24,7 +24,7 @@ import math
 
 import numpy as np
 
-from birdsim.flight import bounded_lsq
+from birdsim.flight import attitude_pitch, bounded_lsq
 from birdsim.physics.jit import numba
 
 #: the update's allocation compiled (False: the reference's numpy and Python)
@@ -287,29 +287,26 @@ else:  # pragma: no cover
     kernel = None
 
 
-def _plan(loop) -> tuple:
+def _plan(loop, groups: tuple) -> tuple:
     """The loop's constants as the kernel takes them, made once per loop: its bounds plan
-    (index, lower, upper, bound per input), the allocations' groups (2, 2, 4: rows,
-    columns; -1 padded), the shoulders' inputs and the tail elevation's."""
-    from birdsim.flight import attitude, attitude_pitch
-
+    (index, lower, upper, bound per input), the allocations' ``groups`` ((rows, columns)
+    of the pitch's and the lateral one) as a (2, 2, 4) array (-1 padded), the shoulders'
+    inputs and the tail elevation's."""
     hit = loop.__dict__.get("_fast_attitude_plan")
     if hit is not None:
         return hit
     loop.bounds(np.zeros(len(loop.fb.kin.param_names)))  # makes loop._bounds_plan
     plan = loop._bounds_plan
-    groups = -np.ones((2, 2, 4), dtype=np.int64)
-    for g, (rows, cols) in enumerate(
-        ((attitude.SYM_ROWS, attitude.SYM_INPUTS), (attitude.LAT_ROWS, attitude.LAT_INPUTS))
-    ):
-        groups[g, 0, : len(rows)] = rows
-        groups[g, 1, : len(cols)] = cols
+    table = -np.ones((2, 2, 4), dtype=np.int64)
+    for g, (rows, cols) in enumerate(groups):
+        table[g, 0, : len(rows)] = rows
+        table[g, 1, : len(cols)] = cols
     out = (
         np.array([p[0] for p in plan], dtype=np.int64),
         np.array([p[1] for p in plan], dtype=float),
         np.array([p[2] for p in plan], dtype=float),
         np.array([p[3] for p in plan], dtype=float),
-        groups,
+        table,
         np.array(attitude_pitch._WINGS, dtype=np.int64),
         int(attitude_pitch._TAIL),
     )
@@ -317,16 +314,17 @@ def _plan(loop) -> tuple:
     return out
 
 
-def allocate(loop, params, gains, m0, jac, residual, damping, err, rates, dt, rate_cmd,
-             acc_cmd, turn, limit_rad, authority, split, a_lp, lam) -> bool:  # fmt: skip
-    """The update of ``loop`` (an AttitudeLoop) after its plant is known, compiled: True
+def allocate(loop, groups, params, gains, m0, jac, residual, damping, err, rates, dt,
+             rate_cmd, acc_cmd, turn, limit_rad, authority, split, a_lp, lam) -> bool:  # fmt: skip
+    """The update of ``loop`` (an AttitudeLoop; ``groups`` its allocations' (rows, columns),
+    the pitch's first) after its plant is known, compiled: True
     with ``loop.integral``, ``loop.u``, ``loop.saturated`` (and the pitch's slow demand
     where ``split``) set as the reference sets them; False (nothing changed) where it
     does not apply or the reference must run (a bound binds in a solve, an input not
     finite)."""
     if not (ENABLED and bounded_lsq.ENABLED) or kernel is None:
         return False  # the reference's lsq_linear for every solve: the reference runs
-    index, lower, upper, bound, groups, wings, tail = _plan(loop)
+    index, lower, upper, bound, groups, wings, tail = _plan(loop, groups)
     f = np.ascontiguousarray
     zero = np.zeros(3)
     slow = loop.__dict__.get("_slow")

@@ -217,7 +217,7 @@ class WingbeatSchedule:
         p'' when they differ."""
         t = len(times)
         sw_r = sw_l = None
-        if shoulder is not None and any(np.any(a) for a in shoulder):
+        if shoulder is not None and any(a.any() for a in shoulder):  # np.any's answer
             sw_r = tuple(a[:, :2] for a in shoulder)
             sw_l = tuple(a[:, 2:] for a in shoulder)
         if left is not None and sw_r is None:
