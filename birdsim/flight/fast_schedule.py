@@ -87,8 +87,9 @@ def advance(
     # call: numpy's exponential of an entry does not depend on the array around it
     # (checked on 100 000 values at every offset and length up to 17)
     arg = np.empty(2 * T + 2)
-    np.divide(-rel, tau, out=arg[:T])
-    np.divide(-rel, sig, out=arg[T : 2 * T])
+    neg = -rel
+    np.divide(neg, tau, out=arg[:T])
+    np.divide(neg, sig, out=arg[T : 2 * T])
     arg[2 * T], arg[2 * T + 1] = -dt / tau, -dt / sig
     e = np.exp(arg)
     ex, ey, gex, gey = e[:T], e[T : 2 * T], float(e[2 * T]), float(e[2 * T + 1])
