@@ -1,7 +1,8 @@
 """Every compiled path's switch in one place: the modules whose ``ENABLED`` flag chooses
 their compiled (numba) code over the numpy / Python reference they are tested against
 (the compiled step loop, prescription, table lookup, bounded least squares, path curves,
-attitude estimate, schedule filters, error window and the attitude loop's allocation).
+attitude estimate, schedule filters (alone and with the wings' rows), error window and the
+attitude loop's allocation).
 Tests and benchmarks flip them together to fly the reference path."""
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ from birdsim.flight import (
     fast_prescription,
     fast_schedule,
     fast_window,
+    fast_wingbeat,
 )
 from birdsim.tables import fast_lookup
 
@@ -30,4 +32,5 @@ SWITCHES: tuple[ModuleType, ...] = (
     fast_schedule,
     fast_window,
     fast_attitude,
+    fast_wingbeat,
 )

@@ -29,7 +29,7 @@ import mujoco
 import numpy as np
 
 from birdsim.errors import BirdsimError
-from birdsim.flight import fast_prescription, fast_schedule
+from birdsim.flight import fast_prescription, fast_schedule, fast_wingbeat
 from birdsim.flight.playback import joint_derivatives
 from birdsim.mujoco.driver import set_root, wing_arrays
 from birdsim.physics.bird import Bird
@@ -170,6 +170,13 @@ class WingbeatSchedule:
         off = np.zeros(n) if offset is None else np.asarray(offset, dtype=float)
         u = 0.5 * (right + left)
         v = np.concatenate([0.5 * (right - left), off, sh, sh])
+        fused = fast_wingbeat.advance(self, u, v, times, rel, dt)
+        if fused is not None:  # the filters and the rows in one call (fast_wingbeat)
+            right3, left3, shoulder3, qpos, qvel, qacc, flags = fused
+            r, lft = tuple(right3), tuple(left3)
+            if flags & 4:  # finite: prescribe's rows (left None where it equals the right)
+                return self._finish(qpos, qvel, qacc, *r, None if flags & 2 else lft)
+            return self.prescribe(times, *r, left=lft, shoulder=tuple(shoulder3))
         fast = fast_schedule.advance(self.filter, self.input_filter, u, v, rel, dt, n)
         if fast is not None:  # the same numbers, compiled (birdsim.flight.fast_schedule)
             r, lft, shoulder = fast
