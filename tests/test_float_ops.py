@@ -31,3 +31,22 @@ def test_air_path_angle_of_floats_is_the_array_path():
     vz = rng.normal(0.0, 0.2, 25_000).tolist()
     for a, b in [*zip(vx, vz), *((s, t) for s in SPECIAL for t in SPECIAL)]:
         assert _same(air_path_angle(a, b), air_path_angle(np.array(a), np.array(b))), (a, b)
+
+
+def test_demand_of_floats_is_the_array_path():
+    """The controller's table demand of floats (numpy scalars, no 0-d arrays): the same
+    bits as of 0-d arrays, level and climbing tables."""
+    from birdsim.flight.demand import demand_from_acceleration
+    from birdsim.physics.bird import Bird
+    from birdsim.physics.units import reduced_bird
+
+    bird = reduced_bird(Bird.from_toml("models/seed-bird.toml"))
+    rng = np.random.default_rng(9)
+    for _ in range(3000):
+        ax, az, vz = rng.normal(0.0, 0.01, 3).tolist()
+        vx, pitch = float(rng.uniform(-0.2, 1.2)), float(rng.normal(0.2, 0.3))
+        for climb in (False, True):
+            a = demand_from_acceleration(ax, az, vx, vz, bird, pitch, table_climb=climb)
+            args = (np.array(ax), np.array(az), np.array(vx), np.array(vz))
+            b = demand_from_acceleration(*args, bird, np.array(pitch), table_climb=climb)
+            assert all(_same(x, y) for x, y in zip(a, b)), (ax, az, vx, vz, pitch)

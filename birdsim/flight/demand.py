@@ -50,7 +50,9 @@ def body_drag_earth(bird: Bird, V: Any, climb: Any, pitch: Any) -> tuple[np.ndar
         (Dx, Dz): ``1/2 rho Vt^2 A_b |sin(theta - gamma)|`` opposite the velocity. With
         ``climb = 0`` Dx equals eq. 7 (``aero.body_drag_x``) and Dz = 0.
     """
-    V, climb, pitch = (np.asarray(a, dtype=float) for a in (V, climb, pitch))
+    if not (isinstance(V, float) and isinstance(climb, float) and isinstance(pitch, float)):
+        V, climb, pitch = (np.asarray(a, dtype=float) for a in (V, climb, pitch))
+    # (floats: the same operations on Python floats and numpy scalars, the same bits)
     vt = np.hypot(V, climb)
     gamma = np.arctan2(climb, V)
     mag = 0.5 * bird.rho * vt * np.abs(np.sin(pitch - gamma)) * bird.body_drag_area  # |D| / Vt
@@ -79,7 +81,9 @@ def demand_from_acceleration(
         Level, unaccelerated flight: ``Fz_table = -w / 2`` and a whole-bird Fx of 0.
     """
     rb = reduced_bird(bird)
-    ax, az, vx, vz = (np.asarray(a, dtype=float) for a in (ax_up, az_up, vx, vz))
+    ax, az = ax_up, az_up
+    if not all(isinstance(a, float) for a in (ax_up, az_up, vx, vz, pitch)):
+        ax, az, vx, vz = (np.asarray(a, dtype=float) for a in (ax_up, az_up, vx, vz))
     fx_whole = rb.mass * ax  # seed X = world x
     fz_whole = -rb.mass * (az + rb.gravity)  # seed Z = -world z; gravity pulls down
     dx, dz = body_drag_earth(rb, vx, vz, pitch)
