@@ -238,7 +238,7 @@ def fly(
         att_window = (np.empty((0, 4)), np.empty((0, 3)))  # quat, C_SEED omega (FIT_BEATS)
         lat_window: Any = np.empty((0, 2)) if track is None else []  # (y, vy); turning: pairs
         dt_ctl, n_fit = steps_ctl * h, FIT_BEATS * config.log_per_beat
-        step_offsets = np.arange(steps_ctl) * h  # the steps' times after the update's
+        step_offsets, blocks = np.arange(steps_ctl) * h, []  # steps' times; samples' arrays
         for k in range(n_ctl):
             t = fb.time
             _ = control_hook and control_hook(k, t, fb)  # a flock's lockstep
@@ -345,7 +345,7 @@ def fly(
             pres = fb.schedule.advance(right, t + step_offsets, t, dt_ctl, left, offset)
             start = len(record)
             fb.step_many(pres, wind, record, every)
-            t_new, q_new, v_new = step_records.new_samples(fb, record, start)
+            t_new, q_new, v_new = step_records.new_samples(fb, record, start, blocks)
             if track is None:
                 refs = sample_reference(reference, t_new)
                 e_pos = np.stack([refs["x"] - q_new[:, 0], refs["z"] - q_new[:, 2]], axis=1)
@@ -379,7 +379,7 @@ def fly(
     keep = sum(1 for r in record if r[0] <= beats * TWO_PI + 1e-9)  # whole intervals flown
     record = record[:keep]
     rows = {k: v[:keep] for k, v in rows.items()}
-    arrays = flight_arrays(record, rows, names)
+    arrays = flight_arrays(record, rows, names, blocks)
     result = FlightResult(arrays, bird, model, names, gains, open_loop or demands_only, projection)
     result.meta["root_applied_max"] = root_applied
     result.meta["attitude"] = config.attitude
