@@ -5,13 +5,14 @@ control updates, a fixed prescription; compiled :mod:`birdsim.flight.fast_loop` 
 the reference ``step_kernel.free_loop`` with the Python callback), whole closed-loop
 free flights (``fly``: controller, attitude loop, prescription, logging; 20 wingbeats +
 the trim's probe wingbeats and the set-up, and, for m4, 60 wingbeats) compiled against
-the reference (every switch of the compiled pieces off: the Python loop with the Python
-callback, the numpy prescription, scipy's lookup, path curves and ``lsq_linear``, the
-numpy attitude error), and the posed flight of the same path (the body's pitch
-prescribed; its own loop, with the compiled prescription, lookup and path curves).
-Process CPU time; each figure the best of three, the paths alternated (one run's figure
-moves by up to 30 % on the shared VM).  Targets: m4 free flight >= 200 wingbeats per CPU
-second (issue 27), m5 >= 30 (issue 24)."""
+the reference (every switch of the compiled pieces off,
+``birdsim.flight.compiled_switches``: the Python loop with the Python callback, the numpy
+prescription and schedule filters, scipy's lookup, path curves and ``lsq_linear``, the
+numpy attitude error and the attitude loop's allocation in numpy), and the posed flight
+of the same path (the body's pitch prescribed; its own loop, with the compiled
+prescription, lookup and path curves).  Process CPU time; each figure the best of three,
+the paths alternated (one run's figure moves by up to 30 % on the shared VM).  Targets:
+m4 free flight >= 200 wingbeats per CPU second (issue 27), m5 >= 30 (issue 24)."""
 
 from __future__ import annotations
 

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 from scipy.optimize import lsq_linear
 
-from birdsim.flight import bounded_lsq, fast_schedule
+from birdsim.flight import bounded_lsq, fast_schedule, fast_wingbeat
 from birdsim.flight.simulate import FreeBird, SimConfig
 from birdsim.mujoco import aero_kernel
 from birdsim.mujoco.tail import TailControls
@@ -27,12 +27,27 @@ def _params(model: str) -> np.ndarray:
     return np.array([guess[n] for n in kin.param_names])
 
 
+@pytest.mark.parametrize("switch", ["fast_schedule", "fast_wingbeat"])
 @pytest.mark.parametrize("model", ["m3", "m5"])
-def test_compiled_filters_are_the_numpy_filters(monkeypatch, model):
+def test_compiled_filters_are_the_numpy_filters(monkeypatch, model, switch):
     """Bitwise: every row of the prescription and the filters' states after each
     control update, with the wings differing, a stroke-plane offset and shoulder
-    offsets (a wrong operation order or a fused multiply-add shows in the last bit)."""
-    assert fast_schedule.kernel is not None
+    offsets (a wrong operation order or a fused multiply-add shows in the last bit), and
+    with both wings and no offset alike (the left wing's parameters None).  Switched:
+    ``fast_schedule`` (on: the fused call, whose filters are fast_schedule's; off: the
+    numpy filters) and ``fast_wingbeat`` (on: the fused call; off: fast_schedule's
+    call, then ``wing_rows``')."""
+    assert fast_schedule.kernel is not None and fast_wingbeat.kernel is not None
+    module = {"fast_schedule": fast_schedule, "fast_wingbeat": fast_wingbeat}[switch]
+    calls = {True: 0, False: 0}
+    fused = fast_wingbeat.advance
+
+    def counted(*a, **k):
+        out = fused(*a, **k)
+        calls[out is not None] += 1
+        return out
+
+    monkeypatch.setattr(fast_wingbeat, "advance", counted)
     params = _params(model)
     names = get_model(model).param_names
     left = params.copy()
@@ -42,7 +57,7 @@ def test_compiled_filters_are_the_numpy_filters(monkeypatch, model):
     with FreeBird(model, BIRD, params, config=SimConfig(attitude="free")) as fb:
         out = {}
         for compiled in (True, False):
-            monkeypatch.setattr(fast_schedule, "ENABLED", compiled)
+            monkeypatch.setattr(module, "ENABLED", compiled)
             sc = copy.deepcopy(fb.schedule)
             rows = []
             for k in range(6):
@@ -65,6 +80,8 @@ def test_compiled_filters_are_the_numpy_filters(monkeypatch, model):
         for x, y in zip(sa, sb):
             assert np.array_equal(x, y)
     assert not np.array_equal(out[True][1][0].qvel, out[True][2][0].qvel)
+    assert calls[True] == 6 and calls[False] == 6  # the fused call ran, then did not
+    assert out[True][0][0].params_left is None and out[True][1][0].params_left is not None
 
 
 def test_compiled_allocation_solve_is_numpys():

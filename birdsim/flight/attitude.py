@@ -39,6 +39,7 @@ import math
 import mujoco
 import numpy as np
 
+from birdsim.flight import fast_attitude
 from birdsim.flight.attitude_gains import AttitudeGains, damped_gains
 from birdsim.flight.attitude_jacobians import (
     INPUTS,
@@ -112,6 +113,8 @@ LATERAL_INTEGRAL_RAD = 0.1
 PITCH_SPLIT = True
 #: the groups as index arrays (integral_bound: the same entries as the lists pick)
 _AUTHORITY = ((SYM_ROWS, np.array(SYM_INPUTS)), (LAT_ROWS, np.array(LAT_INPUTS)))
+#: integral_limit's axes by authority, straight flight and turns (fast_attitude's argument)
+_AXES = {True: np.array(INTEGRAL_AUTHORITY, dtype=bool), False: np.zeros(3, dtype=bool)}
 
 
 def attitude_gains(omega: float = 1.0, beats: object = AXIS_BEATS) -> AttitudeGains:
@@ -312,6 +315,14 @@ class AttitudeLoop:
         # placed for; what is left of the rate derivatives (cross terms, any negative
         # damping) is cancelled with the estimated rates
         d_used, damping, g, residual = self._plant()
+        split = PITCH_SPLIT and self.straight
+        a_lp = 1.0 - math.exp(-dt / (WING_PITCH_BEATS * self.fb.red.period)) if split else 0.0
+        if fast_attitude.allocate(  # the rest compiled, the same numbers (fast_attitude)
+            self, ((SYM_ROWS, SYM_INPUTS), (LAT_ROWS, LAT_INPUTS)), params, g, m0, jac,
+            residual, damping, err, rates, dt, rate_cmd, acc_cmd, turn, INTEGRAL_LIMIT_RAD,
+            _AXES[self.straight], split, a_lp, LAMBDA,
+        ):  # fmt: skip
+            return split_inputs(names, params, self.u)
         lo, hi = self.bounds(params)
         lim = self.integral_limit(g.omega_a, jac, params, (lo, hi))
         if not self.saturated:  # anti-windup: frozen while the inputs are at their bounds
@@ -325,8 +336,7 @@ class AttitudeLoop:
         demand += damping * (rate_err + np.asarray(rates, dtype=float) - turn)
         u = np.zeros(len(INPUTS))
         miss, active, groups = 0.0, False, [(SYM_ROWS, SYM_INPUTS), (LAT_ROWS, LAT_INPUTS)]
-        if PITCH_SPLIT and self.straight:  # pitch: slow moment by the wings, fast by the tail
-            a_lp = 1.0 - math.exp(-dt / (WING_PITCH_BEATS * self.fb.red.period))
+        if split:  # pitch: slow moment by the wings, fast by the tail
             slow = getattr(self, "_slow", None)
             self._slow = demand[1] if slow is None else slow + a_lp * (demand[1] - slow)
             up, miss, active = pitch_allocation(jac[1], demand[1], self._slow, lo, hi, LAMBDA)

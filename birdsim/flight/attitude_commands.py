@@ -10,6 +10,7 @@ import numpy as np
 
 from birdsim.flight.attitude import FIT_BEATS, ROLL_BEATS
 from birdsim.flight.flight_arrays import fit_matrix
+from birdsim.flight.float_ops import clip_float
 
 TWO_PI = 2.0 * math.pi
 #: The lateral path loop (attitude free): a side error and velocity ask for a sideways
@@ -56,7 +57,7 @@ def bank_command(window: list, per_beat: int, gravity: float, a_left_ref: float 
     (:data:`LATERAL_BEATS`) plus the path's own ``a_left_ref`` (a turn's centripetal
     acceleration, to the left), and the bank that tilts by it the force that carries
     ``gravity`` (the weight's acceleration plus the path's vertical one)."""
-    if not window or gravity <= 0.0:
+    if len(window) == 0 or gravity <= 0.0:  # a list of pairs or an (n, 2) array
         return 0.0
     n = FIT_BEATS * per_beat
     yv = np.array(window, dtype=float)
@@ -68,7 +69,7 @@ def bank_command(window: list, per_beat: int, gravity: float, a_left_ref: float 
     a_left = a_left_ref - (w * w * y + 2.0 * w * vy)
     bound = LATERAL_ROLL_MAX if a_left_ref == 0.0 else TURN_ROLL_MAX
     # banking right (roll > 0) leans the support to the right, -y
-    return float(np.clip(math.atan2(-a_left, gravity), -bound, bound))
+    return clip_float(math.atan2(-a_left, gravity), -bound, bound)  # np.clip's bits
 
 
 def body_rates(pitch: float, roll: float, pitch_rate: float, yaw_rate: float) -> np.ndarray:

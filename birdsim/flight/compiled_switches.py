@@ -1,8 +1,9 @@
 """Every compiled path's switch in one place: the modules whose ``ENABLED`` flag chooses
 their compiled (numba) code over the numpy / Python reference they are tested against
 (the compiled step loop, prescription, table lookup, bounded least squares, path curves,
-attitude estimate, schedule filters and error window).  Tests and benchmarks flip them
-together to fly the reference path."""
+attitude estimate, schedule filters (alone and with the wings' rows), error window and the
+attitude loop's allocation).
+Tests and benchmarks flip them together to fly the reference path."""
 
 from __future__ import annotations
 
@@ -10,12 +11,14 @@ from types import ModuleType
 
 from birdsim.flight import (
     bounded_lsq,
+    fast_attitude,
     fast_estimate,
     fast_loop,
     fast_path,
     fast_prescription,
     fast_schedule,
     fast_window,
+    fast_wingbeat,
 )
 from birdsim.tables import fast_lookup
 
@@ -28,4 +31,6 @@ SWITCHES: tuple[ModuleType, ...] = (
     fast_estimate,
     fast_schedule,
     fast_window,
+    fast_attitude,
+    fast_wingbeat,
 )

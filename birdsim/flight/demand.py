@@ -50,7 +50,9 @@ def body_drag_earth(bird: Bird, V: Any, climb: Any, pitch: Any) -> tuple[np.ndar
         (Dx, Dz): ``1/2 rho Vt^2 A_b |sin(theta - gamma)|`` opposite the velocity. With
         ``climb = 0`` Dx equals eq. 7 (``aero.body_drag_x``) and Dz = 0.
     """
-    V, climb, pitch = (np.asarray(a, dtype=float) for a in (V, climb, pitch))
+    if not (isinstance(V, float) and isinstance(climb, float) and isinstance(pitch, float)):
+        V, climb, pitch = (np.asarray(a, dtype=float) for a in (V, climb, pitch))
+    # (floats: the same operations on Python floats and numpy scalars, the same bits)
     vt = np.hypot(V, climb)
     gamma = np.arctan2(climb, V)
     mag = 0.5 * bird.rho * vt * np.abs(np.sin(pitch - gamma)) * bird.body_drag_area  # |D| / Vt
@@ -79,7 +81,9 @@ def demand_from_acceleration(
         Level, unaccelerated flight: ``Fz_table = -w / 2`` and a whole-bird Fx of 0.
     """
     rb = reduced_bird(bird)
-    ax, az, vx, vz = (np.asarray(a, dtype=float) for a in (ax_up, az_up, vx, vz))
+    ax, az = ax_up, az_up
+    if not all(isinstance(a, float) for a in (ax_up, az_up, vx, vz, pitch)):
+        ax, az, vx, vz = (np.asarray(a, dtype=float) for a in (ax_up, az_up, vx, vz))
     fx_whole = rb.mass * ax  # seed X = world x
     fz_whole = -rb.mass * (az + rb.gravity)  # seed Z = -world z; gravity pulls down
     dx, dz = body_drag_earth(rb, vx, vz, pitch)
@@ -102,9 +106,23 @@ def air_path_angle(vx: Any, vz: Any, climb_speed: float = CLIMB_SPEED) -> Any:
     ``climb_speed`` (none at hover, none when flying backwards through the air: hovering up
     or down is not level flight turned by 90 degrees as far as the table's reach goes).
     ``vx``, ``vz``: velocity relative to the air [omega s], floats or arrays."""
+    if isinstance(vx, float) and isinstance(vz, float):  # one demand (the controller's)
+        return _air_path_angle_float(vx, vz, climb_speed)
     vx, vz = np.asarray(vx, dtype=float), np.asarray(vz, dtype=float)
     gamma = np.where(np.hypot(vx, vz) > 0, np.arctan2(vz, vx), 0.0)
     return gamma * np.minimum(1.0, (np.maximum(vx, 0.0) / climb_speed) ** 2)
+
+
+def _air_path_angle_float(vx: float, vz: float, climb_speed: float) -> np.float64:
+    """:func:`air_path_angle` of two floats, the same bits: numpy's ``hypot`` and
+    ``arctan2`` (they differ from the C library's in the last bit), numpy's maximum
+    ``vx if vx >= 0 or vx is NaN else 0``, the power of the numpy scalar that makes (the C
+    library's ``pow``, as Python's ``**``: not always ``f * f``) and numpy's minimum ``1
+    if 1 <= f else f`` in Python floats."""
+    gamma = np.arctan2(vz, vx) if np.hypot(vx, vz) > 0 else np.float64(0.0)
+    f = vx if (vx >= 0.0 or vx != vx) else 0.0
+    f = (f / climb_speed) ** 2
+    return gamma * (1.0 if 1.0 <= f else f)
 
 
 def air_path_demand(

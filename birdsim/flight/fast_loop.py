@@ -263,6 +263,8 @@ def step(fb, pres, wind: np.ndarray, record: list | None, every: int) -> bool:
         record.extend(
             zip(times, rec_q, rec_v, moment, force, power, tail_f)
         )  # one tuple per sample, as the reference appends them
+        # the same samples as arrays, for this record at this length (flight_arrays)
+        fb.__dict__["last_samples"] = (record, len(record), times, rec_q, rec_v, rec_out)
     if fb.config.momentum_projection and n:
         fb.projection_max = max(fb.projection_max, float(stats[0]), float(stats[1]) * h)
     if not all_finite(plan.static[2], plan.static[3]):

@@ -49,6 +49,29 @@ def attitude_estimate(
     return fit[0] @ err, fit[0] @ rate
 
 
+def new_samples(
+    fb: Any, record: list, start: int, blocks: list | None = None
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(t (n,), qpos (n, nq), qvel (n, nv)) of the step records ``record[start:]``
+    (tuples: time, qpos, qvel, ...): the compiled step loop's own arrays of them where it
+    left them for this record at this length (``fb.last_samples``: the same numbers), else
+    made of the records.  ``blocks``: each call's arrays (t, qpos, qvel, the step loop's
+    outputs) appended, or None where the records were read (:func:`flight_arrays`)."""
+    got = fb.__dict__.pop("last_samples", None)
+    if got is not None and got[0] is record and got[1] == len(record) == start + len(got[2]):
+        if blocks is not None:
+            blocks.append(got[2:])
+        return np.array(got[2]), got[3], got[4]
+    if blocks is not None:
+        blocks.append(None)
+    new = record[start:]
+    return (
+        np.array([r[0] for r in new]),
+        np.array([r[1] for r in new]),
+        np.array([r[2] for r in new]),
+    )
+
+
 def keep_last(window: tuple, new: tuple, n: int) -> tuple:
     """``window``'s arrays (samples along the first axis) with ``new``'s appended, the
     last ``n`` samples of each."""
@@ -137,13 +160,36 @@ def extend_rows(
         rows["heading_command"].extend([turn_cmd.heading] * n_new)
 
 
-def flight_arrays(record: list, rows: dict, names: tuple[str, ...]) -> dict[str, np.ndarray]:
-    """The flight's per-sample arrays (reduced units) from the step records."""
-    t = np.array([r[0] for r in record])
-    qpos = np.array([r[1] for r in record])
-    qvel = np.array([r[2] for r in record])
-    moment = np.array([r[3] for r in record])
-    force = np.array([r[4] for r in record])
+def _from_blocks(blocks: list | None, n: int) -> tuple | None:
+    """(t, qpos, qvel, moment, force, power, tail force) of the first ``n`` samples from
+    :func:`new_samples`' blocks, as the records make them (contiguous arrays, the same
+    numbers); None where a block is missing."""
+    if not blocks or any(b is None for b in blocks) or sum(len(b[0]) for b in blocks) < n:
+        return None
+    out = np.concatenate([b[3] for b in blocks])[:n]
+    t = np.array([x for b in blocks for x in b[0]][:n])
+    qpos = np.concatenate([b[1] for b in blocks])[:n]
+    qvel = np.concatenate([b[2] for b in blocks])[:n]
+    parts = (out[:, 0:3], out[:, 3:6], out[:, 6], out[:, 7:10])
+    return (t, qpos, qvel, *(np.ascontiguousarray(a) for a in parts))
+
+
+def flight_arrays(
+    record: list, rows: dict, names: tuple[str, ...], blocks: list | None = None
+) -> dict[str, np.ndarray]:
+    """The flight's per-sample arrays (reduced units) from the step records (or, where
+    every control interval left them, :func:`new_samples`' ``blocks``: the same numbers)."""
+    got = _from_blocks(blocks, len(record))
+    if got is not None:
+        t, qpos, qvel, moment, force, power, tail_force = got
+    else:
+        t = np.array([r[0] for r in record])
+        qpos = np.array([r[1] for r in record])
+        qvel = np.array([r[2] for r in record])
+        moment = np.array([r[3] for r in record])
+        force = np.array([r[4] for r in record])
+        power = np.array([r[5] for r in record])
+        tail_force = np.array([r[6] for r in record])
     params = np.array(rows.pop("params"))
     euler = euler_zyx(qpos[:, 3:7])
     tail = np.array(rows.pop("tail"), dtype=float).reshape(-1, 3)
@@ -171,8 +217,8 @@ def flight_arrays(record: list, rows: dict, names: tuple[str, ...]) -> dict[str,
         "tail_elevation": tail[:, 0],
         "tail_spread": tail[:, 1],
         "tail_roll": tail[:, 2],
-        "tail_force": np.array([r[6] for r in record]),
-        "power": np.array([r[5] for r in record]),
+        "tail_force": tail_force,
+        "power": power,
         "force_x": force[:, 0],
         "force_y": force[:, 1],
         "force_z": force[:, 2],

@@ -17,12 +17,14 @@ from typing import Any
 import numpy as np
 
 from birdsim.errors import BirdsimError, limits_text, magnitude_ok
+from birdsim.flight import flight_arrays as step_records
 from birdsim.flight import turning
 from birdsim.flight.attitude import FIT_BEATS
 from birdsim.flight.attitude_commands import bank_command, body_rates, command_filter
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.demand_schedule import DemandSchedule, RefState
 from birdsim.flight.flight_arrays import attitude_estimate, extend_rows, flight_arrays, keep_last
+from birdsim.flight.float_ops import clip_float
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
 from birdsim.flight.pitch_observer import pitch_source
 from birdsim.flight.pitch_plan import PitchPlan, feedforward_pitch
@@ -232,9 +234,10 @@ def fly(
         lat_int, turn_cmd = [0.0], None
         roll_ref = roll_rate_ref = roll_acc_ref = 0.0  # turning's bank command (filtered)
         att_window = (np.empty((0, 4)), np.empty((0, 3)))  # quat, C_SEED omega (FIT_BEATS)
-        lat_window: list[tuple[float, float]] = []
+        lat_window: Any = np.empty((0, 2)) if track is None else []  # (y, vy); turning: pairs
         dt_ctl, n_fit = steps_ctl * h, FIT_BEATS * config.log_per_beat
         comp_pitch = pitch_source(att, config.log_per_beat, dt_ctl, compensate and track is None)
+        step_offsets, blocks = np.arange(steps_ctl) * h, []  # steps' times; samples' arrays
         for k in range(n_ctl):
             t = fb.time
             _ = control_hook and control_hook(k, t, fb)  # a flock's lockstep
@@ -246,13 +249,13 @@ def fly(
                 and not cmd.saturated
                 and not ctl.open_loop
                 and gains.ki > 0
-                and np.max(np.abs(est[0])) < INTEGRAL_BAND
+                and np.abs(est[0]).max() < INTEGRAL_BAND
             ):
                 # anti-windup: frozen while saturated or far off the path (a gust), and
                 # bounded: the integral only trims the small mismatch between the table's
                 # mean force and the flown one
                 limit = INTEGRAL_LIMIT * red.gravity / gains.ki if red.gravity > 0 else np.inf
-                integral = np.clip(integral + dt_ctl * est[0], -limit, limit)
+                integral = (integral + dt_ctl * est[0]).clip(-limit, limit)  # np.clip
             wind = wind_at(gusts, t / TWO_PI, speed)
             left = offset = None
             if free:
@@ -309,11 +312,11 @@ def fly(
                     # smoothed output, smoothed again (docs/free-body.md)
                     p_table = cmd.params[names.index("pitch")] if "pitch" in names else pitch
                     sp = cmd.params[sp_index] + p_table - (body_pitch + lead)
-                    offset[sp_index] = float(np.clip(sp, *sp_bounds)) - cmd.params[sp_index]
+                    offset[sp_index] = clip_float(sp, *sp_bounds) - cmd.params[sp_index]
                     jac_params = cmd.params + offset
                     if at_cmd:  # the stroke plane compensated for the command
                         sp = cmd.params[sp_index] + p_table - jac_pitch
-                        jac_params[sp_index] = float(np.clip(sp, *sp_bounds))
+                        jac_params[sp_index] = clip_float(sp, *sp_bounds)
                 if turn_cmd is None:
                     rate_cmd = body_rates(pitch_ref, roll_cmd, pitch_rate_ref, yaw_rate)
                     rate_cmd = rate_cmd + np.array([roll_rate_ref, 0.0, 0.0])
@@ -339,38 +342,35 @@ def fly(
                 fb.cb.tail_controls = tail
             else:
                 right = cmd.params
-            step_times = t + np.arange(steps_ctl) * h
-            pres = fb.schedule.advance(right, step_times, t, dt_ctl, left, offset)
+            pres = fb.schedule.advance(right, t + step_offsets, t, dt_ctl, left, offset)
             start = len(record)
             fb.step_many(pres, wind, record, every)
-            new = record[start:]
-            q_new = np.array([r[1] for r in new])
-            v_new = np.array([r[2] for r in new])
-            t_new = np.array([r[0] for r in new])
+            t_new, q_new, v_new = step_records.new_samples(fb, record, start, blocks)
             if track is None:
                 refs = sample_reference(reference, t_new)
                 e_pos = np.stack([refs["x"] - q_new[:, 0], refs["z"] - q_new[:, 2]], axis=1)
                 e_vel = np.stack([refs["vx"] - v_new[:, 0], refs["vz"] - v_new[:, 2]], axis=1)
                 v_along = v_new[:, 0]
-                lat_window.extend(zip(q_new[:, 1].tolist(), v_new[:, 1].tolist()))  # floats
-                y_ref = np.zeros(len(new))
+                lat_new = np.stack([q_new[:, 1], v_new[:, 1]], axis=1)
+                lat_window = keep_last((lat_window,), (lat_new,), n_fit)[0]
+                y_ref = np.zeros(len(t_new))
             else:
                 e_pos, e_vel, v_along, lateral, refs = track.errors(
                     t_new, q_new[:, :3], v_new[:, :3]
                 )
                 lat_window.extend(map(tuple, lateral))
+                del lat_window[: max(0, len(lat_window) - n_fit)]
                 y_ref = refs["y"]
             window.add_many(e_pos, e_vel, v_along)
             att_window = keep_last(att_window, (q_new[:, 3:7], C_SEED * v_new[:, 3:6]), n_fit)
             # |v - wind| as np.linalg.norm computes it (sqrt of the dot product)
             rows["V_air"].extend(math.sqrt(u.dot(u)) for u in v_new[:, :3] - wind)
-            rows["params"].extend(pres.params[: len(new) * every : every])
+            rows["params"].extend(pres.params[: len(t_new) * every : every])
             rows["pitch_command"].extend(
-                pres.pitch[: len(new) * every : every]
+                pres.pitch[: len(t_new) * every : every]
                 if pitch_ref is None
-                else [pitch_ref] * len(new)
+                else [pitch_ref] * len(t_new)
             )
-            del lat_window[: max(0, len(lat_window) - FIT_BEATS * config.log_per_beat)]
             extend_rows(rows, refs, y_ref, cmd, fb.cb.tail_controls, att, turn_cmd)
             if progress is not None:
                 progress((k + 1) / per_beat_ctl)
@@ -379,7 +379,7 @@ def fly(
     keep = sum(1 for r in record if r[0] <= beats * TWO_PI + 1e-9)  # whole intervals flown
     record = record[:keep]
     rows = {k: v[:keep] for k, v in rows.items()}
-    arrays = flight_arrays(record, rows, names)
+    arrays = flight_arrays(record, rows, names, blocks)
     result = FlightResult(arrays, bird, model, names, gains, open_loop or demands_only, projection)
     result.meta["root_applied_max"] = root_applied
     result.meta["attitude"] = config.attitude

@@ -29,7 +29,7 @@ import mujoco
 import numpy as np
 
 from birdsim.errors import BirdsimError
-from birdsim.flight import fast_prescription, fast_schedule
+from birdsim.flight import fast_prescription, fast_schedule, fast_wingbeat
 from birdsim.flight.playback import joint_derivatives
 from birdsim.mujoco.driver import set_root, wing_arrays
 from birdsim.physics.bird import Bird
@@ -170,6 +170,13 @@ class WingbeatSchedule:
         off = np.zeros(n) if offset is None else np.asarray(offset, dtype=float)
         u = 0.5 * (right + left)
         v = np.concatenate([0.5 * (right - left), off, sh, sh])
+        fused = fast_wingbeat.advance(self, u, v, times, rel, dt)
+        if fused is not None:  # the filters and the rows in one call (fast_wingbeat)
+            right3, left3, shoulder3, qpos, qvel, qacc, flags = fused
+            r, lft = tuple(right3), tuple(left3)
+            if flags & 4:  # finite: prescribe's rows (left None where it equals the right)
+                return self._finish(qpos, qvel, qacc, *r, None if flags & 2 else lft)
+            return self.prescribe(times, *r, left=lft, shoulder=tuple(shoulder3))
         fast = fast_schedule.advance(self.filter, self.input_filter, u, v, rel, dt, n)
         if fast is not None:  # the same numbers, compiled (birdsim.flight.fast_schedule)
             r, lft, shoulder = fast
@@ -217,11 +224,12 @@ class WingbeatSchedule:
         p'' when they differ."""
         t = len(times)
         sw_r = sw_l = None
-        if shoulder is not None and any(np.any(a) for a in shoulder):
+        if shoulder is not None and any(a.any() for a in shoulder):  # np.any's answer
             sw_r = tuple(a[:, :2] for a in shoulder)
             sw_l = tuple(a[:, 2:] for a in shoulder)
         if left is not None and sw_r is None:
-            if all(np.array_equal(x, y) for x, y in zip(left, (p, dp, ddp))):
+            # np.array_equal's answer (same shape, every entry ==), without its wrapper
+            if all(x.shape == y.shape and (x == y).all() for x, y in zip(left, (p, dp, ddp))):
                 left = None
         same = left is None and sw_r is None
         if not same and left is None:
