@@ -5,12 +5,11 @@ demand far short (by more than :data:`RESERVE_MISS` of it; reduced units, seed b
 Why: a side gust in the circle's 39-degree bank (``birdsim fly circle --attitude free
 --gust 25:1:0:0.15:0``) rolls the seed bird 16-18 degrees past its bank; the path loop
 then asks 1.45 times the turn's force, the table's twist amplitude reaches its upper
-bound (so its differential has no room), the stroke plane's roll derivative halves as the
-flap amplitude grows, and the differential inputs stayed at their 0.15-rad bounds for 4
-wingbeats while the bird left the undisturbed flight by 2.9 semispans.  The 0.15-rad
-bounds are the loop's choice, not a measured limit (docs/free-body.md); an undisturbed
-turn never misses by that much, so it flies as before to the last digit (docs/turning.md,
-"Gust stage, second pass").
+bound (so its differential has no room) and the differential inputs stayed at their
+0.15-rad bounds for 4 wingbeats while the bird left the undisturbed flight by 2.9
+semispans (1.17 with the reserve).  The 0.15-rad bounds are the loop's choice, not a
+measured limit (docs/free-body.md); an undisturbed turn never misses by that much, so it
+flies as before to the last digit (docs/turning.md, "Gust stage, second pass").
 """
 
 from __future__ import annotations
@@ -21,9 +20,9 @@ import numpy as np
 RESERVE_INPUTS = ("flap_amp", "stroke_plane")
 #: Their bounds in a turn's reserve, as a multiple of the loop's own (0.15 rad: 0.3 rad of
 #: right-left difference).  Measured (seed bird, circle, 30 % side gust for one wingbeat
-#: from wingbeat 25 / 25.25 / 25.5 / 25.75, peak distance from the undisturbed circle in
-#: semispans): 1 (none) 2.95 / 0.28 / 0.25 / 0.51, 2 1.09 / 0.25 / 0.15 / 0.27, 3 0.53 /
-#: 0.24 / 0.15 / 0.30.
+#: from wingbeat 25 / 25.25 / 25.5 / 25.75, the largest distance from the undisturbed
+#: circle in semispans): 1 (none) 2.95 / 0.28 / 0.25 / 0.51, 2 1.17 / 0.22 / 0.25 / 0.48,
+#: 3 0.57 / 0.21 / 0.25 / 0.47 (not kept: 0.45 rad of flap amplitude between the wings).
 TURN_RESERVE = 2.0
 #: The allocation falls back on the reserve where a bound binds and the lateral inputs
 #: miss the roll and yaw demand by more than this fraction of it: a large miss only.  The
