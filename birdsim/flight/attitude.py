@@ -53,6 +53,7 @@ from birdsim.flight.attitude_jacobians import (
 )
 from birdsim.flight.attitude_pitch import WING_PITCH_BEATS, pitch_allocation
 from birdsim.flight.attitude_refresh import StalenessCheck
+from birdsim.flight.attitude_reserve import RESERVE_MISS, reserve_bounds
 from birdsim.flight.attitude_stiffness import measured_pitch_stiffness
 from birdsim.flight.body_attitude import FIT_BEATS, euler_zyx, wingbeat_fit_matrix
 from birdsim.flight.bounded_lsq import bounded_lsq, vector_norm
@@ -187,6 +188,8 @@ class AttitudeLoop:
         self.stiffness = np.zeros(3)  # restoring stiffness per axis (>= 0, table units)
         #: straight path: re-measure J when it under-predicts the inputs' moment
         self.check = StalenessCheck(fb.red.period)
+        #: a turn's reserve (:mod:`birdsim.flight.attitude_reserve`; 1: none)
+        self.reserve = 1.0
 
     def preset_integral(
         self, moment: np.ndarray, params: np.ndarray, pitch: float, speed: float
@@ -354,6 +357,12 @@ class AttitudeLoop:
             a_aug = np.vstack([a, reg * np.eye(len(cols))])
             b_aug = np.concatenate([demand[rows], np.zeros(len(cols))])
             x, mask = bounded_lsq(a_aug, b_aug, lo[cols] / scale, hi[cols] / scale)
+            short = vector_norm(a @ x - demand[rows]) > RESERVE_MISS * vector_norm(demand[rows])
+            if rows is LAT_ROWS and self.reserve > 1.0 and np.any(mask != 0) and short:
+                kin = self.fb.kin  # a turn's reserve: wider bounds where these leave it short
+                lim = {p.name: (p.lower, p.upper) for p in kin.params}
+                b2 = reserve_bounds(INPUTS, kin.param_names, lim, params, lo, hi, self.reserve)
+                x, mask = bounded_lsq(a_aug, b_aug, b2[0][cols] / scale, b2[1][cols] / scale)
             u[cols] = x * scale
             active = active or bool(np.any(mask != 0))
             miss += vector_norm(a @ x - demand[rows])

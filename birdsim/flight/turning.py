@@ -29,6 +29,7 @@ import numpy as np
 
 from birdsim.flight.attitude import AXIS_BEATS, LATERAL_INTEGRAL_RAD, AttitudeLoop, attitude_gains
 from birdsim.flight.attitude_commands import command_filter
+from birdsim.flight.attitude_reserve import TURN_RESERVE
 from birdsim.flight.bank import TurnAttitude, lateral_acceleration, lateral_fit, turn_attitude
 
 TWO_PI = 2.0 * math.pi
@@ -148,9 +149,12 @@ def attitude_loop_for(fb: Any, enabled: bool, track: Any, at_command: bool) -> A
     """The attitude loop of a flight on ``track`` (None: straight), with the time
     constants of :func:`axis_beats` and, where ``at_command`` (``freeflight.JAC_AT_COMMAND``)
     and :func:`fourth_stage_pitch` say so, the fourth-stage pitch loop
-    (``AttitudeLoop.straight``)."""
+    (``AttitudeLoop.straight``); a turn's allocation has the reserve of
+    :mod:`birdsim.flight.attitude_reserve` (``AttitudeLoop.reserve``)."""
     att = AttitudeLoop(fb, enabled=enabled, **axis_beats(track))
     att.straight = at_command and fourth_stage_pitch(track, fb)
+    if track is not None:  # wider lateral bounds where the loop's own leave it short
+        att.reserve = TURN_RESERVE
     return att
 
 
