@@ -19,8 +19,8 @@ import time
 
 import numpy as np
 import pytest
+from table_platform import same_platform
 
-from birdsim.blas_kernel import blas_kernels
 from birdsim.tables.build import build_table, config_from_meta
 from birdsim.tables.lookup import load_table
 from birdsim.tables.runner import run_pinned
@@ -41,21 +41,6 @@ def test_every_table_is_listed():
 #: here).  The m5 tables needed 2 and 17 while m5's shoulder flap was bounded by pi/4 (363
 #: of 1331 and 1746 of 6069 cells ok); with pi/2 their slices hold 32 and 264.
 MIN_OK: dict[str, int] = {}
-
-
-#: Tables built before their provenance recorded the OpenBLAS kernels were built on
-#: SkylakeX kernels (an AVX-512 Xeon choosing them itself): they rebuild bitwise with
-#: OPENBLAS_CORETYPE=SkylakeX and up to 1.47 rad apart on Haswell's (birdsim/blas_kernel.py).
-UNRECORDED_KERNELS = ["SkylakeX"]
-
-
-def _same_kernels(t) -> None:
-    """Skip, saying why, where this process's OpenBLAS runs other kernels than the table
-    was built on: the rebuild is then not expected to be bitwise (a branch can flip)."""
-    built = t.meta.get("blas_kernels", UNRECORDED_KERNELS)
-    here = blas_kernels()
-    if here != built:
-        pytest.skip(f"table built on OpenBLAS kernels {built}, this process runs {here}")
 
 
 def test_birdsim_pins_the_haswell_kernels():
@@ -80,7 +65,7 @@ def test_birdsim_pins_the_haswell_kernels():
 
 def _rebuild_slice(stem: str) -> tuple[np.ndarray, np.ndarray, float]:
     t = load_table(PACKAGE_TABLES / f"{stem}.npz")
-    _same_kernels(t)
+    same_platform(t)
     rec = t.meta["reproduce"]
     assert re.fullmatch(r"[0-9a-f]{40}", t.meta["git_commit"]), t.meta["git_commit"]  # clean code
     cfg = config_from_meta(t)
@@ -112,7 +97,7 @@ def test_one_slice_of_the_shipped_table_rebuilds_to_1e_9_rad(stem):
 def test_the_whole_base_table_rebuilds_to_1e_9_rad():
     """Every pass (slices, V lines, backward passes, regularising pass), 1331 cells."""
     t = load_table(PACKAGE_TABLES / "base.npz")
-    _same_kernels(t)
+    same_platform(t)
     again = build_table(config_from_meta(t), jobs=2)
     assert np.max(np.abs(again.params - t.params)) <= 1e-9
     np.testing.assert_array_equal(again.status, t.status)

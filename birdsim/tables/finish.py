@@ -79,6 +79,7 @@ def finish_table(
 ) -> LookupTable:
     from birdsim import __version__
     from birdsim.blas_kernel import blas_kernels
+    from birdsim.simd_dispatch import numpy_simd
 
     chk = final_check(cfg, model, X)
     meta = {
@@ -86,6 +87,7 @@ def finish_table(
         "package_version": __version__,
         "git_commit": _git_commit(),
         "blas_kernels": blas_kernels(),
+        "numpy_simd": numpy_simd(),
         "built_at": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()),
         "config_sha": cfg.digest(),
         **{k: v for k, v in cfg.to_dict().items() if k != "bird"},
