@@ -10,13 +10,12 @@ import argparse
 import time
 from pathlib import Path
 
-from birdsim.commands.common import add_bird_arguments, bird_from_args
+from birdsim.commands.common import PRESET_LIST, add_bird_arguments, bird_from_args
 from birdsim.commands.render_flight import add_flight_arguments
 from birdsim.errors import BirdsimError, limits_text, magnitude_ok
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    from birdsim.flight.manoeuvre import PRESETS
 
     p = sub.add_parser(
         "export",
@@ -26,7 +25,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "source",
         metavar="SOURCE",
-        help=f"a preset ({', '.join(PRESETS)}), a manoeuvre .toml or a flight log .npz",
+        help=f"a preset ({PRESET_LIST}), a manoeuvre .toml or a flight log .npz (one bird or a flock)",
     )
     p.add_argument(
         "--format", required=True, metavar="FMT", help="usd (needs birdsim[usd]), bvh or csv"

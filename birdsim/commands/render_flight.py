@@ -17,6 +17,7 @@ from birdsim.commands.common import (
     check_still,
     load_bird,
     load_table_for,
+    print_time_base,
     slug,
 )
 from birdsim.errors import BirdsimError
@@ -233,6 +234,7 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
     bird_and_table = flight_bird_and_table(args, model) if reference is not None else None
     out = Path(args.out) if args.out else default_out
     check_clip_outputs(args, out, at)
+    print_time_base(args)
     if reference is not None:
         beats = (
             reference.duration_beats

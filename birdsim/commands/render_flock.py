@@ -15,7 +15,7 @@ from birdsim.errors import BirdsimError
 
 def run_flock_log(args: argparse.Namespace, options) -> int:
     """Render the flock log ``args.manoeuvre`` (video, or a still with ``--still``)."""
-    from birdsim.commands.common import check_clip_outputs, check_still, slug
+    from birdsim.commands.common import check_clip_outputs, check_still, print_time_base, slug
     from birdsim.flight.flock_log import load_flock_log
     from birdsim.render.flock_scene import FlockScene, flock_states, scene_factory
     from birdsim.render.gl import select_gl
@@ -38,6 +38,7 @@ def run_flock_log(args: argparse.Namespace, options) -> int:
     select_gl(args.gl)
     out = Path(args.out) if args.out else Path("renders") / f"{slug(Path(args.manoeuvre).stem)}.mp4"
     check_clip_outputs(args, out, at)
+    print_time_base(args)
     states = flock_states(birds, options, title=name)
     leader, others = states[0], states[1:]
     if at is not None:

@@ -1,0 +1,120 @@
+"""A new user's second hour: the frictions met trying the README's and the docs' commands
+and their mistakes (each test fails on the code before its fix).
+
+* ``render``'s non-numbers say what is allowed (``--seconds``, ``--fps``, ``--at``);
+* a refused ``render`` prints its one error line and nothing else (the time base was
+  printed on stdout before the refusal);
+* ``fly flock --attitude posed`` is refused in one line before any bird flies (it printed
+  twelve progress lines first);
+* ``view`` of a flock preset or file draws every bird (it flew the flock, then stopped on
+  a traceback);
+* the help texts name every shipped preset and that ``--bird`` takes a shipped bird's name.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import re
+
+import pytest
+
+from birdsim.cli import build_parser, main
+from birdsim.commands.common import FLOCK_LIST, PRESET_LIST
+from birdsim.flight.flock import preset_names
+from birdsim.flight.presets import PATH_PRESETS
+from birdsim.flight.turn_presets import TURN_PRESETS
+
+
+def _run(argv: list[str], capsys: pytest.CaptureFixture) -> tuple[int, str, list[str]]:
+    capsys.readouterr()
+    try:
+        code = main(argv)
+    except SystemExit as exc:
+        code = exc.code if isinstance(exc.code, int) else 1
+    captured = capsys.readouterr()
+    return code, captured.out, captured.err.splitlines()
+
+
+@pytest.mark.parametrize(
+    "flags, text",
+    [
+        (["--seconds", "abc"], "--seconds 'abc' is not a number; allowed: a number in (0, 3600]"),
+        (["--fps", "x"], "--fps 'x' is not an integer; allowed: an integer in [1, 240]"),
+        (["--still", "s.png", "--at", "abc"], "--at 'abc' is not a number; allowed: a time"),
+    ],
+)
+def test_render_says_what_a_non_number_should_be(flags, text, tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)
+    code, _, err = _run(["render", "cruise", "--quiet", *flags], capsys)
+    assert code == 2 and len(err) == 1, err
+    assert text in err[0], err[0]
+
+
+@pytest.mark.parametrize(
+    "flags", [["--out", "exists.mp4"], ["--camera", "sky"], ["--sheet", "exists.png"]]
+)
+def test_a_refused_render_prints_only_its_error(flags, tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "exists.mp4").write_bytes(b"old")
+    (tmp_path / "exists.png").write_bytes(b"old")
+    code, out, err = _run(["render", "cruise", "--quiet", *flags], capsys)
+    assert code == 2 and len(err) == 1 and err[0].startswith("birdsim render: error:"), err
+    assert out == "", out  # before: "birdsim render: time base: ..." and then the refusal
+    assert (tmp_path / "exists.mp4").read_bytes() == b"old"
+
+
+def test_a_posed_flock_on_a_turning_path_is_refused_before_any_bird_flies(capsys):
+    code, out, err = _run(["fly", "flock", "--attitude", "posed"], capsys)
+    assert code == 2 and len(err) == 1, err
+    assert "--attitude posed cannot fly" in err[0] and "allowed: --attitude free" in err[0]
+    assert out == ""
+
+
+def test_view_of_a_flock_file_draws_every_bird(tmp_path, capsys):
+    src = tmp_path / "two.toml"
+    src.write_text(
+        'path = "cruise"\nseconds = 2.0\n'
+        "[[bird]]\noffset = [0.0, 0.0, 0.0]\n[[bird]]\noffset = [0.0, 2.0, 0.0]\n"
+    )
+    page = tmp_path / "two.html"
+    code, out, err = _run(["view", str(src), "--out", str(page)], capsys)
+    assert code == 0, err
+    assert "2 birds" in out and "flown in MuJoCo" in out, out
+    html = page.read_text()
+    m = re.search(r'<script[^>]*id="birdsim-scene"[^>]*>(.*?)</script>', html, re.S)
+    assert m and json.loads(m.group(1))["n_birds"] == 2
+
+
+def _parsers() -> dict[str, argparse.ArgumentParser]:
+    for action in build_parser()._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            return dict(action.choices)
+    raise AssertionError("no subcommands")
+
+
+def _help_of(parser: argparse.ArgumentParser, dest: str) -> str:
+    return next(a.help for a in parser._actions if a.dest == dest) or ""
+
+
+def test_the_help_names_every_shipped_preset():
+    assert PRESET_LIST.split(", ") == [*PATH_PRESETS, *TURN_PRESETS]
+    assert FLOCK_LIST.split(", ") == preset_names()
+    parsers = _parsers()
+    for command, dest in (
+        ("fly", "manoeuvre"),
+        ("render", "manoeuvre"),
+        ("export", "source"),
+        ("view", "source"),
+    ):
+        assert PRESET_LIST in _help_of(parsers[command], dest), command
+    for command in ("fly", "view"):  # they fly a flock by its name
+        assert FLOCK_LIST in _help_of(parsers[command], {"fly": "manoeuvre"}.get(command, "source"))
+
+
+def test_every_bird_option_says_it_takes_a_shipped_birds_name():
+    for name, parser in _parsers().items():
+        helps = [a.help or "" for a in parser._actions if "--bird" in a.option_strings]
+        for text in helps:  # validate's names the pigeon as its default
+            assert "pigeon" in text, (name, text)
+
