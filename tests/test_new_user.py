@@ -117,4 +117,3 @@ def test_every_bird_option_says_it_takes_a_shipped_birds_name():
         helps = [a.help or "" for a in parser._actions if "--bird" in a.option_strings]
         for text in helps:  # validate's names the pigeon as its default
             assert "pigeon" in text, (name, text)
-
