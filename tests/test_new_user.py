@@ -8,7 +8,9 @@ and their mistakes (each test fails on the code before its fix).
   twelve progress lines first);
 * ``view`` of a flock preset or file draws every bird (it flew the flock, then stopped on
   a traceback);
-* the help texts name every shipped preset and that ``--bird`` takes a shipped bird's name.
+* the help texts name every shipped preset and that ``--bird`` takes a shipped bird's name;
+* ``view`` says so when the flight it flew saturated, as ``fly`` and ``render`` do;
+* an unknown model names ``--model`` in fly, export, envelope and view (as in render).
 """
 
 from __future__ import annotations
@@ -117,3 +119,29 @@ def test_every_bird_option_says_it_takes_a_shipped_birds_name():
         helps = [a.help or "" for a in parser._actions if "--bird" in a.option_strings]
         for text in helps:  # validate's names the pigeon as its default
             assert "pigeon" in text, (name, text)
+
+
+def test_view_says_so_when_the_flight_it_flew_saturated(tmp_path, capsys):
+    """A strong updraft the table cannot answer (4 saturated wingbeats, as `birdsim fly
+    cruise --gust 3:2:0:0.4` says): the page is written, with the warning fly prints."""
+    page = tmp_path / "sat.html"
+    code, out, err = _run(["view", "cruise", "--gust", "3:2:0:0.4", "--out", str(page)], capsys)
+    assert code == 0 and page.is_file(), err
+    assert len(err) == 1 and err[0].startswith("birdsim view: warning: saturated in"), err
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["fly", "cruise"],
+        ["envelope"],
+        ["export", "cruise", "--format", "csv", "--out", "x.csv"],
+        ["view", "cruise", "--out", "x.html"],
+    ],
+)
+def test_an_unknown_model_names_the_flag(argv, tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)
+    code, out, err = _run([*argv, "--model", "m9"], capsys)
+    assert code == 2 and len(err) == 1, err
+    assert ": error: --model 'm9' is unknown; allowed: base, m1" in err[0], err[0]
+    assert not list(tmp_path.iterdir())

@@ -110,6 +110,10 @@ def run(args: argparse.Namespace) -> int:
             from birdsim.studio.flock_flights import flock_birds
 
             return _view_birds(args, out, fps, flock_birds(log), "flown in MuJoCo")
+        from birdsim.flight.saturation import report_saturation
+
+        model = str(log.get("model", args.model))
+        report_saturation(log, command="view", bird_arg=args.bird, model=model, strict=False)
     scene = flight_scene(log, ViewOptions(fps=fps), title=Path(args.source).stem)
     _write_view(scene, out, args.force, ("the view", MAX_VIEW_BYTES, "lower --fps"), "", how)
     return 0
