@@ -10,7 +10,8 @@ and their mistakes (each test fails on the code before its fix).
   a traceback);
 * the help texts name every shipped preset and that ``--bird`` takes a shipped bird's name;
 * ``view`` says so when the flight it flew saturated, as ``fly`` and ``render`` do;
-* an unknown model names ``--model`` in fly, export, envelope and view (as in render).
+* an unknown model names ``--model`` in fly, export, envelope and view (as in render);
+* a batch (``fly``, ``render``) with a misspelt entry is refused before any flight.
 """
 
 from __future__ import annotations
@@ -145,3 +146,17 @@ def test_an_unknown_model_names_the_flag(argv, tmp_path, monkeypatch, capsys):
     assert code == 2 and len(err) == 1, err
     assert ": error: --model 'm9' is unknown; allowed: base, m1" in err[0], err[0]
     assert not list(tmp_path.iterdir())
+
+
+@pytest.mark.parametrize("command", ["fly", "render"])
+def test_a_misspelt_batch_entry_is_refused_before_any_flight(
+    command, tmp_path, monkeypatch, capsys
+):
+    """Before: entry 0 was flown (and written) and then entry 1 failed."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "batch.txt").write_text("cruise\ncruse\n")
+    argv = [command, "--batch", "batch.txt", "--out", "logs", "--quiet", "--jobs", "1"]
+    code, out, err = _run(argv, capsys)
+    assert code == 2 and len(err) == 1, err
+    assert err[0].startswith(f"birdsim {command}: error: entry 1 (cruse): manoeuvre 'cruse'"), err
+    assert out == "" and not list(tmp_path.glob("logs*")), out
