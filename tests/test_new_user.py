@@ -11,7 +11,7 @@ and their mistakes (each test fails on the code before its fix).
 * the help texts name every shipped preset and that ``--bird`` takes a shipped bird's name;
 * ``view`` says so when the flight it flew saturated, as ``fly`` and ``render`` do;
 * an unknown model names ``--model`` in fly, export, envelope and view (as in render);
-* a batch (``fly``, ``render``) with a misspelt entry is refused before any flight.
+* a batch (``fly``, ``render``) with a misspelt preset is refused before any flight.
 """
 
 from __future__ import annotations

@@ -26,12 +26,13 @@ def _jobs_arg(raw: str | None) -> int | None:
 
 
 def check_sources(sources: list[str]) -> None:
-    """Every entry names a preset or a readable manoeuvre file: a misspelt entry is refused
-    in one line before any flight (a bad file's content still fails its own entry)."""
+    """Every entry that is not a file names a preset: a misspelt preset is refused in one
+    line before any flight.  A file (missing, or bad inside) fails its own entry, the
+    others are flown and written (on a cluster the files are the workers' to read)."""
     from birdsim.flight.path_file import get_flight
 
     for k, src in enumerate(sources):
-        if Path(src).exists():
+        if "/" in src or Path(src).suffix.lower() in (".toml", ".npz") or Path(src).exists():
             continue
         try:
             get_flight(src, turning=True)
