@@ -11,7 +11,8 @@ and their mistakes (each test fails on the code before its fix).
 * the help texts name every shipped preset and that ``--bird`` takes a shipped bird's name;
 * ``view`` says so when the flight it flew saturated, as ``fly`` and ``render`` do;
 * an unknown model names ``--model`` in fly, export, envelope and view (as in render);
-* a batch (``fly``, ``render``) with a misspelt preset is refused before any flight.
+* a batch (``fly``, ``render``) with a misspelt preset is refused before any flight;
+* a missing manoeuvre file lists the turning presets too (as an unknown name does).
 """
 
 from __future__ import annotations
@@ -160,3 +161,9 @@ def test_a_misspelt_batch_entry_is_refused_before_any_flight(
     assert code == 2 and len(err) == 1, err
     assert err[0].startswith(f"birdsim {command}: error: entry 1 (cruse): manoeuvre 'cruse'"), err
     assert out == "" and not list(tmp_path.glob("logs*")), out
+
+
+def test_a_missing_manoeuvre_file_lists_every_preset_it_could_have_been(capsys):
+    code, _, err = _run(["fly", "nothing.toml"], capsys)
+    assert code == 2 and len(err) == 1, err
+    assert f"'nothing.toml' does not exist; allowed: {PRESET_LIST} or a readable" in err[0]
