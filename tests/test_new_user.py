@@ -12,7 +12,8 @@ and their mistakes (each test fails on the code before its fix).
 * ``view`` says so when the flight it flew saturated, as ``fly`` and ``render`` do;
 * an unknown model names ``--model`` in fly, export, envelope and view (as in render);
 * a batch (``fly``, ``render``) with a misspelt preset is refused before any flight;
-* a missing manoeuvre file lists the turning presets too (as an unknown name does).
+* a missing manoeuvre file lists the turning presets too (as an unknown name does);
+* ``tables --help`` names its four subcommands (it said three and named a module).
 """
 
 from __future__ import annotations
@@ -167,3 +168,11 @@ def test_a_missing_manoeuvre_file_lists_every_preset_it_could_have_been(capsys):
     code, _, err = _run(["fly", "nothing.toml"], capsys)
     assert code == 2 and len(err) == 1, err
     assert f"'nothing.toml' does not exist; allowed: {PRESET_LIST} or a readable" in err[0]
+
+
+def test_tables_help_names_its_four_subcommands_not_its_modules():
+    parser = _parsers()["tables"]
+    text = parser.description or ""
+    subs = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+    assert "build|info|lookup|jacobians" in text and ":mod:" not in text
+    assert set(subs.choices) == {"build", "info", "lookup", "jacobians"}
