@@ -13,7 +13,8 @@ and their mistakes (each test fails on the code before its fix).
 * an unknown model names ``--model`` in fly, export, envelope and view (as in render);
 * a batch (``fly``, ``render``) with a misspelt preset is refused before any flight;
 * a missing manoeuvre file lists the turning presets too (as an unknown name does);
-* ``tables --help`` names its four subcommands (it said three and named a module).
+* ``tables --help`` names its four subcommands (it said three and named a module);
+* ``render LOG.npz`` refuses --model (another), --bird, --table, --kinematic as export does.
 """
 
 from __future__ import annotations
@@ -176,3 +177,29 @@ def test_tables_help_names_its_four_subcommands_not_its_modules():
     subs = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
     assert "build|info|lookup|jacobians" in text and ":mod:" not in text
     assert set(subs.choices) == {"build", "info", "lookup", "jacobians"}
+
+
+@pytest.fixture(scope="module")
+def cruise_log(tmp_path_factory) -> str:
+    out = tmp_path_factory.mktemp("log") / "c.npz"
+    assert main(["fly", "cruise", "--quiet", "--seconds", "3", "--out", str(out)]) == 0
+    return str(out)
+
+
+@pytest.mark.parametrize(
+    "flags, text",
+    [
+        (["--model", "m4"], "--model 'm4' differs from the log's model 'm3'"),
+        (["--bird", "pigeon"], "--bird does not apply to a flight log"),
+        (["--table", "t.npz"], "--table does not apply to a flight log"),
+        (["--kinematic"], "--kinematic does not apply to a flight log"),
+    ],
+)
+def test_render_of_a_log_refuses_what_the_log_already_says(
+    flags, text, cruise_log, tmp_path, monkeypatch, capsys
+):
+    """As export does; before, render drew the log and ignored them."""
+    monkeypatch.chdir(tmp_path)
+    code, out, err = _run(["render", cruise_log, "--still", "s.png", *flags], capsys)
+    assert code == 2 and len(err) == 1, err
+    assert text in err[0] and out == "" and not list(tmp_path.iterdir()), err[0]

@@ -158,6 +158,32 @@ def check_clip_outputs(args: argparse.Namespace, out: Path, at: float | None) ->
         check_writable(Path(args.sheet), args.force, "--sheet")
 
 
+def refuse_for_a_log(
+    given: tuple[tuple[str, object], ...], log_model: str, model: str | None
+) -> None:
+    """A flight log records its bird, model and flight: one line for the first option in
+    ``given`` (flag, value) that is set, or for a ``--model`` other than ``log_model``."""
+    for arg, value in given:
+        if value:
+            raise BirdsimError(
+                f"{arg} does not apply to a flight log (it records its bird, model and flight); allowed: omit {arg}"
+            )
+    if model and model != log_model:
+        raise BirdsimError(
+            f"--model {model!r} differs from the log's model {log_model!r}; allowed: omit --model for a log"
+        )
+
+
+def render_log_flags(args: argparse.Namespace) -> tuple[tuple[str, object], ...]:
+    """The options ``render`` does not take with a flight log (it records its flight)."""
+    return (
+        ("--bird", args.bird),
+        ("--set", args.set),
+        ("--table", args.table),
+        ("--kinematic", args.kinematic),
+    )
+
+
 def print_time_base(args: argparse.Namespace) -> None:
     """Print the time base ``render`` chose (``args.time_base``), after every check, so
     that a refused command prints nothing but its one error line."""
