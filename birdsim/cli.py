@@ -56,6 +56,10 @@ FLAG_NAMES: dict[str, dict[str, str]] = {
     "render": {"model ": "--model ", "path ": "--out "},
     "report": {"out=": "--out ", "only=": "--only "},
     "crosscheck": {"model ": "--model "},
+    "fly": {"model ": "--model "},
+    "export": {"model ": "--model "},
+    "envelope": {"model ": "--model "},
+    "view": {"model ": "--model "},
 }
 #: Python hints inside a message and their flags.
 FLAG_HINTS = {

@@ -19,6 +19,10 @@ from birdsim.physics.kinematics import MODELS
 
 #: The kinematic models a ``--model`` takes, for help texts: "base, m1, ..., m4 or m5".
 MODEL_LIST = ", ".join(list(MODELS)[:-1]) + " or " + list(MODELS)[-1]
+#: The shipped presets by name, for help texts (written out: the turning and flock presets'
+#: modules take half a second to import; tests/test_new_user.py checks the names).
+PRESET_LIST = "hover, cruise, take-off, landing, turn-90, circle, s-turn, u-turn"
+FLOCK_LIST = "flock, flock-seed, flock-v"
 
 
 def parse_pairs(pairs: list[str] | None, arg: str) -> dict[str, str]:
@@ -66,7 +70,8 @@ def add_bird_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument(
         "--bird",
         metavar="FILE.toml",
-        help="bird geometry and coefficients (default: the seed bird)",
+        help="bird geometry and coefficients: a TOML file or a shipped bird's name (pigeon, "
+        "seed-bird; default: the seed bird)",
     )
     p.add_argument(
         "--set",
@@ -153,6 +158,40 @@ def check_clip_outputs(args: argparse.Namespace, out: Path, at: float | None) ->
         check_writable(Path(args.sheet), args.force, "--sheet")
 
 
+def refuse_for_a_log(
+    given: tuple[tuple[str, object], ...], log_model: str, model: str | None
+) -> None:
+    """A flight log records its bird, model and flight: one line for the first option in
+    ``given`` (flag, value) that is set, or for a ``--model`` other than ``log_model``."""
+    for arg, value in given:
+        if value:
+            raise BirdsimError(
+                f"{arg} does not apply to a flight log (it records its bird, model and flight); allowed: omit {arg}"
+            )
+    if model and model != log_model:
+        raise BirdsimError(
+            f"--model {model!r} differs from the log's model {log_model!r}; allowed: omit --model for a log"
+        )
+
+
+def render_log_flags(args: argparse.Namespace) -> tuple[tuple[str, object], ...]:
+    """The options ``render`` does not take with a flight log (it records its flight)."""
+    return (
+        ("--bird", args.bird),
+        ("--set", args.set),
+        ("--table", args.table),
+        ("--kinematic", args.kinematic),
+    )
+
+
+def print_time_base(args: argparse.Namespace) -> None:
+    """Print the time base ``render`` chose (``args.time_base``), after every check, so
+    that a refused command prints nothing but its one error line."""
+    note = getattr(args, "time_base", None)
+    if note:
+        print(note, flush=True)
+
+
 def check_still(args: argparse.Namespace, clip_beats: float) -> float | None:
     """``--still``/``--at``/``--sheet`` checked before any work; the still's time in
     wingbeats (None when no still is asked for)."""
@@ -176,7 +215,9 @@ def _at_beats(raw: str | None, clip_beats: float) -> float:
     try:
         value = float(raw)
     except ValueError:
-        value = float("nan")
+        raise BirdsimError(
+            f"--at {raw!r} is not a number; allowed: a time in wingbeats in [0, {clip_beats:g}]"
+        ) from None
     if not (0.0 <= value <= clip_beats):
         raise BirdsimError(
             f"--at {raw!r} is outside the clip; allowed: a time in wingbeats in [0, {clip_beats:g}]"

@@ -10,13 +10,12 @@ import argparse
 import time
 from pathlib import Path
 
-from birdsim.commands.common import add_bird_arguments, bird_from_args
+from birdsim.commands.common import PRESET_LIST, add_bird_arguments, bird_from_args
 from birdsim.commands.render_flight import add_flight_arguments
 from birdsim.errors import BirdsimError, limits_text, magnitude_ok
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    from birdsim.flight.manoeuvre import PRESETS
 
     p = sub.add_parser(
         "export",
@@ -26,7 +25,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "source",
         metavar="SOURCE",
-        help=f"a preset ({', '.join(PRESETS)}), a manoeuvre .toml or a flight log .npz",
+        help=f"a preset ({PRESET_LIST}), a manoeuvre .toml or a flight log .npz (one bird or a flock)",
     )
     p.add_argument(
         "--format", required=True, metavar="FMT", help="usd (needs birdsim[usd]), bvh or csv"
@@ -92,7 +91,12 @@ def _positive(arg: str, raw: str | None) -> float | None:
 
 def run(args: argparse.Namespace) -> int:
     from birdsim import export
-    from birdsim.commands.common import check_writable, load_model_table, require_bird
+    from birdsim.commands.common import (
+        check_writable,
+        load_model_table,
+        refuse_for_a_log,
+        require_bird,
+    )
     from birdsim.export.frames import check_fps
 
     # every cheap check first: a mistake costs nothing and writes nothing
@@ -130,7 +134,7 @@ def run(args: argparse.Namespace) -> int:
     if args.source.lower().endswith(".npz"):
         from birdsim.export.flightlog import frames_from_log, read_flight_log
 
-        for arg, value in (
+        for_a_log = (
             ("--table", args.table),
             ("--seconds", args.seconds),
             ("--bird", args.bird),
@@ -139,11 +143,8 @@ def run(args: argparse.Namespace) -> int:
             ("--open-loop", args.open_loop),
             ("--attitude", args.attitude),
             ("--kinematic", args.kinematic),
-        ):
-            if value:
-                raise BirdsimError(
-                    f"{arg} does not apply to a flight log (it records its bird, model and flight); allowed: omit {arg}"
-                )
+        )
+        refuse_for_a_log(for_a_log, "", None)
         from birdsim.flight.flock_log import is_flock_log
 
         if is_flock_log(args.source):  # every bird (issue 27): birdsim.commands.export_flock
@@ -151,10 +152,7 @@ def run(args: argparse.Namespace) -> int:
 
             return export_flock_log(args, fps, rate_for, metres)
         log = read_flight_log(args.source)
-        if args.model and args.model != str(log["model"]):
-            raise BirdsimError(
-                f"--model {args.model!r} differs from the log's model {str(log['model'])!r}; allowed: omit --model for a log"
-            )
+        refuse_for_a_log((), str(log["model"]), args.model)
         frames = frames_from_log(
             log,
             fps=fps,

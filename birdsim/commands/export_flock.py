@@ -9,8 +9,6 @@ import time
 from pathlib import Path
 from typing import Any
 
-from birdsim.errors import BirdsimError
-
 
 def export_flock_log(
     args: argparse.Namespace, fps: float, rate_for: Any, metres: float | None
@@ -18,7 +16,7 @@ def export_flock_log(
     """Export every bird of the flock log ``args.source``; every output checked first
     (nothing written when one is refused)."""
     from birdsim import export
-    from birdsim.commands.common import check_writable
+    from birdsim.commands.common import check_writable, refuse_for_a_log
     from birdsim.export.flightlog import frames_from_log
     from birdsim.flight.flightlog import LogError
     from birdsim.flight.flock_log import load_flock_log, per_bird_paths
@@ -28,10 +26,7 @@ def export_flock_log(
         data, birds = load_flock_log(args.source, "SOURCE")
     except LogError as exc:
         raise export.ExportError(str(exc)) from None
-    if args.model and args.model != str(birds[0]["model"]):
-        raise BirdsimError(
-            f"--model {args.model!r} differs from the log's model {str(birds[0]['model'])!r}; allowed: omit --model for a log"
-        )
+    refuse_for_a_log((), str(birds[0]["model"]), args.model)
     out = Path(args.out)
     outs = [out] if args.format == "usd" else per_bird_paths(out, len(birds))
     for p in outs:

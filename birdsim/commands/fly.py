@@ -10,7 +10,9 @@ import sys
 from pathlib import Path
 
 from birdsim.commands.common import (
+    FLOCK_LIST,
     MODEL_LIST,
+    PRESET_LIST,
     check_writable,
     load_bird,
     load_table_for,
@@ -31,7 +33,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         "manoeuvre",
         metavar="MANOEUVRE",
         nargs="*",
-        help="a preset (hover, cruise, take-off, landing, flock) or a manoeuvre or flock .toml file; several: a batch (--out is then a folder)",
+        help=f"a preset ({PRESET_LIST}; flocks: {FLOCK_LIST}) or a manoeuvre or flock .toml file; several: a batch (--out is then a folder)",
     )
     p.add_argument(
         "--batch",

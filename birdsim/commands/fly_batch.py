@@ -25,6 +25,21 @@ def _jobs_arg(raw: str | None) -> int | None:
     return n
 
 
+def check_sources(sources: list[str]) -> None:
+    """Every entry that is not a file names a preset: a misspelt preset is refused in one
+    line before any flight.  A file (missing, or bad inside) fails its own entry, the
+    others are flown and written (on a cluster the files are the workers' to read)."""
+    from birdsim.flight.path_file import get_flight
+
+    for k, src in enumerate(sources):
+        if "/" in src or Path(src).suffix.lower() in (".toml", ".npz") or Path(src).exists():
+            continue
+        try:
+            get_flight(src, turning=True)
+        except BirdsimError as exc:
+            raise BirdsimError(f"entry {k} ({src}): {exc}") from None
+
+
 def run_many(args: argparse.Namespace, sources: list[str], seconds: float | None) -> int:
     import os
 
@@ -56,6 +71,7 @@ def run_many(args: argparse.Namespace, sources: list[str], seconds: float | None
         raise BirdsimError(
             f"--out {str(out)!r} is a .npz file; allowed: a folder for the batch's logs (one <index>-<name>.npz per flight)"
         )
+    check_sources(sources)
     jobs = [
         FlightJob(
             k,

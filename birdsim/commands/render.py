@@ -8,31 +8,33 @@ from pathlib import Path
 
 from birdsim.commands.common import (
     MODEL_LIST,
+    PRESET_LIST,
     add_bird_arguments,
     bird_from_args,
     check_clip_outputs,
     check_still,
     load_model_table,
+    print_time_base,
     require_bird,
     slug,
 )
 from birdsim.commands.render_flight import add_flight_arguments, is_log, run_flight
 from birdsim.errors import BirdsimError
-from birdsim.flight.manoeuvre import PRESETS
 from birdsim.render.gl import GL_CHOICES
+from birdsim.render.options import FPS_ALLOWED, SECONDS_ALLOWED
 
 
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser(
         "render",
-        help="render a manoeuvre to MP4 (hover, cruise, take-off, landing or a TOML file)",
+        help="render a manoeuvre to MP4 (a preset, a TOML file or a flight log)",
         description=__doc__,
     )
     p.add_argument(
         "manoeuvre",
         metavar="MANOEUVRE",
         nargs="*",
-        help=f"a preset ({', '.join(PRESETS)}), a manoeuvre .toml file or a flight log LOG.npz; several: a batch (--out is then a folder)",
+        help=f"a preset ({PRESET_LIST}), a manoeuvre .toml file or a flight log LOG.npz (one bird or a flock); several: a batch (--out is then a folder)",
     )
     p.add_argument(
         "--batch", metavar="FILE", help="a batch: a text file with one manoeuvre per line"
@@ -129,14 +131,15 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(func=run)
 
 
-def _number(arg: str, raw: str | None, kind: type = float) -> float | int | None:
+def _number(arg: str, raw: str | None, allowed: str, kind: type = float) -> float | int | None:
+    """``kind(raw)`` (None when not given), or one line naming ``arg`` and ``allowed``."""
     if raw is None:
         return None
     try:
         return kind(raw)
     except ValueError:
         what = "an integer" if kind is int else "a number"
-        raise BirdsimError(f"{arg} {raw!r} is not {what}") from None
+        raise BirdsimError(f"{arg} {raw!r} is not {what}; allowed: {allowed}") from None
 
 
 def _options(args: argparse.Namespace):
@@ -154,9 +157,9 @@ def _options(args: argparse.Namespace):
     return RenderOptions(
         width=width,
         height=height,
-        fps=_number("--fps", args.fps, int),  # type: ignore[arg-type]
-        seconds=_number("--seconds", args.seconds),
-        beats_per_second=_beat_rate(args, _number("--fps", args.fps, int)),
+        fps=_number("--fps", args.fps, FPS_ALLOWED, int),  # type: ignore[arg-type]
+        seconds=_number("--seconds", args.seconds, SECONDS_ALLOWED),
+        beats_per_second=_beat_rate(args, _number("--fps", args.fps, FPS_ALLOWED, int)),
         camera=args.camera,
         quality=args.quality,
         forces=_forces_scale(args.forces),
@@ -171,7 +174,8 @@ def _options(args: argparse.Namespace):
 
 def _beat_rate(args: argparse.Namespace, fps: int | float | None) -> float:
     """Wingbeats per second of video (birdsim.render.timebase, the same as export's);
-    prints the time base chosen."""
+    the time base chosen is kept as ``args.time_base``, printed by
+    :func:`birdsim.commands.common.print_time_base` once every check has passed."""
     from birdsim.render.timebase import beat_rate_for, check_time_flags, describe
 
     check_time_flags(args.beat_rate, args.slow_motion)
@@ -187,7 +191,7 @@ def _beat_rate(args: argparse.Namespace, fps: int | float | None) -> float:
         bird = bird_from_args(args)
     rate, words = beat_rate_for(bird, args.beat_rate, args.slow_motion)
     if fps is not None and 1 <= fps <= 240:
-        print(f"birdsim render: {describe(rate, words, fps)}", flush=True)
+        args.time_base = f"birdsim render: {describe(rate, words, fps)}"
     return rate
 
 
@@ -237,6 +241,7 @@ def run(args: argparse.Namespace) -> int:
     bird = bird_from_args(args) if (args.bird or args.set) else None
     if bird is not None:
         require_bird(table, bird, table_path)
+    print_time_base(args)
 
     if at is not None:
         from birdsim.render.renderer import render_still

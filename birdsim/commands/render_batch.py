@@ -63,7 +63,7 @@ def run_many(
     import os
 
     from birdsim.commands.common import check_writable
-    from birdsim.commands.fly_batch import _jobs_arg
+    from birdsim.commands.fly_batch import _jobs_arg, check_sources
     from birdsim.flight.batch import FlightJob, check_count, local_executor, run_batch
     from birdsim.io import write_atomic
 
@@ -84,6 +84,7 @@ def run_many(
         raise BirdsimError(
             f"--out {str(out)!r} is a .mp4 file; allowed: a folder for the batch's videos (one <index>-<name>.mp4 per entry)"
         )
+    check_sources(sources)
     options = tuple((k, v) for k, v in sorted(vars(args).items()) if k not in _BATCH_KEYS)
     labels = [FlightJob(k, src, "").label for k, src in enumerate(sources)]
     jobs = [

@@ -17,6 +17,9 @@ from birdsim.commands.common import (
     check_still,
     load_bird,
     load_table_for,
+    print_time_base,
+    refuse_for_a_log,
+    render_log_flags,
     slug,
 )
 from birdsim.errors import BirdsimError
@@ -193,6 +196,7 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
                 "--gust/--open-loop/--attitude do not apply to a flight log; allowed: a manoeuvre name or file with them"
             )
         log = load_log(args.manoeuvre, "LOG")
+        refuse_for_a_log(render_log_flags(args), str(log["model"]), args.model)
         name = str(log.get("manoeuvre", "")) or Path(args.manoeuvre).stem
         default_out = Path("renders") / f"{slug(Path(args.manoeuvre).stem)}.mp4"
         reference = None
@@ -233,6 +237,7 @@ def run_flight(args: argparse.Namespace, options_from_args) -> int:
     bird_and_table = flight_bird_and_table(args, model) if reference is not None else None
     out = Path(args.out) if args.out else default_out
     check_clip_outputs(args, out, at)
+    print_time_base(args)
     if reference is not None:
         beats = (
             reference.duration_beats

@@ -15,7 +15,14 @@ from birdsim.errors import BirdsimError
 
 def run_flock_log(args: argparse.Namespace, options) -> int:
     """Render the flock log ``args.manoeuvre`` (video, or a still with ``--still``)."""
-    from birdsim.commands.common import check_clip_outputs, check_still, slug
+    from birdsim.commands.common import (
+        check_clip_outputs,
+        check_still,
+        print_time_base,
+        refuse_for_a_log,
+        render_log_flags,
+        slug,
+    )
     from birdsim.flight.flock_log import load_flock_log
     from birdsim.render.flock_scene import FlockScene, flock_states, scene_factory
     from birdsim.render.gl import select_gl
@@ -26,6 +33,7 @@ def run_flock_log(args: argparse.Namespace, options) -> int:
             "--gust/--open-loop/--attitude do not apply to a flight log; allowed: a manoeuvre name or file with them"
         )
     data, birds = load_flock_log(args.manoeuvre, "LOG")
+    refuse_for_a_log(render_log_flags(args), str(birds[0]["model"]), args.model)
     name = f"flock {str(data['flock'])} ({len(birds)} birds)"
     lead = birds[0]
     beats = float(lead["t"][-1]) * float(lead["omega"]) / (2 * math.pi)
@@ -38,6 +46,7 @@ def run_flock_log(args: argparse.Namespace, options) -> int:
     select_gl(args.gl)
     out = Path(args.out) if args.out else Path("renders") / f"{slug(Path(args.manoeuvre).stem)}.mp4"
     check_clip_outputs(args, out, at)
+    print_time_base(args)
     states = flock_states(birds, options, title=name)
     leader, others = states[0], states[1:]
     if at is not None:

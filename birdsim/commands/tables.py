@@ -30,13 +30,19 @@ from birdsim.tables.lookup import table_paths
 FLIGHT_GRID = "Fx=-0.2:0.3:21,Fz=-0.4:0:17,V=0:0.8:17"
 #: Nodes per axis of the general grid (Fx=-0.5:0.5, Fz=-0.5:0, V=0:1), as ``make tables``.
 DEFAULT_SIZE = 11
+#: What ``birdsim tables --help`` says (the module docstring is for developers).
+DESCRIPTION = (
+    "``birdsim tables build|info|lookup|jacobians``: optimal-wingbeat lookup tables over "
+    "(Fx, Fz, V). Forces are the dissertation's: right wing + body drag, seed earth axes, "
+    "Fz < 0 is up."
+)
 
 
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser(
         "tables",
         help="build, inspect and query optimal-wingbeat lookup tables",
-        description=__doc__,
+        description=DESCRIPTION,
     )
     tsub = p.add_subparsers(
         dest="tables_command",

@@ -14,6 +14,7 @@ import argparse
 import math
 from pathlib import Path
 
+from birdsim.commands.common import FLOCK_LIST, PRESET_LIST
 from birdsim.errors import BirdsimError
 
 
@@ -26,7 +27,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "source",
         metavar="SOURCE",
-        help="a flight log .npz (one bird or a flock), a preset (hover, cruise, take-off, landing) or a manoeuvre .toml",
+        help=f"a flight log .npz (one bird or a flock), a preset ({PRESET_LIST}; flocks: {FLOCK_LIST}) or a manoeuvre or flock .toml",
     )
     p.add_argument("--out", required=True, metavar="FILE.html", help="the page to write")
     p.add_argument(
@@ -36,7 +37,12 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="frames per second of playback at 1x, 1 to 240 (default 60; at least 24 per wingbeat)",
     )
     p.add_argument("--model", default=None, help="kinematic model for a manoeuvre (default m3)")
-    p.add_argument("--bird", metavar="FILE.toml", help="the bird for a manoeuvre (default seed)")
+    p.add_argument(
+        "--bird",
+        metavar="FILE.toml",
+        help="the bird for a manoeuvre: a TOML file or a shipped bird's name (pigeon, "
+        "seed-bird; default: the seed bird)",
+    )
     p.add_argument(
         "--gust",
         action="append",
@@ -100,6 +106,14 @@ def run(args: argparse.Namespace) -> int:
         )
         log, _ = fly_request(req)
         how = "flown in MuJoCo"
+        if "n_birds" in log:  # a flock preset or file, flown as `birdsim fly FLOCK` flies it
+            from birdsim.studio.flock_flights import flock_birds
+
+            return _view_birds(args, out, fps, flock_birds(log), "flown in MuJoCo")
+        from birdsim.flight.saturation import report_saturation
+
+        model = str(log.get("model", args.model))
+        report_saturation(log, command="view", bird_arg=args.bird, model=model, strict=False)
     scene = flight_scene(log, ViewOptions(fps=fps), title=Path(args.source).stem)
     _write_view(scene, out, args.force, ("the view", MAX_VIEW_BYTES, "lower --fps"), "", how)
     return 0
@@ -131,11 +145,17 @@ def _write_view(
 def _view_flock(args: argparse.Namespace, out: Path, fps: float) -> int:
     """A flock's log: every bird drawn (birdsim.studio.flock_view)."""
     from birdsim.flight.flock_log import load_flock_log
+
+    data, birds = load_flock_log(args.source, "SOURCE")
+    return _view_birds(args, out, fps, birds, "from the flock's log")
+
+
+def _view_birds(args: argparse.Namespace, out: Path, fps: float, birds: list, how: str) -> int:
+    """Every bird of a flock (each bird's own log) as one page."""
     from birdsim.studio.flock_view import MAX_FLOCK_VIEW_BYTES, flock_scene
     from birdsim.studio.scene import ViewOptions
 
-    data, birds = load_flock_log(args.source, "SOURCE")
     scene = flock_scene(birds, ViewOptions(fps=fps), title=Path(args.source).stem)
     limit = ("the flock's view", MAX_FLOCK_VIEW_BYTES, "lower --fps, or a shorter log")
-    _write_view(scene, out, args.force, limit, f"{len(birds)} birds, ", "from the flock's log")
+    _write_view(scene, out, args.force, limit, f"{len(birds)} birds, ", how)
     return 0

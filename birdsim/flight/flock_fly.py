@@ -197,11 +197,17 @@ def steered_logs(
 def jobs_for(
     source: str, model: str, attitude: str | None = None, seconds: float | None = None
 ) -> tuple[Flock, list[FlockJob]]:
-    """The flock (checked: its birds parse, their starts apart) and one job per bird."""
+    """The flock (checked: its birds parse, their starts apart, a posed body on no path
+    that turns) and one job per bird."""
+    from birdsim.flight.path_file import attitude_for, get_flight
+
     flock = load_flock(source)
     load_birds(flock)
     model = flock.model or model
     attitude = attitude or flock.attitude
+    if attitude == "posed":  # refused here in one line, not once a bird per worker
+        for path in dict.fromkeys(b.path or flock.path for b in flock.birds):
+            attitude_for(get_flight(path, turning=True), attitude, path)
     seconds = seconds if seconds is not None else flock.seconds
     return flock, [FlockJob(source, b.index, model, attitude, seconds) for b in flock.birds]
 

@@ -76,6 +76,12 @@ def get_flight(name_or_path: str, *, turning: bool = False) -> FlightPath | Mano
             )
         return TURN_PRESETS[name_or_path]
     p = Path(name_or_path)
+    names = (*PATH_PRESETS, *(TURN_PRESETS if turning else ()))
+    if p.suffix.lower() == ".toml" and not p.exists() and not p.is_symlink():
+        raise ManoeuvreError(
+            f"manoeuvre file {str(p)!r} does not exist; allowed: {', '.join(names)} or a "
+            "readable .toml file"
+        )
     if p.suffix.lower() == ".toml" or p.exists():
         flight = load_flight(p)
         if not turning and isinstance(flight, FlightPath) and flight.is_3d:
@@ -86,7 +92,6 @@ def get_flight(name_or_path: str, *, turning: bool = False) -> FlightPath | Mano
                 "heading, turn_rate, y0 all 0 (bank-to-turn flight: issue 23)"
             )
         return flight
-    names = (*PATH_PRESETS, *(TURN_PRESETS if turning else ()))
     raise ManoeuvreError(
         f"manoeuvre {name_or_path!r} is unknown; allowed: {', '.join(names)} or a .toml file"
     )

@@ -46,6 +46,9 @@ QUALITIES = {
 #: Largest frame side accepted (MuJoCo's offscreen buffer is enlarged to fit).
 MAX_SIDE = 4096
 MAX_SECONDS = 3600.0  # longest video (--seconds, or the whole manoeuvre at --beat-rate)
+#: what --fps and --seconds allow (the end of their one-line messages)
+FPS_ALLOWED = "an integer in [1, 240]"
+SECONDS_ALLOWED = f"a number in (0, {MAX_SECONDS:g}]"
 
 
 #: How much text the overlay shows (``--overlay``; ``none`` is ``overlay=False``).
@@ -88,15 +91,13 @@ class RenderOptions:
                     f"--size {name}={v!r} is invalid; allowed: a multiple of 16 in [16, {MAX_SIDE}] (H.264/yuv420p)"
                 )
         if not isinstance(self.fps, int) or isinstance(self.fps, bool) or not 1 <= self.fps <= 240:
-            raise RenderError(f"--fps {self.fps!r} is invalid; allowed: an integer in [1, 240]")
+            raise RenderError(f"--fps {self.fps!r} is invalid; allowed: {FPS_ALLOWED}")
         if self.seconds is not None and not (
             isinstance(self.seconds, (int, float))
             and math.isfinite(self.seconds)
             and 0 < self.seconds <= MAX_SECONDS
         ):
-            raise RenderError(
-                f"--seconds {self.seconds!r} is invalid; allowed: a number in (0, {MAX_SECONDS:g}]"
-            )
+            raise RenderError(f"--seconds {self.seconds!r} is invalid; allowed: {SECONDS_ALLOWED}")
         if not (math.isfinite(self.beats_per_second) and 0 < self.beats_per_second <= 100):
             raise RenderError(
                 f"--beat-rate {self.beats_per_second!r} is invalid; allowed: wingbeats per second in (0, 100]"
