@@ -15,6 +15,7 @@ import time
 import numpy as np
 
 from birdsim.commands.fly import load_table_for
+from birdsim.flight.attitude_summary import attitude_figures
 from birdsim.flight.flightlog import log_arrays, summary
 from birdsim.flight.freeflight import fly
 from birdsim.flight.presets import DEMO_MODEL, PATH_PRESETS, demo_bird
@@ -27,23 +28,17 @@ def figures(preset: str, bird, model: str, attitude: str, gusts=()) -> dict[str,
     r = fly(
         PATH_PRESETS[preset], table, bird, model, config=SimConfig(attitude=attitude), gusts=gusts
     )
-    a = r.arrays
     s = summary(log_arrays(r, preset))
-    n = int(round(len(a["t"]) / (a["t"][-1] / (2 * math.pi)))) if len(a["t"]) else 64
-    beats = len(a["t"]) // n
-    mean = lambda k: np.array([a[k][b * n : (b + 1) * n].mean() for b in range(beats)])  # noqa: E731
-    pe = mean("pitch")[2:] - mean("pitch_command")[2:]
+    att = attitude_figures(r.arrays)
     key = "rms_altitude_error_after_start" if preset == "cruise" else "rms_error_after_start"
     return {
         "path_rms": s[key],
-        "pitch_rms_deg": math.degrees(float(np.sqrt(np.mean(pe**2)))),
-        "roll_deg": math.degrees(float(np.abs(mean("roll")).max())),
-        "yaw_deg": math.degrees(float(np.abs(mean("yaw")).max())),
-        "att_sat": int(np.sum(a["attitude_saturated"])),
+        "pitch_rms_deg": att["wingbeat_mean_pitch_rms_error_deg"],
+        "roll_deg": att["wingbeat_mean_roll_max_deg"],
+        "yaw_deg": att["wingbeat_mean_yaw_max_deg"],
+        "att_sat": att["attitude_saturated_samples"],
         "table_sat_beats": s["wingbeats_saturated"],
-        "rocking_deg": math.degrees(
-            float(np.median([np.ptp(a["pitch"][b * n : (b + 1) * n]) for b in range(2, beats)]))
-        ),
+        "rocking_deg": att["rocking_median_deg"],
     }
 
 

@@ -278,6 +278,10 @@ def summary(
         "force": "Fx_demand, Fz_demand: right wing + body drag (the dissertation's flapcost force), Fz < 0 is up; "
         "force_x, force_z of the log: whole bird (2 wings + body drag) + weight, world x / z up",
     }
+    if str(arrays.get("attitude", "posed")) == "free" and np.ndim(arrays["pitch"]) == 1:
+        from birdsim.flight.attitude_summary import attitude_figures
+
+        out["attitude"] = attitude_figures(arrays, skip_beats=int(skip_beats))
     if phases is not None:
         labels = np.array([phases(float(tb)) for tb in t_beats])
         out["phases"] = {
