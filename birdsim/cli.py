@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import re
 import sys
 
 from birdsim.commands.common import StoreOnce, forget_given, translate
@@ -103,7 +104,32 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+#: A value that starts like a negative number but is not one (``-3:1:0:0``).
+_MINUS_VALUE = re.compile(r"^-(\d|\.\d)")
+_NUMBER = re.compile(r"^-(\d+|\d*\.\d+)([eE][-+]?\d+)?$")
+
+
+def joined_minus_values(argv: list[str]) -> list[str]:
+    """``--opt -3:1:0:0`` as ``--opt=-3:1:0:0``: argparse takes a value starting with a
+    minus sign for an option unless it is a plain number, and would say only "expected
+    one argument"; joined, the option's own check names the value and what is allowed."""
+    out: list[str] = []
+    for tok in argv:
+        prev = out[-1] if out else ""
+        if (
+            _MINUS_VALUE.match(tok)
+            and not _NUMBER.match(tok)
+            and prev.startswith("--")
+            and "=" not in prev
+        ):
+            out[-1] = f"{prev}={tok}"
+        else:
+            out.append(tok)
+    return out
+
+
 def main(argv: list[str] | None = None) -> int:
+    argv = joined_minus_values(sys.argv[1:] if argv is None else list(argv))
     args = forget_given(build_parser().parse_args(argv))
     try:
         return int(args.func(args) or 0)

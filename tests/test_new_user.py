@@ -14,7 +14,8 @@ and their mistakes (each test fails on the code before its fix).
 * a batch (``fly``, ``render``) with a misspelt preset is refused before any flight;
 * a missing manoeuvre file lists the turning presets too (as an unknown name does);
 * ``tables --help`` names its four subcommands (it said three and named a module);
-* ``render LOG.npz`` refuses --model (another), --bird, --table, --kinematic as export does.
+* ``render LOG.npz`` refuses --model (another), --bird, --table, --kinematic as export does;
+* ``--gust -3:1:0:0`` gets the gust's own message (argparse said "expected one argument").
 """
 
 from __future__ import annotations
@@ -203,3 +204,22 @@ def test_render_of_a_log_refuses_what_the_log_already_says(
     code, out, err = _run(["render", cruise_log, "--still", "s.png", *flags], capsys)
     assert code == 2 and len(err) == 1, err
     assert text in err[0] and out == "" and not list(tmp_path.iterdir()), err[0]
+
+
+def test_a_value_starting_with_a_minus_sign_reaches_its_option(capsys) -> None:
+    """``--gust -3:1:0:0`` (space, not ``=``) is checked by the gust's own parser, which
+    names the value and what is allowed; plain negative numbers and the other tokens pass
+    through unchanged."""
+    from birdsim.cli import joined_minus_values
+
+    code, _out, err = _run(["fly", "cruise", "--gust", "-3:1:0:0"], capsys)
+    assert code == 2
+    assert len(err) == 1 and "--gust '-3:1:0:0'" in err[0] and "allowed" in err[0], err
+    assert joined_minus_values(["fly", "--gust", "-3:1", "--seconds", "-3", "-x"]) == [
+        "fly",
+        "--gust=-3:1",
+        "--seconds",
+        "-3",
+        "-x",
+    ]
+    assert joined_minus_values(["--gust=-3:1", "-.5:1"]) == ["--gust=-3:1", "-.5:1"]
