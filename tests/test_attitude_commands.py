@@ -197,6 +197,13 @@ def test_track_frame_of_a_turn():
     np.testing.assert_allclose(s["az"][1], math.hypot(g, v * v / CIRCLE_RADIUS) - g, rtol=5e-3)
     np.testing.assert_allclose(np.diff(s["x"]), v, rtol=1e-3)
     np.testing.assert_allclose(s["vx"][1], v, rtol=1e-9)
+    # the wind along the heading (both loops' airspeed): a wind along the heading counts
+    # in full, one across it not at all (round-off of cos/sin)
+    psi = float(track.heading(mid))
+    along = np.array([math.cos(psi), math.sin(psi), 0.3])
+    across = np.array([-math.sin(psi), math.cos(psi), 0.0])
+    assert abs(track.wind_along(mid, 0.15 * along) - 0.15) < 1e-15
+    assert abs(track.wind_along(mid, 0.15 * across)) < 1e-15
 
 
 def test_a_turning_body_rolls_into_the_turn():

@@ -38,7 +38,9 @@ def test_the_reserve_widens_the_stroke_plane_and_flap_only_within_the_table():
 def test_a_side_gust_in_the_circle_stays_nearer_the_undisturbed_flight():
     """`birdsim fly circle --attitude free --gust 25:1:0:0.15:0`: the gusted flight's
     largest distance from the undisturbed one over wingbeats 25-34 (semispans).  Without
-    the reserve 2.95 (wingbeat 33.9), with it 1.17 (31.8)."""
+    the reserve 2.95 (wingbeat 33.9), with it 1.17 (31.8); with the attitude loop's
+    airspeed taken along the heading as the path loop's (it took the world's x wind)
+    0.97: the bound 1.1 fails on the old airspeed."""
     from birdsim.commands.common import load_bird, load_table_for
     from birdsim.flight.freeflight import fly, parse_gust
     from birdsim.flight.simulate import SimConfig
@@ -54,4 +56,4 @@ def test_a_side_gust_in_the_circle_stays_nearer_the_undisturbed_flight():
     n = min(len(calm["t"]), len(g["t"]))
     d = np.sqrt(sum((g[k][:n] - calm[k][:n]) ** 2 for k in ("x", "y", "z")))
     assert np.all(np.isfinite(d))
-    assert d.max() < 1.5  # reduced units: semispans
+    assert d.max() < 1.1  # reduced units: semispans

@@ -157,8 +157,7 @@ def fly(
         ahead = track.state(t + MAG_LEAD * TWO_PI) if MAG_LEAD > 0 else ts
         a_left = ahead.a_lat + lateral_corr[0]
         az = math.hypot(ahead.az_up + red.gravity, a_left) - red.gravity
-        c, s = math.cos(ts.heading), math.sin(ts.heading)
-        w_along = c * float(w[0]) + s * float(w[1])
+        w_along = track.wind_along(t, w)
         return ctl.command(replace(ts, az=az), est, integral, pitch, (w_along, float(w[2])))
 
     ref0 = path.state(0.0)
@@ -298,7 +297,8 @@ def fly(
                 err, rates = attitude_estimate(
                     att_window, fb.d, config.log_per_beat, TWO_PI, zyx_pitch, roll_cmd, yaw_cmd
                 )
-                v_air = v_est - float(wind[0])
+                # the airspeed along the heading, as the path loop's (straight: along x)
+                v_air = v_est - (float(wind[0]) if track is None else track.wind_along(t, wind))
                 body_pitch = comp_pitch(att_window, pitch_ref, err, rates, v_air)  # wingbeat-mean
                 at_cmd = att.straight  # the Jacobians measured at the command (else the body's)
                 jac_pitch, jac_params = (pitch_ref if at_cmd else body_pitch), None

@@ -135,6 +135,12 @@ class TrackFrame:
         """psi(t) (rad, counter-clockwise from x about z up)."""
         return np.interp(t, self._t, self._psi)
 
+    def wind_along(self, t: float, wind: np.ndarray) -> float:
+        """The world wind ``wind`` (x, y, z) along the heading at ``t``: what the airspeed
+        along the track loses (the path loop's and the attitude loop's alike)."""
+        psi = float(self.heading(float(t)))
+        return math.cos(psi) * float(wind[0]) + math.sin(psi) * float(wind[1])
+
     def sample(self, t: Any) -> dict[str, np.ndarray]:
         """The path at reduced times ``t`` in its track frame (see :class:`TrackState`)."""
         t = np.asarray(t, dtype=float)
