@@ -288,11 +288,13 @@ class AttitudeLoop:
         rate_cmd: np.ndarray | None = None,
         acc_cmd: np.ndarray | None = None,
         turn_rates: np.ndarray | None = None,
+        pitch_demand: float | None = None,
     ) -> tuple[np.ndarray, np.ndarray, float, TailControls]:
         """The wings' and tail's commands for this control step.  ``err`` / ``rates``:
         the wingbeat-mean attitude error (rotation vector onto the command) and body
         rates (p, q, r), seed body axes.  ``jac_params`` / ``jac_pitch``: the wingbeat
-        and body pitch the Jacobians are measured at (default: ``params``, the command)."""
+        and body pitch the Jacobians are measured at (default: ``params``, the command).
+        ``pitch_demand``: the pitch moment of :mod:`birdsim.flight.pitch_section`'s loop."""
         names = self.fb.schedule.names
         if not self.enabled:
             self.u = np.zeros(len(INPUTS))
@@ -320,7 +322,7 @@ class AttitudeLoop:
         d_used, damping, g, residual = self._plant()
         split = PITCH_SPLIT and self.straight
         a_lp = 1.0 - math.exp(-dt / (WING_PITCH_BEATS * self.fb.red.period)) if split else 0.0
-        if fast_attitude.allocate(  # the rest compiled, the same numbers (fast_attitude)
+        if pitch_demand is None and fast_attitude.allocate(  # compiled, the same numbers
             self, ((SYM_ROWS, SYM_INPUTS), (LAT_ROWS, LAT_INPUTS)), params, g, m0, jac,
             residual, damping, err, rates, dt, rate_cmd, acc_cmd, turn, INTEGRAL_LIMIT_RAD,
             _AXES[self.straight], split, a_lp, LAMBDA,
@@ -337,6 +339,8 @@ class AttitudeLoop:
         # the damping opposes the commanded rotation too: fed forward (the damping then
         # acts on the rate error only, as the gains assume)
         demand += damping * (rate_err + np.asarray(rates, dtype=float) - turn)
+        if pitch_demand is not None:  # the section's loop (pitch_section), wings unfiltered
+            demand[1] = self._slow = pitch_demand
         u = np.zeros(len(INPUTS))
         miss, active, groups = 0.0, False, [(SYM_ROWS, SYM_INPUTS), (LAT_ROWS, LAT_INPUTS)]
         if split:  # pitch: slow moment by the wings, fast by the tail

@@ -26,8 +26,8 @@ from birdsim.flight.demand_schedule import DemandSchedule, RefState
 from birdsim.flight.flight_arrays import attitude_estimate, extend_rows, flight_arrays, keep_last
 from birdsim.flight.float_ops import clip_float
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
-from birdsim.flight.pitch_observer import pitch_source
 from birdsim.flight.pitch_plan import PitchPlan, feedforward_pitch
+from birdsim.flight.pitch_section import section_source
 from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
 from birdsim.flight.track import TrackFrame, is_three_d
 from birdsim.flight.trim import sample_reference, trim_start
@@ -235,7 +235,7 @@ def fly(
         att_window = (np.empty((0, 4)), np.empty((0, 3)))  # quat, C_SEED omega (FIT_BEATS)
         lat_window: Any = np.empty((0, 2)) if track is None else []  # (y, vy); turning: pairs
         dt_ctl, n_fit = steps_ctl * h, FIT_BEATS * config.log_per_beat
-        comp_pitch = pitch_source(att, config.log_per_beat, dt_ctl, compensate and track is None)
+        comp_pitch = section_source(att, config.log_per_beat, dt_ctl, compensate and track is None)
         step_offsets, blocks = np.arange(steps_ctl) * h, []  # steps' times; samples' arrays
         for k in range(n_ctl):
             t = fb.time
@@ -299,17 +299,16 @@ def fly(
                 )
                 # the airspeed along the heading, as the path loop's (straight: along x)
                 v_air = v_est - (float(wind[0]) if track is None else track.wind_along(t, wind))
-                body_pitch = comp_pitch(att_window, pitch_ref, err, rates, v_air)  # wingbeat-mean
+                ref3 = (pitch_ref, pitch_rate_ref, pitch_acc_ref)  # wingbeat-mean pitch:
+                body_pitch, err, rates, p_demand = comp_pitch(att_window, ref3, err, rates, v_air)
                 at_cmd = att.straight  # the Jacobians measured at the command (else the body's)
                 jac_pitch, jac_params = (pitch_ref if at_cmd else body_pitch), None
                 if compensate:
-                    # the stroke plane turns by the table's pitch minus the body's (m3/m4:
-                    # they compose about one axis), the body's predicted SP_LEAD ahead
+                    # the stroke plane turns by the table's minus the body's pitch, SP_LEAD ahead
                     offset = np.zeros(len(names))
                     q_turn = 0.0 if turn_cmd is None else float(turn_cmd.turn_rates[1])
                     lead = (float(rates[1]) - q_turn) * SP_LEAD * TWO_PI  # not the turn's q
-                    # the table's pitch as its target (cmd.params), not the schedule's
-                    # smoothed output, smoothed again (docs/free-body.md)
+                    # the table's pitch as its target, not the smoothed output (free-body.md)
                     p_table = cmd.params[names.index("pitch")] if "pitch" in names else pitch
                     sp = cmd.params[sp_index] + p_table - (body_pitch + lead)
                     offset[sp_index] = clip_float(sp, *sp_bounds) - cmd.params[sp_index]
@@ -337,6 +336,7 @@ def fly(
                     turn_rates=turn_rates,
                     jac_params=jac_params,
                     jac_pitch=jac_pitch,
+                    pitch_demand=p_demand,
                 )
                 fb.schedule.shoulder_target = shoulder
                 fb.cb.tail_controls = tail

@@ -1,58 +1,35 @@
-"""A model-driven observer of the free body's wingbeat-mean pitch, for the stroke plane's
-compensation in slow flight on a straight path (docs/free-body.md, "The pigeon's
-attitude, sixth stage").
+"""The free body's wingbeat-mean pitch model and its prediction, for the slow straight
+flight's pitch loop (:mod:`birdsim.flight.pitch_section`; docs/free-body.md, "The
+pigeon's attitude", sixth and seventh stages).
 
-The attitude loop's estimate (:func:`birdsim.flight.flight_arrays.attitude_estimate`)
-fits the last wingbeat's samples by a trend plus three harmonics; a rocking whose
-amplitude changes from one wingbeat to the next leaks into that trend by about half its
-amplitude, and the stroke plane's compensation (the table's pitch minus the body's)
-hands the leak on to the wings' force.  This observer predicts the wingbeat-mean pitch
-from the loop's own model of the mean moment,
+The attitude loop's last measurement gives the wingbeat-mean moment,
 
     I q' = M_0 + J u - k (theta - theta_J) + D_qq q + I beta,
 
-the inputs flown through their smoothing, ``beta`` an estimated moment bias per unit
-inertia (the rocking's rectified moment and what the held body's measurement misses),
-and corrects the prediction slowly by the same one-wingbeat fit applied to the
-measurement minus the prediction: a leak then reaches the estimate through a filter of
-:data:`OBSERVER_BEATS` wingbeats, while the loop's own inputs move the estimate at once.
-Where the prediction leaves the fit by more than :data:`RESET_RAD` (the model lost, as
-in a landing's flare) the observer starts again at the fit.  The attitude loop itself
-keeps the fit's estimate (the observer there was measured worse).  Reduced units (time
-in 1 / omega), seed body axes (pitch nose up), radians.
+(``beta`` a moment bias per unit inertia); :class:`PitchObserver` integrates it with the
+inputs flown through their smoothing and keeps the prediction of the last wingbeat, so
+that a measurement of the wingbeat-mean state some samples ago can move the prediction
+(:meth:`PitchObserver.shift`).  (Sixth stage: an observer that corrected this prediction
+slowly by the one-wingbeat fit, for the stroke plane's compensation in slow flight; the
+seventh stage's stroboscopic estimate replaced it.)  Reduced units (time in 1 / omega),
+seed body axes (pitch nose up), radians.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
-from birdsim.flight.attitude_jacobians import INPUTS
-from birdsim.flight.body_attitude import FIT_BEATS, wingbeat_fit_matrix
-from birdsim.flight.flight_arrays import error_rotvec
-from birdsim.flight.wingbeat import INPUT_SMOOTHING_BEATS
-
-TWO_PI = 2.0 * math.pi  # one wingbeat in reduced time units
-
-#: Use the observer for the stroke plane's compensation in slow flight (else the fit).
-PITCH_OBSERVER = True
 #: Slow flight: the airspeed (semispan omega) below which, with no pitch stiffness from
-#: the tail, the compensation takes the observer's pitch: half the presets' cruise speed
-#: (0.5).  Measured with the pigeon (take-off pitch RMS / landing path RMS): 0.1: 12.2
-#: deg / 0.040 m, 0.15: 10.3 / 0.054, 0.2: 9.6 / 0.042, 0.25: 10.0 / 0.039 (the landing
-#: is chaotic: a spread, not a trend; docs/free-body.md, "sixth stage").
+#: the tail, the pitch loop of :mod:`birdsim.flight.pitch_section` runs: half the presets'
+#: cruise speed (0.5).  Measured with the sixth stage's observer (take-off pitch RMS /
+#: landing path RMS): 0.1: 12.2 deg / 0.040 m, 0.15: 10.3 / 0.054, 0.2: 9.6 / 0.042, 0.25:
+#: 10.0 / 0.039; with the seventh stage's loop 0.35: take-off 10.9 deg, landing 0.035 m
+#: (docs/free-body.md).
 SLOW_SPEED = 0.25
-#: Wingbeats per time constant of the observer's corrections of pitch and rate ...
-OBSERVER_BEATS = 1.0
-#: ... and of its bias (per unit inertia): the rate and the bias a critically damped
-#: pair at 1 / (BIAS_BEATS wingbeats) when BIAS_BEATS = 2 OBSERVER_BEATS.
-BIAS_BEATS = 2.0
-#: Start again at the fit when the observer's pitch leaves it by more than this (rad).
-RESET_RAD = 0.2
 
 
 @dataclass(frozen=True)
@@ -76,27 +53,16 @@ class PitchModel:
 
 
 class PitchObserver:
-    """See the module docstring.  ``period`` the wingbeat (time units), ``per_beat`` log
-    samples per wingbeat, ``smooth_tau`` the time constant (time units) of the inputs'
-    two cascaded filters and ``smoothed`` a mask of the inputs it applies to (the
-    shoulders; the tail acts at once)."""
+    """The prediction of the wingbeat-mean pitch (see the module).  ``period`` the
+    wingbeat (time units), ``per_beat`` log samples per wingbeat, ``smooth_tau`` the time
+    constant (time units) of the inputs' two cascaded filters and ``smoothed`` a mask of
+    the inputs it applies to (the shoulders; the tail acts at once)."""
 
-    def __init__(
-        self,
-        period: float,
-        per_beat: int,
-        smooth_tau: float,
-        smoothed: np.ndarray,
-        beats: float = OBSERVER_BEATS,
-        bias_beats: float = BIAS_BEATS,
-    ):
+    def __init__(self, period: float, per_beat: int, smooth_tau: float, smoothed: np.ndarray):
         self.dt = period / per_beat
         self.n = per_beat
-        self.fit = wingbeat_fit_matrix(per_beat, period, beats=FIT_BEATS)
         self.smooth_tau = smooth_tau
         self.smoothed = np.asarray(smoothed, dtype=bool)
-        self.rate_gain = 1.0 / (beats * period)
-        self.bias_gain = 1.0 / (bias_beats * period) ** 2
         self.state: np.ndarray | None = None  # (theta, q, beta)
         self.hist = np.zeros((0, 2))  # predicted (theta, q) per sample, the newest last
         self.u1 = self.u2 = np.zeros(len(smoothed))
@@ -125,76 +91,26 @@ class PitchObserver:
         self.state[:2] = th, q
         self.hist = np.concatenate([self.hist, np.array(rows).reshape(-1, 2)])[-self.n :]
 
-    def correct(self, theta: np.ndarray, q: np.ndarray, dt_ctl: float) -> tuple[float, float]:
-        """Correct by the last wingbeat's measured pitch ``theta`` and rate ``q`` (per log
-        sample, the newest last, at least as many as the prediction's history): the
-        one-wingbeat fit's value now of the measurement minus the prediction, a fraction
-        ``dt_ctl`` / (:data:`OBSERVER_BEATS` wingbeats) of it per control step, the bias
-        from the rate's.  The stored prediction is moved by the correction (the same
-        residual is not counted twice).  Returns (theta, q)."""
-        k = len(self.hist)
-        res = np.stack([theta[-k:], q[-k:]], axis=1) - self.hist
-        if k < self.n:  # before a whole wingbeat: the earliest residual repeated
-            res = np.vstack([np.repeat(res[:1], self.n - k, axis=0), res])
-        r_th, r_q = self.fit[0] @ res
-        g = min(1.0, dt_ctl * self.rate_gain)
-        d_th, d_q = g * r_th, g * r_q
-        self.state += (d_th, d_q, dt_ctl * self.bias_gain * r_q)
-        tau = -self.dt * np.arange(k - 1, -1, -1)
+    def shift(self, d_th: float, d_q: float) -> None:
+        """Move the state and the stored prediction by a free motion: ``d_th`` (rad) now
+        and ``d_q`` (rad per time unit)."""
+        self.state[:2] += (d_th, d_q)
+        tau = -self.dt * np.arange(len(self.hist) - 1, -1, -1)
         self.hist[:, 0] += d_th + d_q * tau
         self.hist[:, 1] += d_q
-        return float(self.state[0]), float(self.state[1])
 
 
-def pitch_source(att: Any, per_beat: int, dt_ctl: float, straight: bool) -> Callable[..., float]:
-    """The body's wingbeat-mean pitch (rad) for the stroke plane's compensation, as a
-    function of (``window``, ``pitch_ref``, ``err``, ``rates``, ``airspeed``) called
-    every control step: the fit's (``pitch_ref - err[1]``, ``err`` / ``rates`` the fit's
-    attitude error and body rates, seed body axes), and on a ``straight`` path with the
-    fourth-stage pitch loop (``att.straight``) and :data:`PITCH_OBSERVER`, in slow flight
-    (``airspeed`` below :data:`SLOW_SPEED` and no pitch stiffness from the tail) the
-    observer's.  The observer then runs every control step: its prediction over the step
-    just flown (the inputs ``att.u`` in force, the model of ``att``'s last measurement)
-    corrected by ``window`` (the last wingbeat's quaternions and seed body rates)."""
-    if not (straight and PITCH_OBSERVER and att.enabled and att.straight):
-        return lambda window, pitch_ref, err, rates, airspeed: pitch_ref - float(err[1])
-    smoothed = np.array([kind == "shoulder" for _, kind, _ in INPUTS])
-    obs = PitchObserver(TWO_PI, per_beat, INPUT_SMOOTHING_BEATS * TWO_PI, smoothed)
-
-    def pitch(window: tuple, pitch_ref: float, err: Any, rates: Any, airspeed: float) -> float:
-        fit_pitch = pitch_ref - float(err[1])
-        if obs.state is None:
-            obs.start(fit_pitch, float(rates[1]), 0.0, att.u)
-            return fit_pitch
-        _, m0, jac, theta_j = att._jac
-        model = PitchModel(
-            float(m0[1]),
-            np.asarray(jac[1], dtype=float),
-            float(att.stiffness[1]),
-            float(theta_j),
-            float(att.rate_jac[1, 1]),
-            float(att.inertia[1]),
-        )
-        obs.predict(model, att.u, int(round(dt_ctl / obs.dt)))
-        quat, omega = window
-        theta = pitch_ref - error_rotvec(quat, pitch_ref)[:, 1]
-        th, _ = obs.correct(theta, omega[:, 1], dt_ctl)
-        if abs(th - fit_pitch) > RESET_RAD:  # the model lost: start again at the fit
-            obs.start(fit_pitch, float(rates[1]), float(obs.state[2]), obs.u2)
-            th = fit_pitch
-        slow = airspeed < SLOW_SPEED and att.stiffness[1] <= 1e-9  # (round-off: no air)
-        return th if slow else fit_pitch
-
-    return pitch
+def loop_model(att: Any) -> PitchModel:
+    """The pitch model of the attitude loop ``att``'s last measurement."""
+    _, m0, jac, theta_j = att._jac
+    return PitchModel(
+        float(m0[1]),
+        np.asarray(jac[1], dtype=float),
+        float(att.stiffness[1]),
+        float(theta_j),
+        float(att.rate_jac[1, 1]),
+        float(att.inertia[1]),
+    )
 
 
-__all__ = [
-    "BIAS_BEATS",
-    "OBSERVER_BEATS",
-    "PITCH_OBSERVER",
-    "RESET_RAD",
-    "SLOW_SPEED",
-    "PitchModel",
-    "PitchObserver",
-    "pitch_source",
-]
+__all__ = ["SLOW_SPEED", "PitchModel", "PitchObserver", "loop_model"]
