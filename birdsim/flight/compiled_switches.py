@@ -1,8 +1,8 @@
 """Every compiled path's switch in one place: the modules whose ``ENABLED`` flag chooses
 their compiled (numba) code over the numpy / Python reference they are tested against
 (the compiled step loop, prescription, table lookup, bounded least squares, path curves,
-attitude estimate, schedule filters (alone and with the wings' rows), error window and the
-attitude loop's allocation).
+attitude estimate, schedule filters (alone and with the wings' rows), error window, the
+attitude loop's allocation and the pitch observer's step).
 Tests and benchmarks flip them together to fly the reference path."""
 
 from __future__ import annotations
@@ -14,6 +14,7 @@ from birdsim.flight import (
     fast_attitude,
     fast_estimate,
     fast_loop,
+    fast_observer,
     fast_path,
     fast_prescription,
     fast_schedule,
@@ -33,4 +34,5 @@ SWITCHES: tuple[ModuleType, ...] = (
     fast_window,
     fast_attitude,
     fast_wingbeat,
+    fast_observer,
 )

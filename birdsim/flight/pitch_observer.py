@@ -31,6 +31,7 @@ from typing import Any
 
 import numpy as np
 
+from birdsim.flight import fast_observer
 from birdsim.flight.attitude_jacobians import INPUTS
 from birdsim.flight.body_attitude import FIT_BEATS, wingbeat_fit_matrix
 from birdsim.flight.flight_arrays import error_rotvec
@@ -167,18 +168,19 @@ def pitch_source(att: Any, per_beat: int, dt_ctl: float, straight: bool) -> Call
             obs.start(fit_pitch, float(rates[1]), 0.0, att.u)
             return fit_pitch
         _, m0, jac, theta_j = att._jac
-        model = PitchModel(
-            float(m0[1]),
-            np.asarray(jac[1], dtype=float),
-            float(att.stiffness[1]),
-            float(theta_j),
-            float(att.rate_jac[1, 1]),
-            float(att.inertia[1]),
-        )
-        obs.predict(model, att.u, int(round(dt_ctl / obs.dt)))
-        quat, omega = window
-        theta = pitch_ref - error_rotvec(quat, pitch_ref)[:, 1]
-        th, _ = obs.correct(theta, omega[:, 1], dt_ctl)
+        stiffness, d_qq = float(att.stiffness[1]), float(att.rate_jac[1, 1])
+        inertia = float(att.inertia[1])
+        samples = int(round(dt_ctl / obs.dt))
+        values = np.array([float(m0[1]), stiffness, float(theta_j), d_qq, inertia])
+        a = math.exp(-obs.dt / obs.smooth_tau)
+        th = fast_observer.step(obs, values, jac[1], att.u, samples, window, pitch_ref, dt_ctl, a)
+        if th is None:  # the numpy reference
+            jac_row = np.asarray(jac[1], dtype=float)
+            model = PitchModel(float(m0[1]), jac_row, stiffness, float(theta_j), d_qq, inertia)
+            obs.predict(model, att.u, samples)
+            quat, omega = window
+            theta = pitch_ref - error_rotvec(quat, pitch_ref)[:, 1]
+            th, _ = obs.correct(theta, omega[:, 1], dt_ctl)
         if abs(th - fit_pitch) > RESET_RAD:  # the model lost: start again at the fit
             obs.start(fit_pitch, float(rates[1]), float(obs.state[2]), obs.u2)
             th = fit_pitch
