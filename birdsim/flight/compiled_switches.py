@@ -2,7 +2,8 @@
 their compiled (numba) code over the numpy / Python reference they are tested against
 (the compiled step loop, prescription, table lookup, bounded least squares, path curves,
 attitude estimate, schedule filters (alone and with the wings' rows), error window, the
-attitude loop's allocation and the pitch observer's step).
+attitude loop's allocation, the pitch observer's step and the held-body pose of its
+Jacobian measurements).
 Tests and benchmarks flip them together to fly the reference path."""
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ from birdsim.flight import (
     bounded_lsq,
     fast_attitude,
     fast_estimate,
+    fast_hold,
     fast_loop,
     fast_observer,
     fast_path,
@@ -35,4 +37,5 @@ SWITCHES: tuple[ModuleType, ...] = (
     fast_attitude,
     fast_wingbeat,
     fast_observer,
+    fast_hold,
 )
