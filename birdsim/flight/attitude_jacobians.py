@@ -11,6 +11,7 @@ from __future__ import annotations
 import mujoco
 import numpy as np
 
+from birdsim.flight import fast_hold
 from birdsim.mujoco.model import pitch_quat
 from birdsim.mujoco.tail import ELEVATION_MAX, ROLL_MAX, TailControls
 
@@ -46,6 +47,8 @@ def _hold(
     """Pose the model at one prescription row with the body held: at (0, 0, 6), turned by
     ``quat``, moving at ``speed`` along world x and turning at ``omega_mj`` (MuJoCo body
     axes); positions and velocities forward (the callback's passive forces need no more)."""
+    if fast_hold.hold(m, d, qpos, qvel, quat, speed, omega_mj):  # compiled, the same numbers
+        return
     d.qpos[:] = qpos
     d.qvel[:] = qvel
     d.qpos[:3] = (0.0, 0.0, 6.0)

@@ -1,8 +1,8 @@
 """Every compiled path's switch in one place: the modules whose ``ENABLED`` flag chooses
 their compiled (numba) code over the numpy / Python reference they are tested against
 (the compiled step loop, prescription, table lookup, bounded least squares, path curves,
-attitude estimate, schedule filters (alone and with the wings' rows), error window and the
-attitude loop's allocation).
+attitude estimate, schedule filters (alone and with the wings' rows), error window, the
+attitude loop's allocation, the held-body pose of its Jacobian measurements, a straight flight's per-sample path errors).
 Tests and benchmarks flip them together to fly the reference path."""
 
 from __future__ import annotations
@@ -12,7 +12,9 @@ from types import ModuleType
 from birdsim.flight import (
     bounded_lsq,
     fast_attitude,
+    fast_errors,
     fast_estimate,
+    fast_hold,
     fast_loop,
     fast_path,
     fast_prescription,
@@ -33,4 +35,6 @@ SWITCHES: tuple[ModuleType, ...] = (
     fast_window,
     fast_attitude,
     fast_wingbeat,
+    fast_hold,
+    fast_errors,
 )

@@ -221,7 +221,7 @@ def step(fb, pres, wind: np.ndarray, record: list | None, every: int) -> bool:
     if plan is None or not aero_kernel.supported(fb.cb):
         return False
     m, cb, h = fb.m, fb.cb, fb.h
-    m.opt.wind[:] = wind
+    plan.sites[-1][:] = wind  # m.opt.wind (its view, kept: MjOption makes a new one per read)
     weight = plan.weight(fb)
     Pq, P = plan.Pq, plan.P
     pres_q = np.ascontiguousarray(pres.qpos[:, Pq])

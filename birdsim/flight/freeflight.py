@@ -23,6 +23,7 @@ from birdsim.flight.attitude import FIT_BEATS
 from birdsim.flight.attitude_commands import bank_command, body_rates, command_filter
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.demand_schedule import DemandSchedule, RefState
+from birdsim.flight.fast_errors import air_speeds, straight_errors
 from birdsim.flight.flight_arrays import attitude_estimate, extend_rows, flight_arrays, keep_last
 from birdsim.flight.float_ops import clip_float
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
@@ -348,10 +349,8 @@ def fly(
             t_new, q_new, v_new = step_records.new_samples(fb, record, start, blocks)
             if track is None:
                 refs = sample_reference(reference, t_new)
-                e_pos = np.stack([refs["x"] - q_new[:, 0], refs["z"] - q_new[:, 2]], axis=1)
-                e_vel = np.stack([refs["vx"] - v_new[:, 0], refs["vz"] - v_new[:, 2]], axis=1)
+                e_pos, e_vel, lat_new, v_air_new = straight_errors(refs, q_new, v_new, wind)
                 v_along = v_new[:, 0]
-                lat_new = np.stack([q_new[:, 1], v_new[:, 1]], axis=1)
                 lat_window = keep_last((lat_window,), (lat_new,), n_fit)[0]
                 y_ref = np.zeros(len(t_new))
             else:
@@ -360,11 +359,10 @@ def fly(
                 )
                 lat_window.extend(map(tuple, lateral))
                 del lat_window[: max(0, len(lat_window) - n_fit)]
-                y_ref = refs["y"]
+                y_ref, v_air_new = refs["y"], air_speeds(v_new, wind)  # |v - wind|
             window.add_many(e_pos, e_vel, v_along)
             att_window = keep_last(att_window, (q_new[:, 3:7], C_SEED * v_new[:, 3:6]), n_fit)
-            # |v - wind| as np.linalg.norm computes it (sqrt of the dot product)
-            rows["V_air"].extend(math.sqrt(u.dot(u)) for u in v_new[:, :3] - wind)
+            rows["V_air"].extend(v_air_new)
             rows["params"].extend(pres.params[: len(t_new) * every : every])
             rows["pitch_command"].extend(
                 pres.pitch[: len(t_new) * every : every]

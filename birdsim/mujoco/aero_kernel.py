@@ -34,8 +34,9 @@ from birdsim.physics.jit import numba
 
 #: indices of :func:`parameters`' float array
 RHO, CD0, CD_MAX, CL_MAX, DRAG_AREA, TAIL_B, TAIL_LENGTH, FOLD_LOSS = range(8)
-#: indices of :func:`parameters`' int array
-ENABLED, BODY_DRAG, TAIL, TORSO_SITE, TORSO_BODY, TAIL_SITE, TAIL_BODY = range(7)
+#: indices of :func:`parameters`' int array (TAIL_BLAS, optional: an eighth entry 1 turns
+#: the tail's force into world axes by BLAS, as the Python callback's ``xmat @ f`` does)
+ENABLED, BODY_DRAG, TAIL, TORSO_SITE, TORSO_BODY, TAIL_SITE, TAIL_BODY, TAIL_BLAS = range(8)
 
 
 def supported(cb: AeroCallback) -> bool:
@@ -169,9 +170,12 @@ def _tail(m, d, passive, site_xpos, site_xmat, wind, fl, ints, fr, vel, buf, zer
         f1 = fr[1, 0] * fx + fr[1, 2] * fz
         f2 = fr[2, 0] * fx + fr[2, 2] * fz
     tail_out[0], tail_out[1], tail_out[2], tail_out[3] = f0, f1, f2, a
-    buf[0] = x[0] * f0 + x[1] * f1 + x[2] * f2
-    buf[1] = x[3] * f0 + x[4] * f1 + x[5] * f2
-    buf[2] = x[6] * f0 + x[7] * f1 + x[8] * f2
+    if ints.shape[0] > TAIL_BLAS and ints[TAIL_BLAS] != 0:  # numpy's matmul: BLAS dgemv
+        buf[:] = np.dot(x.reshape((3, 3)), tail_out[:3])
+    else:
+        buf[0] = x[0] * f0 + x[1] * f1 + x[2] * f2
+        buf[1] = x[3] * f0 + x[4] * f1 + x[5] * f2
+        buf[2] = x[6] * f0 + x[7] * f1 + x[8] * f2
     point = site_xpos.ctypes.data + site * 24
     capi.mj_applyFT(
         m, d, buf.ctypes.data, zero.ctypes.data, point, ints[TAIL_BODY], passive.ctypes.data

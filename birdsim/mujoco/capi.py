@@ -47,6 +47,8 @@ if numba is not None:  # pragma: no branch
             _p, _i = _t.intp, _t.int32
             mj_step1 = _t.ExternalFunction("mj_step1", _t.void(_p, _p))
             mj_step2 = _t.ExternalFunction("mj_step2", _t.void(_p, _p))
+            mj_fwdPosition = _t.ExternalFunction("mj_fwdPosition", _t.void(_p, _p))
+            mj_fwdVelocity = _t.ExternalFunction("mj_fwdVelocity", _t.void(_p, _p))
             #: mj_fullM(m, d, dst)
             mj_fullM = _t.ExternalFunction("mj_fullM", _t.void(_p, _p, _p))
             #: mj_objectVelocity(m, d, objtype, objid, res[6], flg_local)

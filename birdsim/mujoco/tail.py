@@ -67,9 +67,17 @@ def tail_frame(controls: TailControls) -> np.ndarray:
     """Columns: the tail's chord (forward), span (left) and normal (up) in body axes."""
     e, r = controls.elevation, controls.roll
     ce, se, cr, sr = math.cos(e), math.sin(e), math.cos(r), math.sin(r)
-    rot_y = np.array([[ce, 0.0, se], [0.0, 1.0, 0.0], [-se, 0.0, ce]])  # trailing edge up
-    rot_x = np.array([[1.0, 0.0, 0.0], [0.0, cr, -sr], [0.0, sr, cr]])  # right side down
-    return rot_x @ rot_y
+    # rot_x @ rot_y, rot_y = [[ce, 0, se], [0, 1, 0], [-se, 0, ce]] (trailing edge up),
+    # rot_x = [[1, 0, 0], [0, cr, -sr], [0, sr, cr]] (right side down): each entry has one
+    # product that is not an exact zero, so the matrix product's numbers in any order of
+    # summation (cos > 0 within the clipped angles: a +0 term makes a zero +0)
+    return np.array(
+        [
+            [ce, 0.0, se + 0.0],
+            [sr * se + 0.0, cr, -sr * ce + 0.0],
+            [cr * -se + 0.0, sr + 0.0, cr * ce],
+        ]
+    )
 
 
 def tail_cp_offset(tail_root: float, tail_length: float) -> np.ndarray:

@@ -1,0 +1,47 @@
+"""Issue 27: a straight free flight's per-sample path errors and airspeeds compiled
+(``fast_errors``) are the numpy reference's bit for bit: random samples and winds, and
+a gusty m4 cruise flown with the switch on and off (every log array equal)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from birdsim.flight import fast_errors
+from birdsim.flight.freeflight import fly
+from birdsim.flight.gust import Gust
+from birdsim.flight.path import FlightPath, PathKeyframe
+from birdsim.flight.simulate import SimConfig
+from birdsim.physics.bird import Bird
+from birdsim.tables.lookup import load_table
+
+pytestmark = pytest.mark.skipif(fast_errors.kernel is None, reason="numba missing")
+
+
+def test_compiled_errors_are_the_reference(monkeypatch):
+    rng = np.random.default_rng(7)
+    for n in (1, 8, 64):
+        q, v = rng.normal(size=(n, 22)), rng.normal(size=(n, 21))
+        refs = {k: rng.normal(size=n) for k in ("x", "z", "vx", "vz")}
+        wind = rng.normal(size=3) * 0.1
+        got = fast_errors.straight_errors(refs, q, v, wind)
+        monkeypatch.setattr(fast_errors, "ENABLED", False)
+        ref = fast_errors.straight_errors(refs, q, v, wind)
+        monkeypatch.setattr(fast_errors, "ENABLED", True)
+        for a, b in zip(got, ref):
+            assert np.array_equal(a, b)  # bitwise
+        assert isinstance(got[3], list) and isinstance(got[3][0], float)
+
+
+def test_gusty_cruise_flies_as_the_reference(monkeypatch):
+    path = FlightPath("cruise", 4.0, False, False, (PathKeyframe(0.0, 6.0, V=0.9),))
+    table = load_table("tables/m4.npz")
+    bird = Bird.from_toml("models/seed-bird.toml")
+    gusts = (Gust(1.0, 1.0, 0.1, -0.05, wy=0.05),)
+    logs = {}
+    for compiled in (True, False):
+        monkeypatch.setattr(fast_errors, "ENABLED", compiled)
+        r = fly(path, table, bird, "m4", config=SimConfig(attitude="free"), gusts=gusts)
+        logs[compiled] = r.arrays
+    for k in logs[True]:
+        assert np.array_equal(logs[True][k], logs[False][k], equal_nan=True), k
