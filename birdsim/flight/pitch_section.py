@@ -46,9 +46,11 @@ from birdsim.flight.wingbeat import INPUT_SMOOTHING_BEATS
 TWO_PI = 2.0 * math.pi  # one wingbeat in reduced time units
 
 #: Close the slow straight flight's pitch loop on the stroboscopic samples (else the
-#: fit's estimate and the attitude loop's own pitch demand).  Slow flight as the sixth
-#: stage's observer: airspeed below SLOW_SPEED and no pitch stiffness from the tail (over
-#: the whole flight the pigeon's landing diverged and its cruise lost 4 degrees).
+#: fit's estimate and the attitude loop's own pitch demand).  Slow flight: entered at an
+#: airspeed below SLOW_SPEED, kept while the tail has no pitch stiffness (the eighth
+#: stage: a take-off's climb-out, up to where the tail starts to restore; entered at any
+#: speed, a landing's flare switched over mid-swing and looped; over the whole flight the
+#: pigeon's landing diverged and its cruise lost 4 degrees; docs/free-body.md).
 SECTION_LOOP = True
 #: The newest of the four samples, a fraction of the wingbeat before now: where the
 #: rate's fourth harmonic (which the four samples do not cancel) crossed zero in the
@@ -123,11 +125,13 @@ class SectionPitch:
         """Every control step: ``window`` the last wingbeat's (quaternions, seed body
         rates) per log sample, the newest now; ``ref`` the planned pitch, rate and
         acceleration now.  Returns (wingbeat-mean pitch, its rate, the pitch moment
-        demanded, table units), or None outside slow straight flight (or before a
-        wingbeat of samples): the fit's estimate and the loop's own demand then."""
+        demanded, table units), or None outside slow straight flight (entered below
+        ``SLOW_SPEED``, left when the tail's pitch stiffness appears) or before a wingbeat
+        of samples: the fit's estimate and the loop's own demand then."""
         att, obs = self.att, self.obs
         quat, omega = window
-        slow = airspeed < SLOW_SPEED and att.stiffness[1] <= 1e-9  # (round-off: no air)
+        # entered below SLOW_SPEED, kept on while the tail has no pitch stiffness
+        slow = (airspeed < SLOW_SPEED or self.on) and att.stiffness[1] <= 1e-9  # (round-off)
         if not (slow and att.enabled and att.straight and att._jac is not None):
             self.on = False
             return None
