@@ -3,7 +3,8 @@
 
 After the sweeps, the middle cells of zig-zag triples (:mod:`birdsim.tables.smoothness`)
 are re-solved.  The candidates of a cell are the answers of SLSQP started at a
-*target* (the midpoint of its two neighbours along an axis, or one neighbour) on the
+*target* (the midpoint of its two neighbours along an axis, one neighbour, or the
+parameter-wise median of all its neighbours) on the
 dissertation's cost plus the distance cost of eq. 93 to that target (weight
 ``smooth_nu``): in a flat valley the distance term holds the answer next to the target,
 on a sharp optimum it moves it by little.  Each candidate is then judged on the
@@ -130,7 +131,13 @@ def local_score(
 
 
 def _targets(cell: tuple[int, ...], X: np.ndarray, ok: np.ndarray) -> list[np.ndarray]:
-    """Midpoints of the two neighbours along each axis, then the neighbours themselves."""
+    """Midpoints of the two neighbours along each axis, then the neighbours themselves,
+    then (with three or more reachable neighbours) their parameter-wise median.
+
+    The median (issue 24) is a median filter's answer to an isolated odd cell: where the
+    neighbours sit on two branches it takes, parameter by parameter, the majority's value,
+    which neither a midpoint (half-way between the branches) nor a single neighbour (one
+    axis's side) offers.  With two neighbours it would be their midpoint again."""
     nb = _neighbours(cell, ok.shape, ok)
     out: list[np.ndarray] = []
     for k in range(ok.ndim):
@@ -138,6 +145,8 @@ def _targets(cell: tuple[int, ...], X: np.ndarray, ok: np.ndarray) -> list[np.nd
         if len(pair) == 2:
             out.append(0.5 * (X[pair[0]] + X[pair[1]]))
     out += [X[c].copy() for _, c in nb]
+    if len(nb) >= 3:
+        out.append(np.median(np.array([X[c] for _, c in nb]), axis=0))
     out = [np.round(t / TARGET_QUANTUM_RAD) * TARGET_QUANTUM_RAD for t in out]
     kept: list[np.ndarray] = []
     for t in out:
