@@ -130,9 +130,12 @@ def local_score(
     return count, steps
 
 
-def _targets(cell: tuple[int, ...], X: np.ndarray, ok: np.ndarray) -> list[np.ndarray]:
+def _targets(
+    cell: tuple[int, ...], X: np.ndarray, ok: np.ndarray, median: bool = False
+) -> list[np.ndarray]:
     """Midpoints of the two neighbours along each axis, then the neighbours themselves,
-    then (with three or more reachable neighbours) their parameter-wise median.
+    then (``median``, with three or more reachable neighbours) their parameter-wise
+    median (``BuildSettings.smooth_median``).
 
     The median (issue 24) is a median filter's answer to an isolated odd cell: where the
     neighbours sit on two branches it takes, parameter by parameter, the majority's value,
@@ -145,7 +148,7 @@ def _targets(cell: tuple[int, ...], X: np.ndarray, ok: np.ndarray) -> list[np.nd
         if len(pair) == 2:
             out.append(0.5 * (X[pair[0]] + X[pair[1]]))
     out += [X[c].copy() for _, c in nb]
-    if len(nb) >= 3:
+    if median and len(nb) >= 3:
         out.append(np.median(np.array([X[c] for _, c in nb]), axis=0))
     out = [np.round(t / TARGET_QUANTUM_RAD) * TARGET_QUANTUM_RAD for t in out]
     kept: list[np.ndarray] = []
@@ -254,7 +257,7 @@ def smooth_cells(
     cells = [tuple(int(i) for i in c) for c in cells]
     owner, results = [], []
     for m, cell in enumerate(cells):
-        for target in _targets(cell, X, ok):
+        for target in _targets(cell, X, ok, st.smooth_median):
             results.append(_candidate(cfg, model, tuple(demands[cell]), target))
             owner.append(m)
     pool: list[list[np.ndarray]] = [[X[c].copy()] for c in cells]
