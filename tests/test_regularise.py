@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from birdsim.tables.build import BuildConfig, BuildSettings, Grid, build_table
-from birdsim.tables.regularise import local_score, zigzag_cells
+from birdsim.tables.regularise import _targets, local_score, zigzag_cells
 from birdsim.tables.smoothness import table_smoothness
 
 # a corner of the base table where the sweeps leave zig-zags along Fx (cruise-like
@@ -56,6 +56,31 @@ def test_local_score_counts_the_zigzags_a_cell_takes_part_in():
     )  # the middle of one triple; two neighbours
     X[2, 0, 0, 1] = 0.5
     assert len(zigzag_cells(names, X, ok)) == 3 and len(zigzag_cells(names, X, ok, ends=False)) == 1
+
+
+def test_the_neighbours_median_is_a_target_where_three_or_more_are_reachable():
+    """Issue 24: a cell whose neighbours sit on two branches (five at flap 0.2, one at
+    flap 1.4) gets the majority's flap in a target, with the pitch their median; no
+    midpoint along an axis nor one neighbour is it.  With two neighbours: no median.
+    Without ``smooth_median`` (the default, every table but m5): no median either."""
+    X = np.zeros((3, 3, 3, 2))
+    nb = {(0, 1, 1): (0.0, 0.2), (2, 1, 1): (0.1, 0.2), (1, 0, 1): (0.2, 0.2)}
+    nb |= {(1, 2, 1): (0.5, 1.4), (1, 1, 0): (0.0, 0.2), (1, 1, 2): (0.4, 0.2)}
+    for c, x in nb.items():
+        X[c] = x
+    ok = np.ones((3, 3, 3), bool)
+    assert len(_targets((1, 1, 1), X, ok)) == 3 + 6 - 2
+    targets = _targets((1, 1, 1), X, ok, median=True)
+    assert len(targets) == 3 + 6 + 1 - 2  # two repeats (SAME_TARGET_RAD) dropped
+    np.testing.assert_allclose(targets[-1], (0.15, 0.2))  # the median of 6 neighbours
+    assert not any(np.allclose(t, (0.15, 0.2)) for t in targets[:-1])
+    line = np.array([(0.0, 0.2), (0.5, 1.4), (1.0, 0.2)])[:, None, None]
+    assert len(_targets((1, 0, 0), line, np.ones((3, 1, 1), bool), True)) == 1 + 2  # no median
+    # the setting is recorded only when on: tables built before it keep their digest
+    off = BuildConfig("base", Grid.default(), settings=BuildSettings())
+    on = BuildConfig("base", Grid.default(), settings=BuildSettings(smooth_median=True))
+    assert "smooth_median" not in off.to_dict()["solver"]
+    assert on.to_dict()["solver"]["smooth_median"] is True
 
 
 # ---- a choice that round-off cannot flip (issue 21) ------------------------------------

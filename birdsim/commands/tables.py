@@ -137,6 +137,12 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="regularising pass: at most this many red-black rounds (default 4; it stops "
         "earlier after a round that removes no zig-zag)",
     )
+    b.add_argument(
+        "--smooth-median",
+        action="store_true",
+        help="regularising pass: also start from the median of a cell's neighbours (the "
+        "shipped m5 table's setting; docs/tables.md)",
+    )
     b.add_argument("--quiet", action="store_true", help="no progress bar")
     add_bird_arguments(b)
     b.set_defaults(func=run_build)
@@ -250,6 +256,7 @@ def run_build(args: argparse.Namespace) -> int:
         v_passes=not args.no_v_passes,
         smooth_tol=args.smooth_tol,
         smooth_rounds=args.smooth_rounds,
+        smooth_median=args.smooth_median,
     )
     out = Path(args.out) if args.out else Path("tables") / f"{model.name}.npz"
     npz_path, json_path = table_paths(out)

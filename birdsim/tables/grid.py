@@ -144,6 +144,9 @@ class BuildSettings:
     smooth_tol: float = 5e-3  # regularising pass: cost tolerance of a tie-break (0 = no pass)
     smooth_nu: float = 0.05  # its distance weight (per rad) towards the neighbours' wingbeat
     smooth_rounds: int = 4  # at most this many red-black rounds
+    # ... also start from the parameter-wise median of a cell's neighbours (issue 24; the
+    # m5 table's; off by default, so the other tables rebuild bit for bit: docs/tables.md)
+    smooth_median: bool = False
 
     def __post_init__(self) -> None:
         if not (0.0 < self.relax <= 1.0):
@@ -153,7 +156,7 @@ class BuildSettings:
                 raise BirdsimError(
                     f"{name}={getattr(self, name)!r} is invalid; allowed: an integer >= 2"
                 )
-        for name in ("polish_rule", "v_passes"):
+        for name in ("polish_rule", "v_passes", "smooth_median"):
             if not isinstance(getattr(self, name), bool):
                 raise BirdsimError(
                     f"{name}={getattr(self, name)!r} is invalid; allowed: True or False"
@@ -178,6 +181,15 @@ class BuildSettings:
                 raise BirdsimError(f"{name}={value!r} is invalid; allowed: a number >= 0")
 
 
+def _solver_dict(settings: BuildSettings) -> dict[str, Any]:
+    """The settings as recorded; ``smooth_median`` only when on, so that every table built
+    before it existed keeps its configuration digest (and its checkpoints)."""
+    out = asdict(settings)
+    if not out["smooth_median"]:
+        del out["smooth_median"]
+    return out
+
+
 @dataclass(frozen=True)
 class BuildConfig:
     """Everything that determines a table (hashed for the checkpoints)."""
@@ -200,7 +212,7 @@ class BuildConfig:
             "grid": self.grid.to_dict(),
             "bird": self.bird.to_dict(),
             "cost_weights": self.weights.to_dict(),
-            "solver": asdict(self.settings),
+            "solver": _solver_dict(self.settings),
         }
 
     def stamp(self) -> dict[str, Any]:

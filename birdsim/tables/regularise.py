@@ -3,7 +3,8 @@
 
 After the sweeps, the middle cells of zig-zag triples (:mod:`birdsim.tables.smoothness`)
 are re-solved.  The candidates of a cell are the answers of SLSQP started at a
-*target* (the midpoint of its two neighbours along an axis, or one neighbour) on the
+*target* (the midpoint of its two neighbours along an axis, one neighbour, or the
+parameter-wise median of all its neighbours) on the
 dissertation's cost plus the distance cost of eq. 93 to that target (weight
 ``smooth_nu``): in a flat valley the distance term holds the answer next to the target,
 on a sharp optimum it moves it by little.  Each candidate is then judged on the
@@ -129,8 +130,17 @@ def local_score(
     return count, steps
 
 
-def _targets(cell: tuple[int, ...], X: np.ndarray, ok: np.ndarray) -> list[np.ndarray]:
-    """Midpoints of the two neighbours along each axis, then the neighbours themselves."""
+def _targets(
+    cell: tuple[int, ...], X: np.ndarray, ok: np.ndarray, median: bool = False
+) -> list[np.ndarray]:
+    """Midpoints of the two neighbours along each axis, then the neighbours themselves,
+    then (``median``, with three or more reachable neighbours) their parameter-wise
+    median (``BuildSettings.smooth_median``).
+
+    The median (issue 24) is a median filter's answer to an isolated odd cell: where the
+    neighbours sit on two branches it takes, parameter by parameter, the majority's value,
+    which neither a midpoint (half-way between the branches) nor a single neighbour (one
+    axis's side) offers.  With two neighbours it would be their midpoint again."""
     nb = _neighbours(cell, ok.shape, ok)
     out: list[np.ndarray] = []
     for k in range(ok.ndim):
@@ -138,6 +148,8 @@ def _targets(cell: tuple[int, ...], X: np.ndarray, ok: np.ndarray) -> list[np.nd
         if len(pair) == 2:
             out.append(0.5 * (X[pair[0]] + X[pair[1]]))
     out += [X[c].copy() for _, c in nb]
+    if median and len(nb) >= 3:
+        out.append(np.median(np.array([X[c] for _, c in nb]), axis=0))
     out = [np.round(t / TARGET_QUANTUM_RAD) * TARGET_QUANTUM_RAD for t in out]
     kept: list[np.ndarray] = []
     for t in out:
@@ -245,7 +257,7 @@ def smooth_cells(
     cells = [tuple(int(i) for i in c) for c in cells]
     owner, results = [], []
     for m, cell in enumerate(cells):
-        for target in _targets(cell, X, ok):
+        for target in _targets(cell, X, ok, st.smooth_median):
             results.append(_candidate(cfg, model, tuple(demands[cell]), target))
             owner.append(m)
     pool: list[list[np.ndarray]] = [[X[c].copy()] for c in cells]
