@@ -223,3 +223,23 @@ def test_a_value_starting_with_a_minus_sign_reaches_its_option(capsys) -> None:
         "-x",
     ]
     assert joined_minus_values(["--gust=-3:1", "-.5:1"]) == ["--gust=-3:1", "-.5:1"]
+
+
+def test_validate_writes_its_page_with_the_span_ratio_trend(tmp_path, capsys):
+    """``birdsim validate --out DIR`` (the README's command): the span-ratio trend row is
+    scored in the table; the kinematics figure draws only the trends it has a curve for
+    (before: KeyError 'span_ratio_slope', a traceback and no page)."""
+    from birdsim.validation.measurements import default_path
+
+    src = default_path().read_text().splitlines()
+    keep = [src[0]] + [
+        line for line in src[1:] if line.startswith(("TD96_speed_max", "TD96_span_ratio_trend"))
+    ]
+    data = tmp_path / "trend.csv"
+    data.write_text("\n".join(keep) + "\n")
+    out = tmp_path / "page"
+    code, _, err = _run(["validate", "--data", str(data), "--out", str(out)], capsys)
+    assert code == 0, err
+    assert (out / "kinematics.png").is_file() and "TD96_span_ratio_trend" in (
+        out / "scorecard.json"
+    ).read_text()
