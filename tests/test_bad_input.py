@@ -247,7 +247,7 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("fly/path-turning-posed", ["fly", "{w}/path_turn.toml", "--quiet", "--attitude", "posed"], "--attitude posed cannot fly"),
     ("render/path-turning-posed", ["render", "{w}/path_turn.toml", "--table", "{w}/table.npz", "--attitude", "posed"], "--attitude posed cannot fly"),
     ("export/path-turning-posed", ["export", "circle", "--format", "csv", "--out", "{w}/x.csv", "--attitude", "posed"], "--attitude posed cannot fly 'circle'"),
-    ("export/attitude-kinematic", ["export", "cruise", "--format", "csv", "--out", "{w}/x.csv", "--kinematic", "--attitude", "free"], "--gust/--open-loop/--attitude need free flight"),
+    ("export/attitude-kinematic", ["export", "cruise", "--format", "csv", "--out", "{w}/x.csv", "--kinematic", "--attitude", "free"], "--attitude needs free flight; allowed: omit --attitude with --kinematic"),
     ("fly/bird-missing", ["fly", "cruise", "--quiet", "--bird", "{w}/nope.toml"], "--bird '{w}/nope.toml' does not exist"),
     ("render/bird-missing", [*RENDER, "--bird", "{w}/nope.toml"], "--bird '{w}/nope.toml' does not exist"),
     ("export/bird-missing", ["export", "cruise", "--format", "csv", "--out", "{w}/x.csv", "--bird", "{w}/nope.toml"], "--bird '{w}/nope.toml' does not exist"),

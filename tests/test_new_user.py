@@ -16,6 +16,9 @@ and their mistakes (each test fails on the code before its fix).
 * ``tables --help`` names its four subcommands (it said three and named a module);
 * ``render LOG.npz`` refuses --model (another), --bird, --table, --kinematic as export does;
 * ``--gust -3:1:0:0`` gets the gust's own message (argparse said "expected one argument").
+* ``validate --out DIR`` writes its page (a KeyError at the span-ratio trend row);
+* ``--legs``/``--strict`` with a flight log (render, export), and every free-flight option
+  with ``--kinematic`` (render, export), are refused in one line (they were ignored).
 """
 
 from __future__ import annotations
@@ -243,3 +246,37 @@ def test_validate_writes_its_page_with_the_span_ratio_trend(tmp_path, capsys):
     assert (out / "kinematics.png").is_file() and "TD96_span_ratio_trend" in (
         out / "scorecard.json"
     ).read_text()
+
+
+@pytest.mark.parametrize(
+    "argv, text",
+    [
+        (["export", "LOG", "--format", "csv", "--out", "x.csv", "--legs"], "--legs does not apply"),
+        (["export", "LOG", "--format", "csv", "--out", "x.csv", "--strict"], "--strict does not"),
+        (["render", "LOG", "--still", "s.png", "--legs"], "--legs does not apply to a flight log"),
+        (["render", "LOG", "--still", "s.png", "--strict"], "--strict does not apply"),
+        (
+            ["export", "cruise", "--kinematic", "--format", "csv", "--out", "x.csv", "--legs"],
+            "--legs needs free flight; allowed: omit --legs with --kinematic",
+        ),
+        (
+            ["export", "cruise", "--kinematic", "--format", "csv", "--out", "x.csv", "--strict"],
+            "--strict needs free flight",
+        ),
+        (
+            ["render", "cruise", "--kinematic", "--still", "s.png", "--gust", "3:1:0:0.1"],
+            "--gust needs free flight",
+        ),
+        (["render", "take-off", "--kinematic", "--still", "s.png", "--legs"], "--legs needs free"),
+    ],
+)
+def test_a_free_flight_option_is_refused_where_nothing_is_flown(
+    argv, text, cruise_log, tmp_path, monkeypatch, capsys
+):
+    """A flight log was flown already, ``--kinematic`` flies nothing: ``--legs``,
+    ``--strict`` (and, for render's playback, ``--gust``...) were silently ignored."""
+    monkeypatch.chdir(tmp_path)
+    argv = [cruise_log if a == "LOG" else a for a in argv]
+    code, out, err = _run(argv, capsys)
+    assert code == 2 and len(err) == 1, err
+    assert text in err[0] and out == "" and not list(tmp_path.iterdir()), err[0]

@@ -11,7 +11,7 @@ import time
 from pathlib import Path
 
 from birdsim.commands.common import PRESET_LIST, add_bird_arguments, bird_from_args
-from birdsim.commands.render_flight import add_flight_arguments
+from birdsim.commands.render_flight import add_flight_arguments, refuse_with_kinematic
 from birdsim.errors import BirdsimError, limits_text, magnitude_ok
 
 
@@ -143,6 +143,8 @@ def run(args: argparse.Namespace) -> int:
             ("--open-loop", args.open_loop),
             ("--attitude", args.attitude),
             ("--kinematic", args.kinematic),
+            ("--legs", args.legs),
+            ("--strict", args.strict),
         )
         refuse_for_a_log(for_a_log, "", None)
         from birdsim.flight.flock_log import is_flock_log
@@ -207,10 +209,7 @@ def run(args: argparse.Namespace) -> int:
         from birdsim.flight.manoeuvre import get_manoeuvre
         from birdsim.physics.kinematics import get_model
 
-        if args.gust or args.open_loop or args.attitude:
-            raise BirdsimError(
-                "--gust/--open-loop/--attitude need free flight; allowed: omit them with --kinematic"
-            )
+        refuse_with_kinematic(args)
         manoeuvre = get_manoeuvre(args.source)
         model = get_model(args.model or "m4").name
         from birdsim.tables.shipped import table_folder
