@@ -61,6 +61,8 @@ FLAG_NAMES: dict[str, dict[str, str]] = {
     "export": {"model ": "--model "},
     "envelope": {"model ": "--model "},
     "view": {"model ": "--model "},
+    "validate": {"model ": "--model "},
+    "params": {"model ": "MODEL "},
 }
 #: Python hints inside a message and their flags.
 FLAG_HINTS = {
@@ -130,7 +132,17 @@ def joined_minus_values(argv: list[str]) -> list[str]:
 
 def main(argv: list[str] | None = None) -> int:
     argv = joined_minus_values(sys.argv[1:] if argv is None else list(argv))
-    args = forget_given(build_parser().parse_args(argv))
+    parser = build_parser()
+    args, extras = parser.parse_known_args(argv)
+    if extras:  # the subcommand's name and its help, not "birdsim: error: ..."
+        sub = getattr(args, f"{args.command}_command", None)  # tables build, bird new
+        command = f"{args.command} {sub}" if sub else args.command
+        parser.exit(
+            2,
+            f"birdsim {command}: error: unrecognized arguments: {' '.join(extras)}; "
+            f"allowed: the options `birdsim {command} --help` lists\n",
+        )
+    args = forget_given(args)
     try:
         return int(args.func(args) or 0)
     except BirdsimError as exc:

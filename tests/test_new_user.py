@@ -18,7 +18,10 @@ and their mistakes (each test fails on the code before its fix).
 * ``--gust -3:1:0:0`` gets the gust's own message (argparse said "expected one argument").
 * ``validate --out DIR`` writes its page (a KeyError at the span-ratio trend row);
 * ``--legs``/``--strict`` with a flight log (render, export), and every free-flight option
-  with ``--kinematic`` (render, export), are refused in one line (they were ignored).
+  with ``--kinematic`` (render, export), are refused in one line (they were ignored);
+* an unknown model names ``--model`` in validate and ``MODEL`` in params; validate's
+  ``--bird`` takes a shipped bird's name; an unknown option names the subcommand and its
+  ``--help`` (it said "birdsim: error: unrecognized arguments").
 """
 
 from __future__ import annotations
@@ -280,3 +283,38 @@ def test_a_free_flight_option_is_refused_where_nothing_is_flown(
     code, out, err = _run(argv, capsys)
     assert code == 2 and len(err) == 1, err
     assert text in err[0] and out == "" and not list(tmp_path.iterdir()), err[0]
+
+
+@pytest.mark.parametrize(
+    "argv, text",
+    [
+        (["validate", "--model", "M3"], "birdsim validate: error: --model 'M3' is unknown;"),
+        (["params", "M4"], "birdsim params: error: MODEL 'M4' is unknown; allowed: base, m1"),
+        (
+            ["validate", "--bird", "Pigeon"],
+            "--bird 'Pigeon' does not exist; allowed: a readable TOML file or a shipped bird (pigeon",
+        ),
+        (
+            ["examples", "--json"],
+            "birdsim examples: error: unrecognized arguments: --json; allowed: the options "
+            "`birdsim examples --help` lists",
+        ),
+        (["fly", "cruise", "--log", "c.npz"], "birdsim fly: error: unrecognized arguments: --log"),
+        (["tables", "info", "t.npz", "--x"], "birdsim tables info: error: unrecognized arguments"),
+    ],
+)
+def test_a_mistake_names_the_command_and_the_argument(argv, text, tmp_path, monkeypatch, capsys):
+    """Before: "model 'M3' is unknown" (no flag), validate's --bird took no shipped name
+    (every other --bird does), and an unknown option said "birdsim: error: ..." without
+    the subcommand or where to look."""
+    monkeypatch.chdir(tmp_path)
+    code, out, err = _run(argv, capsys)
+    assert code == 2 and len(err) == 1 and out == "", err
+    assert text in err[0], err[0]
+
+
+def test_validate_takes_a_shipped_birds_name(tmp_path, capsys):
+    """``--bird pigeon`` from any folder, as every other command's --bird (the refusal
+    that follows is the data file's, checked after the bird)."""
+    code, _, err = _run(["validate", "--bird", "pigeon", "--data", str(tmp_path / "m.csv")], capsys)
+    assert code == 2 and len(err) == 1 and "--data" in err[0], err

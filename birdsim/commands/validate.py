@@ -23,7 +23,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--bird",
         metavar="FILE.toml",
-        help="bird file with mass and gravity (default: models/pigeon.toml)",
+        help="bird file with mass and gravity, or a shipped bird's name (pigeon; default: models/pigeon.toml)",
     )
     p.add_argument(
         "--polar",
@@ -53,8 +53,12 @@ def run(args: argparse.Namespace) -> int:
     from birdsim.validation.page import check_page_folder, write_page
     from birdsim.validation.run import load_flying_bird, scorecard_text, validate
 
+    from birdsim.commands.common import bird_file, flag_names
+
     get_model(args.model)  # unknown model: one line before any work
-    bird = load_flying_bird(args.bird, args.polar)
+    with flag_names({"path=": "--bird "}):  # a shipped bird's name, as every --bird takes
+        path = bird_file(args.bird) if args.bird else None
+    bird = load_flying_bird(path, args.polar)
     ms = load_measurements(args.data)
     if args.out:
         check_page_folder(Path(args.out), args.force)
