@@ -88,7 +88,22 @@ class _Parser(argparse.ArgumentParser):
         self.register("action", "store", StoreOnce)
 
     def error(self, message: str) -> None:  # type: ignore[override]
-        self.exit(2, f"{self.prog}: error: {message}\n")
+        self.exit(2, f"{self.prog}: error: {_with_allowed(message)}\n")
+
+
+#: argparse's word for a value its ``type=`` refused, and what the value should be.
+_BAD_TYPE = re.compile(r"^argument (\S+): invalid (int|float) value: (.*)$")
+_TYPE_WORDS = {"int": "an integer", "float": "a number"}
+
+
+def _with_allowed(message: str) -> str:
+    """argparse's "argument --jobs: invalid int value: 'abc'" as the project's one line:
+    the option, the value and what is allowed."""
+    m = _BAD_TYPE.match(message)
+    if not m:
+        return message
+    kind = _TYPE_WORDS[m.group(2)]
+    return f"{m.group(1)} {m.group(3)} is not {kind}; allowed: {kind}"
 
 
 def build_parser() -> argparse.ArgumentParser:

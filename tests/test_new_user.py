@@ -21,7 +21,9 @@ and their mistakes (each test fails on the code before its fix).
   with ``--kinematic`` (render, export), are refused in one line (they were ignored);
 * an unknown model names ``--model`` in validate and ``MODEL`` in params; validate's
   ``--bird`` takes a shipped bird's name; an unknown option names the subcommand and its
-  ``--help`` (it said "birdsim: error: unrecognized arguments").
+  ``--help`` (it said "birdsim: error: unrecognized arguments");
+* an option's value of the wrong type (``--jobs abc``) says what is allowed;
+* a flight log given as a table is named as given (it named a ``.json`` never typed).
 """
 
 from __future__ import annotations
@@ -318,3 +320,26 @@ def test_validate_takes_a_shipped_birds_name(tmp_path, capsys):
     that follows is the data file's, checked after the bird)."""
     code, _, err = _run(["validate", "--bird", "pigeon", "--data", str(tmp_path / "m.csv")], capsys)
     assert code == 2 and len(err) == 1 and "--data" in err[0], err
+
+
+@pytest.mark.parametrize(
+    "argv, text",
+    [
+        (["tables", "build", "--model", "m3", "--jobs", "abc"], "--jobs 'abc' is not an integer"),
+        (["crosscheck", "--samples", "1.5"], "--samples '1.5' is not an integer; allowed: an"),
+        (["tables", "build", "--model", "m3", "--relax", "x"], "--relax 'x' is not a number;"),
+    ],
+)
+def test_an_option_of_the_wrong_type_says_what_is_allowed(argv, text, capsys):
+    """Before: argparse's "argument --jobs: invalid int value: 'abc'" (no 'allowed')."""
+    code, out, err = _run(argv, capsys)
+    assert code == 2 and len(err) == 1 and text in err[0] and "allowed" in err[0], err
+
+
+def test_a_flight_log_given_as_a_table_is_named(cruise_log, capsys):
+    """``tables info LOG.npz``: the line names the file given and says a log is not a
+    table (before: "table file 'c.json' does not exist", a file the user never named)."""
+    code, out, err = _run(["tables", "info", cruise_log], capsys)
+    assert code == 2 and len(err) == 1, err
+    assert f"table file {cruise_log!r} has no 'c.json' beside it" in err[0], err[0]
+    assert "a flight log is not a table" in err[0]
