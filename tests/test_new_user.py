@@ -23,7 +23,9 @@ and their mistakes (each test fails on the code before its fix).
   ``--bird`` takes a shipped bird's name; an unknown option names the subcommand and its
   ``--help`` (it said "birdsim: error: unrecognized arguments");
 * an option's value of the wrong type (``--jobs abc``) says what is allowed;
-* a flight log given as a table is named as given (it named a ``.json`` never typed).
+* a flight log given as a table is named as given (it named a ``.json`` never typed);
+* a refused ``export`` prints only its error (the time base came first), and BVH of the
+  base model is refused before the flight (it was refused after flying it).
 """
 
 from __future__ import annotations
@@ -343,3 +345,21 @@ def test_a_flight_log_given_as_a_table_is_named(cruise_log, capsys):
     assert code == 2 and len(err) == 1, err
     assert f"table file {cruise_log!r} has no 'c.json' beside it" in err[0], err[0]
     assert "a flight log is not a table" in err[0]
+
+
+@pytest.mark.parametrize(
+    "flags, text",
+    [
+        (["--format", "bvh", "--out", "b.bvh", "--model", "base"], "--format bvh cannot carry"),
+        (["--format", "bvh", "--out", "b.bvh", "--kinematic", "--model", "base"], "heave slide"),
+        (["--format", "csv", "--out", "x.csv", "--seconds", "5000"], "wingbeats of flight"),
+        (["--format", "csv", "--out", "x.csv", "--kinematic", "--seconds", "5000"], "(0, 3600]"),
+    ],
+)
+def test_a_refused_export_prints_only_its_error(flags, text, tmp_path, monkeypatch, capsys):
+    """As render (above): before, the time base was printed on stdout before the refusal,
+    and the base model's BVH was refused only after its whole flight was flown."""
+    monkeypatch.chdir(tmp_path)
+    code, out, err = _run(["export", "cruise", *flags], capsys)
+    assert code == 2 and len(err) == 1 and text in err[0], err
+    assert out == "" and not list(tmp_path.iterdir()), out
