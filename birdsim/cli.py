@@ -146,6 +146,14 @@ def joined_minus_values(argv: list[str]) -> list[str]:
 
 
 def main(argv: list[str] | None = None) -> int:
+    try:
+        return _main(argv)
+    except KeyboardInterrupt:  # Ctrl-C while the commands load (their imports take seconds)
+        print("birdsim: interrupted", file=sys.stderr)
+        return 130
+
+
+def _main(argv: list[str] | None) -> int:
     argv = joined_minus_values(sys.argv[1:] if argv is None else list(argv))
     parser = build_parser()
     args, extras = parser.parse_known_args(argv)

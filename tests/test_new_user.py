@@ -25,7 +25,8 @@ and their mistakes (each test fails on the code before its fix).
 * an option's value of the wrong type (``--jobs abc``) says what is allowed;
 * a flight log given as a table is named as given (it named a ``.json`` never typed);
 * a refused ``export`` prints only its error (the time base came first), and BVH of the
-  base model is refused before the flight (it was refused after flying it).
+  base model is refused before the flight (it was refused after flying it);
+* Ctrl-C while the commands load is one line and exit 130 (it was a traceback).
 """
 
 from __future__ import annotations
@@ -363,3 +364,16 @@ def test_a_refused_export_prints_only_its_error(flags, text, tmp_path, monkeypat
     code, out, err = _run(["export", "cruise", *flags], capsys)
     assert code == 2 and len(err) == 1 and text in err[0], err
     assert out == "" and not list(tmp_path.iterdir()), out
+
+
+def test_ctrl_c_while_the_commands_load_is_one_line(monkeypatch, capsys):
+    """Ctrl-C in the first seconds (building the parser imports the presets, compiled by
+    numba) printed a 60-line traceback; now one line and exit 130, as during the work."""
+    import birdsim.cli as cli
+
+    def interrupted() -> argparse.ArgumentParser:
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(cli, "build_parser", interrupted)
+    code, out, err = _run(["tables", "build", "--model", "m3"], capsys)
+    assert code == 130 and err == ["birdsim: interrupted"] and out == "", err
