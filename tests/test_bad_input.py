@@ -101,7 +101,7 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("forces/speed-not-a-number", ["forces", "--model", "m1", "--speed", "fast", *HOVER], "--speed='fast' is not a number"),
     ("forces/samples-zero", [*FORCES, *HOVER, "--samples", "0"], "--samples 0 is invalid"),
     ("forces/samples-huge", [*FORCES, *HOVER, "--samples", "1000000000"], "--samples 1000000000 is invalid"),
-    ("forces/samples-not-int", [*FORCES, *HOVER, "--samples", "2.5"], "--samples: invalid int value"),
+    ("forces/samples-not-int", [*FORCES, *HOVER, "--samples", "2.5"], "--samples '2.5' is not an integer; allowed: an integer"),
     ("forces/bird-missing", [*FORCES, *HOVER, "--bird", "{w}/nope.toml"], "--bird '{w}/nope.toml' does not exist"),
     ("forces/bird-malformed-toml", [*FORCES, *HOVER, "--bird", "{w}/malformed.toml"], "--bird '{w}/malformed.toml' is not valid TOML"),
     ("forces/bird-directory", [*FORCES, *HOVER, "--bird", "{w}/folder"], "--bird '{w}/folder' is a folder"),

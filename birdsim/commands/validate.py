@@ -48,12 +48,11 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from birdsim.commands.common import bird_file, flag_names
     from birdsim.physics.kinematics import get_model
     from birdsim.validation.measurements import load_measurements
     from birdsim.validation.page import check_page_folder, write_page
     from birdsim.validation.run import load_flying_bird, scorecard_text, validate
-
-    from birdsim.commands.common import bird_file, flag_names
 
     get_model(args.model)  # unknown model: one line before any work
     with flag_names({"path=": "--bird "}):  # a shipped bird's name, as every --bird takes
