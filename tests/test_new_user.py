@@ -26,7 +26,8 @@ and their mistakes (each test fails on the code before its fix).
 * a flight log given as a table is named as given (it named a ``.json`` never typed);
 * a refused ``export`` prints only its error (the time base came first), and BVH of the
   base model is refused before the flight (it was refused after flying it);
-* Ctrl-C while the commands load is one line and exit 130 (it was a traceback).
+* Ctrl-C while the commands load is one line and exit 130 (it was a traceback);
+* a flock flight shorter than two wingbeats prints no "nan" (it said "RMS nan").
 """
 
 from __future__ import annotations
@@ -377,3 +378,16 @@ def test_ctrl_c_while_the_commands_load_is_one_line(monkeypatch, capsys):
     monkeypatch.setattr(cli, "build_parser", interrupted)
     code, out, err = _run(["tables", "build", "--model", "m3"], capsys)
     assert code == 130 and err == ["birdsim: interrupted"] and out == "", err
+
+
+def test_a_short_flock_flight_prints_no_nan(tmp_path, capsys):
+    """A flock file of 2 s (0.3 wingbeats of the seed bird) printed "worst path RMS nan
+    semispan"; the JSON says null, the line now says why there is no figure."""
+    src = tmp_path / "two.toml"
+    src.write_text(
+        'path = "cruise"\nseconds = 2.0\n'
+        "[[bird]]\noffset = [0.0, 0.0, 0.0]\n[[bird]]\noffset = [0.0, 2.0, 0.0]\n"
+    )
+    code, out, err = _run(["fly", str(src)], capsys)
+    assert code == 0, err
+    assert "nan" not in out and "no path RMS (the flight ends within its first 2" in out, out
