@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from birdsim.errors import BirdsimError
-from birdsim.io import write_atomic
+from birdsim.io import check_output, write_atomic
 from birdsim.report.plots import pyplot, save_png
 from birdsim.validation.scorecard import AGREE, ROUGH, Row
 from birdsim.validation.trim import TrimSweep
@@ -48,6 +48,8 @@ def check_page_folder(out: Path, force: bool) -> None:
         raise BirdsimError(
             f"--out {str(out)!r} holds {existing[0]} already; allowed: a new folder, or --force to overwrite"
         )
+    # the folder made and written into (before the validation), or one line
+    check_output(out / PAGE_FILES[0], True, "--out")
 
 
 def _power_figure(
