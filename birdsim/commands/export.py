@@ -10,7 +10,7 @@ import argparse
 import time
 from pathlib import Path
 
-from birdsim.commands.common import PRESET_LIST, add_bird_arguments, bird_from_args
+from birdsim.commands.common import MODEL_LIST, PRESET_LIST, add_bird_arguments, bird_from_args
 from birdsim.commands.render_flight import add_flight_arguments, refuse_with_kinematic
 from birdsim.errors import BirdsimError, limits_text, magnitude_ok
 
@@ -39,7 +39,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--model",
         default=None,
-        help="kinematic model for a manoeuvre (default: the demo model m3 in free flight, m4 with --kinematic; a log names its own)",
+        help=f"kinematic model for a manoeuvre: {MODEL_LIST} (default: the demo model m3 in free flight, m4 with --kinematic; a log names its own)",
     )
     p.add_argument(
         "--table",

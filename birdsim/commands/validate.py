@@ -8,6 +8,8 @@ import argparse
 import json
 from pathlib import Path
 
+from birdsim.commands.common import MODEL_LIST
+
 
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser(
@@ -18,7 +20,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--model",
         default="m3",
-        help="kinematic model (default m3: its flap reaches the pigeon's amplitudes)",
+        help=f"kinematic model: {MODEL_LIST} (default m3: its flap reaches the pigeon's amplitudes)",
     )
     p.add_argument(
         "--bird",
