@@ -3,7 +3,8 @@ frictions met with export, tables and validate (each test fails on the code befo
 
 * ``validate --out`` into a folder that cannot be made is one line before the validation
   (it was a FileNotFoundError traceback after the whole 70 s run);
-* every ``--model`` help lists the models (export, view and validate did not).
+* every ``--model`` help lists the models (export, view and validate did not);
+* a resumed ``tables build`` says that it reuses the finished parts.
 """
 
 from __future__ import annotations
@@ -28,3 +29,23 @@ def test_every_model_option_lists_the_models():
         for action in parser._actions:
             if "--model" in action.option_strings:
                 assert "base, m1, m2, m3, m4" in (action.help or ""), (name, action.help)
+
+
+def test_a_resumed_table_build_says_so(tmp_path, monkeypatch, capsys):
+    """Run the same ``tables build`` again after Ctrl-C: it reused the finished parts and
+    said nothing about it; now one stderr line. (The parts are kept here by making the
+    first build leave its checkpoint folder, as an interrupted one does.)"""
+    from birdsim.tables.checkpoints import Checkpoints
+
+    monkeypatch.chdir(tmp_path)
+    argv = ["tables", "build", "--model", "m3", "--size", "2", "--grid", "V=0.5|0.6"]
+    argv += ["--out", "t.npz", "--jobs", "1", "--quiet"]
+    with monkeypatch.context() as m:
+        m.setattr(Checkpoints, "remove", lambda self: None)
+        assert _run(argv, capsys)[0] == 0
+    assert (tmp_path / ".t.build").is_dir()
+    for name in ("t.npz", "t.json"):
+        (tmp_path / name).unlink()
+    code, out, err = _run(argv, capsys)
+    assert code == 0 and out.startswith("wrote t.npz"), err
+    assert len(err) == 1 and "resuming: " in err[0] and "'.t.build' are reused" in err[0], err
