@@ -61,6 +61,8 @@ FLAG_NAMES: dict[str, dict[str, str]] = {
     "export": {"model ": "--model "},
     "envelope": {"model ": "--model "},
     "view": {"model ": "--model "},
+    "validate": {"model ": "--model "},
+    "params": {"model ": "MODEL "},
 }
 #: Python hints inside a message and their flags.
 FLAG_HINTS = {
@@ -86,7 +88,22 @@ class _Parser(argparse.ArgumentParser):
         self.register("action", "store", StoreOnce)
 
     def error(self, message: str) -> None:  # type: ignore[override]
-        self.exit(2, f"{self.prog}: error: {message}\n")
+        self.exit(2, f"{self.prog}: error: {_with_allowed(message)}\n")
+
+
+#: argparse's word for a value its ``type=`` refused, and what the value should be.
+_BAD_TYPE = re.compile(r"^argument (\S+): invalid (int|float) value: (.*)$")
+_TYPE_WORDS = {"int": "an integer", "float": "a number"}
+
+
+def _with_allowed(message: str) -> str:
+    """argparse's "argument --jobs: invalid int value: 'abc'" as the project's one line:
+    the option, the value and what is allowed."""
+    m = _BAD_TYPE.match(message)
+    if not m:
+        return message
+    kind = _TYPE_WORDS[m.group(2)]
+    return f"{m.group(1)} {m.group(3)} is not {kind}; allowed: {kind}"
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -129,8 +146,26 @@ def joined_minus_values(argv: list[str]) -> list[str]:
 
 
 def main(argv: list[str] | None = None) -> int:
+    try:
+        return _main(argv)
+    except KeyboardInterrupt:  # Ctrl-C while the commands load (their imports take seconds)
+        print("birdsim: interrupted", file=sys.stderr)
+        return 130
+
+
+def _main(argv: list[str] | None) -> int:
     argv = joined_minus_values(sys.argv[1:] if argv is None else list(argv))
-    args = forget_given(build_parser().parse_args(argv))
+    parser = build_parser()
+    args, extras = parser.parse_known_args(argv)
+    if extras:  # the subcommand's name and its help, not "birdsim: error: ..."
+        sub = getattr(args, f"{args.command}_command", None)  # tables build, bird new
+        command = f"{args.command} {sub}" if sub else args.command
+        parser.exit(
+            2,
+            f"birdsim {command}: error: unrecognized arguments: {' '.join(extras)}; "
+            f"allowed: the options `birdsim {command} --help` lists\n",
+        )
+    args = forget_given(args)
     try:
         return int(args.func(args) or 0)
     except BirdsimError as exc:

@@ -16,6 +16,18 @@ and their mistakes (each test fails on the code before its fix).
 * ``tables --help`` names its four subcommands (it said three and named a module);
 * ``render LOG.npz`` refuses --model (another), --bird, --table, --kinematic as export does;
 * ``--gust -3:1:0:0`` gets the gust's own message (argparse said "expected one argument").
+* ``validate --out DIR`` writes its page (a KeyError at the span-ratio trend row);
+* ``--legs``/``--strict`` with a flight log (render, export), and every free-flight option
+  with ``--kinematic`` (render, export), are refused in one line (they were ignored);
+* an unknown model names ``--model`` in validate and ``MODEL`` in params; validate's
+  ``--bird`` takes a shipped bird's name; an unknown option names the subcommand and its
+  ``--help`` (it said "birdsim: error: unrecognized arguments");
+* an option's value of the wrong type (``--jobs abc``) says what is allowed;
+* a flight log given as a table is named as given (it named a ``.json`` never typed);
+* a refused ``export`` prints only its error (the time base came first), and BVH of the
+  base model is refused before the flight (it was refused after flying it);
+* Ctrl-C while the commands load is one line and exit 130 (it was a traceback);
+* a flock flight shorter than two wingbeats prints no "nan" (it said "RMS nan").
 """
 
 from __future__ import annotations
@@ -223,3 +235,159 @@ def test_a_value_starting_with_a_minus_sign_reaches_its_option(capsys) -> None:
         "-x",
     ]
     assert joined_minus_values(["--gust=-3:1", "-.5:1"]) == ["--gust=-3:1", "-.5:1"]
+
+
+def test_validate_writes_its_page_with_the_span_ratio_trend(tmp_path, capsys):
+    """``birdsim validate --out DIR`` (the README's command): the span-ratio trend row is
+    scored in the table; the kinematics figure draws only the trends it has a curve for
+    (before: KeyError 'span_ratio_slope', a traceback and no page)."""
+    from birdsim.validation.measurements import default_path
+
+    src = default_path().read_text().splitlines()
+    keep = [src[0]] + [
+        line for line in src[1:] if line.startswith(("TD96_speed_max", "TD96_span_ratio_trend"))
+    ]
+    data = tmp_path / "trend.csv"
+    data.write_text("\n".join(keep) + "\n")
+    out = tmp_path / "page"
+    code, _, err = _run(["validate", "--data", str(data), "--out", str(out)], capsys)
+    assert code == 0, err
+    assert (out / "kinematics.png").is_file() and "TD96_span_ratio_trend" in (
+        out / "scorecard.json"
+    ).read_text()
+
+
+@pytest.mark.parametrize(
+    "argv, text",
+    [
+        (["export", "LOG", "--format", "csv", "--out", "x.csv", "--legs"], "--legs does not apply"),
+        (["export", "LOG", "--format", "csv", "--out", "x.csv", "--strict"], "--strict does not"),
+        (["render", "LOG", "--still", "s.png", "--legs"], "--legs does not apply to a flight log"),
+        (["render", "LOG", "--still", "s.png", "--strict"], "--strict does not apply"),
+        (
+            ["export", "cruise", "--kinematic", "--format", "csv", "--out", "x.csv", "--legs"],
+            "--legs needs free flight; allowed: omit --legs with --kinematic",
+        ),
+        (
+            ["export", "cruise", "--kinematic", "--format", "csv", "--out", "x.csv", "--strict"],
+            "--strict needs free flight",
+        ),
+        (
+            ["render", "cruise", "--kinematic", "--still", "s.png", "--gust", "3:1:0:0.1"],
+            "--gust needs free flight",
+        ),
+        (["render", "take-off", "--kinematic", "--still", "s.png", "--legs"], "--legs needs free"),
+    ],
+)
+def test_a_free_flight_option_is_refused_where_nothing_is_flown(
+    argv, text, cruise_log, tmp_path, monkeypatch, capsys
+):
+    """A flight log was flown already, ``--kinematic`` flies nothing: ``--legs``,
+    ``--strict`` (and, for render's playback, ``--gust``...) were silently ignored."""
+    monkeypatch.chdir(tmp_path)
+    argv = [cruise_log if a == "LOG" else a for a in argv]
+    code, out, err = _run(argv, capsys)
+    assert code == 2 and len(err) == 1, err
+    assert text in err[0] and out == "" and not list(tmp_path.iterdir()), err[0]
+
+
+@pytest.mark.parametrize(
+    "argv, text",
+    [
+        (["validate", "--model", "M3"], "birdsim validate: error: --model 'M3' is unknown;"),
+        (["params", "M4"], "birdsim params: error: MODEL 'M4' is unknown; allowed: base, m1"),
+        (
+            ["validate", "--bird", "Pigeon"],
+            "--bird 'Pigeon' does not exist; allowed: a readable TOML file or a shipped bird (pigeon",
+        ),
+        (
+            ["examples", "--json"],
+            "birdsim examples: error: unrecognized arguments: --json; allowed: the options "
+            "`birdsim examples --help` lists",
+        ),
+        (["fly", "cruise", "--log", "c.npz"], "birdsim fly: error: unrecognized arguments: --log"),
+        (["tables", "info", "t.npz", "--x"], "birdsim tables info: error: unrecognized arguments"),
+    ],
+)
+def test_a_mistake_names_the_command_and_the_argument(argv, text, tmp_path, monkeypatch, capsys):
+    """Before: "model 'M3' is unknown" (no flag), validate's --bird took no shipped name
+    (every other --bird does), and an unknown option said "birdsim: error: ..." without
+    the subcommand or where to look."""
+    monkeypatch.chdir(tmp_path)
+    code, out, err = _run(argv, capsys)
+    assert code == 2 and len(err) == 1 and out == "", err
+    assert text in err[0], err[0]
+
+
+def test_validate_takes_a_shipped_birds_name(tmp_path, capsys):
+    """``--bird pigeon`` from any folder, as every other command's --bird (the refusal
+    that follows is the data file's, checked after the bird)."""
+    code, _, err = _run(["validate", "--bird", "pigeon", "--data", str(tmp_path / "m.csv")], capsys)
+    assert code == 2 and len(err) == 1 and "--data" in err[0], err
+
+
+@pytest.mark.parametrize(
+    "argv, text",
+    [
+        (["tables", "build", "--model", "m3", "--jobs", "abc"], "--jobs 'abc' is not an integer"),
+        (["crosscheck", "--samples", "1.5"], "--samples '1.5' is not an integer; allowed: an"),
+        (["tables", "build", "--model", "m3", "--relax", "x"], "--relax 'x' is not a number;"),
+    ],
+)
+def test_an_option_of_the_wrong_type_says_what_is_allowed(argv, text, capsys):
+    """Before: argparse's "argument --jobs: invalid int value: 'abc'" (no 'allowed')."""
+    code, out, err = _run(argv, capsys)
+    assert code == 2 and len(err) == 1 and text in err[0] and "allowed" in err[0], err
+
+
+def test_a_flight_log_given_as_a_table_is_named(cruise_log, capsys):
+    """``tables info LOG.npz``: the line names the file given and says a log is not a
+    table (before: "table file 'c.json' does not exist", a file the user never named)."""
+    code, out, err = _run(["tables", "info", cruise_log], capsys)
+    assert code == 2 and len(err) == 1, err
+    assert f"table file {cruise_log!r} has no 'c.json' beside it" in err[0], err[0]
+    assert "a flight log is not a table" in err[0]
+
+
+@pytest.mark.parametrize(
+    "flags, text",
+    [
+        (["--format", "bvh", "--out", "b.bvh", "--model", "base"], "--format bvh cannot carry"),
+        (["--format", "bvh", "--out", "b.bvh", "--kinematic", "--model", "base"], "heave slide"),
+        (["--format", "csv", "--out", "x.csv", "--seconds", "5000"], "wingbeats of flight"),
+        (["--format", "csv", "--out", "x.csv", "--kinematic", "--seconds", "5000"], "(0, 3600]"),
+    ],
+)
+def test_a_refused_export_prints_only_its_error(flags, text, tmp_path, monkeypatch, capsys):
+    """As render (above): before, the time base was printed on stdout before the refusal,
+    and the base model's BVH was refused only after its whole flight was flown."""
+    monkeypatch.chdir(tmp_path)
+    code, out, err = _run(["export", "cruise", *flags], capsys)
+    assert code == 2 and len(err) == 1 and text in err[0], err
+    assert out == "" and not list(tmp_path.iterdir()), out
+
+
+def test_ctrl_c_while_the_commands_load_is_one_line(monkeypatch, capsys):
+    """Ctrl-C in the first seconds (building the parser imports the presets, compiled by
+    numba) printed a 60-line traceback; now one line and exit 130, as during the work."""
+    import birdsim.cli as cli
+
+    def interrupted() -> argparse.ArgumentParser:
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(cli, "build_parser", interrupted)
+    code, out, err = _run(["tables", "build", "--model", "m3"], capsys)
+    assert code == 130 and err == ["birdsim: interrupted"] and out == "", err
+
+
+def test_a_short_flock_flight_prints_no_nan(tmp_path, capsys):
+    """A flock file of 2 s (0.3 wingbeats of the seed bird) printed "worst path RMS nan
+    semispan"; the JSON says null, the line now says why there is no figure."""
+    src = tmp_path / "two.toml"
+    src.write_text(
+        'path = "cruise"\nseconds = 2.0\n'
+        "[[bird]]\noffset = [0.0, 0.0, 0.0]\n[[bird]]\noffset = [0.0, 2.0, 0.0]\n"
+    )
+    code, out, err = _run(["fly", str(src)], capsys)
+    assert code == 0, err
+    assert "nan" not in out and "no path RMS (the flight ends within its first 2" in out, out

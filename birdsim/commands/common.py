@@ -181,6 +181,8 @@ def render_log_flags(args: argparse.Namespace) -> tuple[tuple[str, object], ...]
         ("--set", args.set),
         ("--table", args.table),
         ("--kinematic", args.kinematic),
+        ("--legs", args.legs),  # the log's flight was flown (or not) with legs already
+        ("--strict", args.strict),  # saturation is judged when a flight is flown
     )
 
 

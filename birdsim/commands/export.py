@@ -10,8 +10,8 @@ import argparse
 import time
 from pathlib import Path
 
-from birdsim.commands.common import PRESET_LIST, add_bird_arguments, bird_from_args
-from birdsim.commands.render_flight import add_flight_arguments
+from birdsim.commands.common import MODEL_LIST, PRESET_LIST, add_bird_arguments, bird_from_args
+from birdsim.commands.render_flight import add_flight_arguments, refuse_with_kinematic
 from birdsim.errors import BirdsimError, limits_text, magnitude_ok
 
 
@@ -39,7 +39,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--model",
         default=None,
-        help="kinematic model for a manoeuvre (default: the demo model m3 in free flight, m4 with --kinematic; a log names its own)",
+        help=f"kinematic model for a manoeuvre: {MODEL_LIST} (default: the demo model m3 in free flight, m4 with --kinematic; a log names its own)",
     )
     p.add_argument(
         "--table",
@@ -106,11 +106,15 @@ def run(args: argparse.Namespace) -> int:
 
     check_time_flags(args.beat_rate, args.slow_motion)
 
-    def rate_for(bird) -> float:  # the time base of birdsim render; printed
+    def time_base(bird) -> tuple[float, str]:  # the time base of birdsim render, its line
         from birdsim.physics.bird import Bird
 
         rate, words = beat_rate_for(bird or Bird(), args.beat_rate, args.slow_motion)
-        print(f"birdsim export: {describe(rate, words, fps)}", flush=True)
+        return rate, f"birdsim export: {describe(rate, words, fps)}"
+
+    def rate_for(bird) -> float:  # printed after every check, before the work
+        rate, line = time_base(bird)
+        print(line, flush=True)
         return rate
 
     metres = _positive("--metres-per-unit", args.metres_per_unit)
@@ -126,9 +130,10 @@ def run(args: argparse.Namespace) -> int:
                 "allowed: a new path, or --force to overwrite"
             )
     if args.format == "bvh":
-        from birdsim.export.bvh import require_bvh
+        from birdsim.export.bvh import check_bvh_model, require_bvh
 
         require_bvh()
+        check_bvh_model(args.model)  # before the flight, not after it
     check_writable(out, args.force)
     wall0 = time.perf_counter()
     if args.source.lower().endswith(".npz"):
@@ -143,6 +148,8 @@ def run(args: argparse.Namespace) -> int:
             ("--open-loop", args.open_loop),
             ("--attitude", args.attitude),
             ("--kinematic", args.kinematic),
+            ("--legs", args.legs),
+            ("--strict", args.strict),
         )
         refuse_for_a_log(for_a_log, "", None)
         from birdsim.flight.flock_log import is_flock_log
@@ -153,6 +160,8 @@ def run(args: argparse.Namespace) -> int:
             return export_flock_log(args, fps, rate_for, metres)
         log = read_flight_log(args.source)
         refuse_for_a_log((), str(log["model"]), args.model)
+        if args.format == "bvh":
+            check_bvh_model(str(log["model"]))
         frames = frames_from_log(
             log,
             fps=fps,
@@ -175,7 +184,7 @@ def run(args: argparse.Namespace) -> int:
         )
         bird_and_table = flight_bird_and_table(args, model)  # --bird and --set, as flown
         bird = bird_and_table[0]
-        beat_rate = rate_for(bird)
+        beat_rate, time_base_line = time_base(bird)
         per_s = time_per_second(bird, beat_rate)
         if seconds is None:
             seconds = float(reference.duration_beats) * bird.period / per_s
@@ -185,6 +194,7 @@ def run(args: argparse.Namespace) -> int:
             raise BirdsimError(
                 f"--seconds {args.seconds} is {beats:g} wingbeats of flight; allowed: at most {MAX_BEATS:g} wingbeats"
             )
+        print(time_base_line, flush=True)
         log = fly_reference(
             reference,
             model,
@@ -207,10 +217,7 @@ def run(args: argparse.Namespace) -> int:
         from birdsim.flight.manoeuvre import get_manoeuvre
         from birdsim.physics.kinematics import get_model
 
-        if args.gust or args.open_loop or args.attitude:
-            raise BirdsimError(
-                "--gust/--open-loop/--attitude need free flight; allowed: omit them with --kinematic"
-            )
+        refuse_with_kinematic(args)
         manoeuvre = get_manoeuvre(args.source)
         model = get_model(args.model or "m4").name
         from birdsim.tables.shipped import table_folder
@@ -220,16 +227,18 @@ def run(args: argparse.Namespace) -> int:
         bird = bird_from_args(args) if (args.bird or args.set) else None
         if bird is not None:
             require_bird(table, bird, table_path)
-        frames = from_playback(
+        beat_rate, time_base_line = time_base(bird)
+        frames = from_playback(  # checks --seconds; fast (no simulation)
             manoeuvre,
             table,
             bird=bird,
             model=model,
             fps=fps,
-            beat_rate=rate_for(bird),
+            beat_rate=beat_rate,
             seconds=seconds,
             metres_per_unit=metres,
         )  # type: ignore[arg-type]
+        print(time_base_line, flush=True)
     path = export.write(frames, args.format, out)
     size = path.stat().st_size
     print(

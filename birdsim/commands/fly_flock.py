@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import os
 import sys
 import time
@@ -89,9 +90,15 @@ def run_flock(args: argparse.Namespace, source: str, seconds: float | None) -> i
         print(json.dumps(finite_or_none(info), indent=2, allow_nan=False))
     else:
         sep = info["min_separation_semispans"]
+        rms = info["worst_rms_error_after_start_semispans"]
         print(
             f"flew flock {flock.name} ({info['n_birds']} birds, {info['model']}): "
-            f"{info['seconds']:.3g} s, worst path RMS {info['worst_rms_error_after_start_semispans']:.3g} semispan, "
+            f"{info['seconds']:.3g} s, "
+            + (  # after the first two wingbeats, as `birdsim fly` says it (nan: none flown)
+                f"worst path RMS {rms:.3g} semispan, "
+                if math.isfinite(rms)
+                else "no path RMS (the flight ends within its first 2 wingbeats), "
+            )
             + (f"closest two birds {sep:.3g} semispan, " if sep is not None else "")
             + f"{info['saturated_samples']} saturated sample(s), {wall:.1f} s wall"
             + (f"; wrote {out}" if out else "")

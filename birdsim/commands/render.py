@@ -18,7 +18,12 @@ from birdsim.commands.common import (
     require_bird,
     slug,
 )
-from birdsim.commands.render_flight import add_flight_arguments, is_log, run_flight
+from birdsim.commands.render_flight import (
+    add_flight_arguments,
+    is_log,
+    refuse_with_kinematic,
+    run_flight,
+)
 from birdsim.errors import BirdsimError
 from birdsim.render.gl import GL_CHOICES
 from birdsim.render.options import FPS_ALLOWED, SECONDS_ALLOWED
@@ -226,6 +231,7 @@ def run(args: argparse.Namespace) -> int:
         return 0
     if is_log(args.manoeuvre) or not args.kinematic:  # free flight (the default) or a flight log
         return run_flight(args, _options)
+    refuse_with_kinematic(args)
     manoeuvre = get_manoeuvre(args.manoeuvre)
     model = get_model(args.model or "m4").name
     options = _options(args)

@@ -60,6 +60,26 @@ def add_flight_arguments(p: argparse.ArgumentParser) -> None:
     )
 
 
+def free_flight_flags(args: argparse.Namespace) -> tuple[tuple[str, object], ...]:
+    """The options of :func:`add_flight_arguments` that only a flight flown now takes
+    (flag, value): a flight log and ``--kinematic`` refuse them."""
+    return (
+        ("--gust", args.gust),
+        ("--open-loop", args.open_loop),
+        ("--legs", args.legs),
+        ("--attitude", args.attitude),
+        ("--strict", args.strict),
+    )
+
+
+def refuse_with_kinematic(args: argparse.Namespace) -> None:
+    """One line for the first free-flight option given with ``--kinematic`` (it was
+    silently ignored by the prescribed playback)."""
+    for flag, value in free_flight_flags(args):
+        if value:
+            raise BirdsimError(f"{flag} needs free flight; allowed: omit {flag} with --kinematic")
+
+
 def is_log(name: str) -> bool:
     return Path(name).suffix.lower() == ".npz"
 

@@ -8,6 +8,8 @@ import argparse
 import json
 from pathlib import Path
 
+from birdsim.commands.common import MODEL_LIST
+
 
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser(
@@ -18,12 +20,12 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--model",
         default="m3",
-        help="kinematic model (default m3: its flap reaches the pigeon's amplitudes)",
+        help=f"kinematic model: {MODEL_LIST} (default m3: its flap reaches the pigeon's amplitudes)",
     )
     p.add_argument(
         "--bird",
         metavar="FILE.toml",
-        help="bird file with mass and gravity (default: models/pigeon.toml)",
+        help="bird file with mass and gravity, or a shipped bird's name (pigeon; default: models/pigeon.toml)",
     )
     p.add_argument(
         "--polar",
@@ -48,13 +50,16 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from birdsim.commands.common import bird_file, flag_names
     from birdsim.physics.kinematics import get_model
     from birdsim.validation.measurements import load_measurements
     from birdsim.validation.page import check_page_folder, write_page
     from birdsim.validation.run import load_flying_bird, scorecard_text, validate
 
     get_model(args.model)  # unknown model: one line before any work
-    bird = load_flying_bird(args.bird, args.polar)
+    with flag_names({"path=": "--bird "}):  # a shipped bird's name, as every --bird takes
+        path = bird_file(args.bird) if args.bird else None
+    bird = load_flying_bird(path, args.polar)
     ms = load_measurements(args.data)
     if args.out:
         check_page_folder(Path(args.out), args.force)

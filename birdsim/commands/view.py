@@ -14,7 +14,7 @@ import argparse
 import math
 from pathlib import Path
 
-from birdsim.commands.common import FLOCK_LIST, PRESET_LIST
+from birdsim.commands.common import FLOCK_LIST, MODEL_LIST, PRESET_LIST
 from birdsim.errors import BirdsimError
 
 
@@ -36,7 +36,9 @@ def register(sub: argparse._SubParsersAction) -> None:
         metavar="N",
         help="frames per second of playback at 1x, 1 to 240 (default 60; at least 24 per wingbeat)",
     )
-    p.add_argument("--model", default=None, help="kinematic model for a manoeuvre (default m3)")
+    p.add_argument(
+        "--model", default=None, help=f"kinematic model for a manoeuvre: {MODEL_LIST} (default m3)"
+    )
     p.add_argument(
         "--bird",
         metavar="FILE.toml",

@@ -108,6 +108,15 @@ def require_bvh() -> None:
         ) from None
 
 
+def check_bvh_model(model: str | None) -> None:
+    """Refuse the base model (its heave slide has no BVH channel) in one line; ``birdsim
+    export`` asks before it flies."""
+    if model == "base":
+        raise ExportError(
+            "--format bvh cannot carry the base model's heave slide (BVH moves only the root); allowed: --model m1..m4, or --format usd/csv"
+        )
+
+
 def build_bvh(frames: FrameSequence):  # -> pybvh.Bvh
     """The :class:`pybvh.Bvh` of ``frames`` (skeleton and motion; see the module docstring).
 
@@ -118,10 +127,7 @@ def build_bvh(frames: FrameSequence):  # -> pybvh.Bvh
     from pybvh import Bvh
     from pybvh.bvhnode import BvhEndSite, BvhJoint, BvhRoot
 
-    if frames.model == "base":
-        raise ExportError(
-            "--format bvh cannot carry the base model's heave slide (BVH moves only the root); allowed: --model m1..m4, or --format usd/csv"
-        )
+    check_bvh_model(frames.model)
     names, offsets, rots, root_pos = local_transforms(frames)
     scale = frames.metres_per_unit
     root = BvhRoot("root", offset=[0.0, 0.0, 0.0], pos_channels="XYZ", rot_channels=ORDERS["root"])

@@ -118,7 +118,7 @@ def build_table(
         out: write the table there (``.npz`` + ``.json``) before the checkpoints are
             removed, so that a failed write loses nothing.
         force: overwrite an existing ``out``.
-        notify: receives one-line notes (checkpoints discarded and why).
+        notify: receives one-line notes (checkpoints discarded and why, or reused).
         executor_name: how the provenance names a given ``executor`` (e.g. "dask local:2").
     Returns:
         The table (provenance in ``meta``).
@@ -135,6 +135,8 @@ def build_table(
     ckpt = Checkpoints(Path(checkpoint_dir) if checkpoint_dir else None, cfg.digest(), cfg.stamp())
     if ckpt.discarded and notify is not None:
         notify(ckpt.discarded)
+    elif ckpt.kept and notify is not None:  # a resumed build says so
+        notify(f"resuming: {ckpt.kept} finished part(s) in {str(checkpoint_dir)!r} are reused")
     ncells = int(np.prod(g.shape))
     passes = 1 + (1 + (g.climb is not None) if cfg.settings.v_passes else 0)
     bar = None

@@ -44,6 +44,7 @@ class Checkpoints:
     ) -> None:
         self.folder = folder
         self.discarded: str | None = None
+        self.kept = 0  # finished parts of an earlier build of this configuration, reused
         if folder is None:
             return
         stamp_file = folder / "config.sha"
@@ -69,6 +70,8 @@ class Checkpoints:
                         "they are discarded and the build starts afresh"
                     )
                 shutil.rmtree(folder)
+            else:
+                self.kept = sum(1 for p in folder.iterdir() if p.suffix == ".npz")
         folder.mkdir(parents=True, exist_ok=True)
         stamp_file.write_text(digest + "\n" + json.dumps(stamp or {}, sort_keys=True) + "\n")
 

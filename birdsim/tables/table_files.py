@@ -95,6 +95,11 @@ def read_table_files(path: str | Path) -> tuple[dict[str, np.ndarray], dict[str,
             do not belong together (checksum).
     """
     npz_path, json_path = table_paths(path)
+    if npz_path.is_file() and not json_path.is_file():  # e.g. a flight log of `birdsim fly`
+        raise TableError(
+            f"table file {str(npz_path)!r} has no {json_path.name!r} beside it; allowed: a table "
+            "written by `birdsim tables build` (its .npz and .json together; a flight log is not a table)"
+        )
     for p in (npz_path, json_path):
         if not p.is_file():
             raise TableError(

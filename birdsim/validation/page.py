@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from birdsim.errors import BirdsimError
-from birdsim.io import write_atomic
+from birdsim.io import check_output, write_atomic
 from birdsim.report.plots import pyplot, save_png
 from birdsim.validation.scorecard import AGREE, ROUGH, Row
 from birdsim.validation.trim import TrimSweep
@@ -48,6 +48,8 @@ def check_page_folder(out: Path, force: bool) -> None:
         raise BirdsimError(
             f"--out {str(out)!r} holds {existing[0]} already; allowed: a new folder, or --force to overwrite"
         )
+    # the folder made and written into (before the validation), or one line
+    check_output(out / PAGE_FILES[0], True, "--out")
 
 
 def _power_figure(
@@ -137,6 +139,15 @@ def _power_figure(
     return fig
 
 
+#: The trends the kinematics figure draws (a trend of another quantity, such as the span
+#: ratio, is scored in the table only).
+_PLOTTED_TRENDS = {
+    "amplitude_slope": "amplitude",
+    "body_angle_slope": "body angle",
+    "stroke_plane_slope": "stroke plane",
+}
+
+
 def _kinematics_figure(sweep: TrimSweep, rows: Sequence[Row], title: str):  # noqa: ANN202
     plt = pyplot()
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.5))
@@ -164,15 +175,11 @@ def _kinematics_figure(sweep: TrimSweep, rows: Sequence[Row], title: str):  # no
     notes: dict[int, list[str]] = {0: [], 1: []}
     for r in rows:
         m = r.measurement
-        if m.kind == "trend":
+        if m.kind == "trend" and m.compare in _PLOTTED_TRENDS:  # the span ratio: the table only
             ax = a1 if m.compare == "amplitude_slope" else a2
             ax.axvspan(m.speed_m_s or 0.0, m.speed_to_m_s or 0.0, color="0.93")
             arrow = "decreases" if m.value < 0 else "increases"
-            what = {
-                "amplitude_slope": "amplitude",
-                "body_angle_slope": "body angle",
-                "stroke_plane_slope": "stroke plane",
-            }[m.compare]
+            what = _PLOTTED_TRENDS[m.compare]
             notes[0 if ax is a1 else 1].append(
                 f"measured {what} {arrow} with speed ({m.speed_m_s:g}-{m.speed_to_m_s:g} m/s, {m.author} {m.year}): birdsim {r.verdict.split(' (')[0]}"
             )
