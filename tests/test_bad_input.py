@@ -355,7 +355,7 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("py/get_manoeuvre-unknown", lambda w: get_manoeuvre("loop"), "manoeuvre 'loop' is unknown"),
     ("py/load_manoeuvre-missing", lambda w: load_manoeuvre(w / "nope.toml"), "does not exist"),
     ("py/load_manoeuvre-malformed", lambda w: load_manoeuvre(w / "malformed.toml"), "is not valid TOML"),
-    ("py/load_manoeuvre-no-keyframes", lambda w: load_manoeuvre(w / "man_empty.toml"), "give either [[keyframe]] tables or one [demands] table"),
+    ("py/load_manoeuvre-no-keyframes", lambda w: load_manoeuvre(w / "man_empty.toml"), "has no [[keyframe]] table and no [demands] table; allowed: either [[keyframe]] tables or one [demands] table"),
     ("py/load_manoeuvre-speed-huge", lambda w: load_manoeuvre(w / "man_huge_v.toml"), "keyframe 1 V=1e+300 is invalid"),
     ("py/Manoeuvre-force-huge", lambda w: Manoeuvre("m", (Keyframe(0.0, 1e300, -0.3, 0.0, 6.0),), 1.0), "keyframe 1 Fx=1e+300 is invalid"),
     ("py/get_flight-path-huge", lambda w: get_flight(str(w / "path_huge_v.toml")), "keyframe 2 V=1e+300 is invalid"),

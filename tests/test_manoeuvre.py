@@ -124,7 +124,7 @@ def test_user_file_both_forms_agree(tmp_path):
         ("[[keyframe]]\nt = 0\nFx = 'a'\nFz = 0\nV = 0\n", "not a finite number"),
         ("speed = 3\n[[keyframe]]\nt = 0\nFx = 0\nFz = 0\nV = 0\n", "'speed' is unknown"),
         ("[[keyframe]]\nt = 0\nFx = 0\nFz = 0\nV = 0\nwing = 1\n", "'wing' is unknown"),
-        ("name = 'x'\n", "neither"),
+        ("name = 'x'\n", "no [[keyframe]] table and no [demands] table"),
         ("[demands]\nt = [0, 1]\nFx = [0]\nFz = [0, 0]\nV = [0, 0]\n", "one length"),
         # a scalar column used to be left out of the message, which listed only t, Fx, Fz
         (
@@ -132,6 +132,8 @@ def test_user_file_both_forms_agree(tmp_path):
             "[demands] V=0.9 is not an array",
         ),
         ("[[keyframe\n", "not valid TOML"),
+        # ... and says what is allowed instead (a file of another kind: a .bvh, a log)
+        ("[[keyframe\n", "allowed: hover, cruise"),
         # a huge time would make playback sample ~1e11 instants (MemoryError traceback before the fix)
         ("[[keyframe]]\nt = 1e9\nFx = 0\nFz = 0\nV = 0\n", "t <= 10000 wingbeats"),
         (

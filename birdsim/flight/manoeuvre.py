@@ -208,6 +208,22 @@ def get_manoeuvre(name_or_path: str) -> Manoeuvre:
     )
 
 
+def read_manoeuvre_toml(p: Path, presets: Any) -> dict[str, Any]:
+    """The TOML of a manoeuvre or path file ``p``; a missing, unreadable or non-TOML file
+    is one line naming it and what is allowed (``presets``: the names a source may be
+    instead)."""
+    arg = f"manoeuvre file {str(p)!r}"
+    allowed = f"allowed: {', '.join(presets)} or a readable .toml file"
+    try:
+        return tomllib.loads(p.read_text())
+    except FileNotFoundError:
+        raise ManoeuvreError(f"{arg} does not exist; {allowed}") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise ManoeuvreError(f"{arg} cannot be read: {exc}; {allowed}") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise ManoeuvreError(f"{arg} is not valid TOML ({exc}); {allowed}") from None
+
+
 def load_manoeuvre(path: str | Path) -> Manoeuvre:
     """Read a manoeuvre TOML file.  Two forms (times in wingbeats)::
 
@@ -230,16 +246,7 @@ def load_manoeuvre(path: str | Path) -> Manoeuvre:
     """
     p = Path(path)
     arg = f"manoeuvre file {str(p)!r}"
-    try:
-        data = tomllib.loads(p.read_text())
-    except FileNotFoundError:
-        raise ManoeuvreError(
-            f"{arg} does not exist; allowed: {', '.join(PRESETS)} or a readable .toml file"
-        ) from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise ManoeuvreError(f"{arg} cannot be read: {exc}") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise ManoeuvreError(f"{arg} is not valid TOML: {exc}") from None
+    data = read_manoeuvre_toml(p, PRESETS)
     known = {"name", "description", "duration", "perch", "keyframe", "demands"}
     unknown = sorted(set(data) - known)
     if unknown:
@@ -248,7 +255,8 @@ def load_manoeuvre(path: str | Path) -> Manoeuvre:
         )
     if ("keyframe" in data) == ("demands" in data):
         raise ManoeuvreError(
-            f"{arg}: give either [[keyframe]] tables or one [demands] table, not {'both' if 'keyframe' in data else 'neither'}"
+            f"{arg}: has {'both [[keyframe]] tables and a [demands] table' if 'keyframe' in data else 'no [[keyframe]] table and no [demands] table'}; "
+            "allowed: either [[keyframe]] tables or one [demands] table"
         )
     rows = data["keyframe"] if "keyframe" in data else _columns_to_rows(arg, data["demands"])
     if not isinstance(rows, list) or not rows:

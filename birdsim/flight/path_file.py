@@ -36,15 +36,16 @@ from pathlib import Path
 from typing import Any
 
 from birdsim.errors import BirdsimError
-from birdsim.flight.manoeuvre import MAX_BEATS, Manoeuvre, ManoeuvreError, load_manoeuvre
+from birdsim.flight.manoeuvre import (
+    MAX_BEATS,
+    Manoeuvre,
+    ManoeuvreError,
+    load_manoeuvre,
+    read_manoeuvre_toml,
+)
 from birdsim.flight.path import FlightPath, PathError, PathKeyframe
 from birdsim.flight.presets import PATH_PRESETS
 from birdsim.mujoco.perches import DEFAULT_SCENE, Perch, Scene, SceneError, check_scene
-
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # pragma: no cover
-    import tomli as tomllib
 
 PATH_KEYS = ("t", "x", "y", "V", "heading", "z", "vx", "vy", "vz", "dV", "turn_rate", "regime")
 FORCE_KEYS = ("Fx", "Fz")
@@ -116,16 +117,7 @@ def load_flight(path: str | Path) -> FlightPath | Manoeuvre:
     """
     p = Path(path)
     arg = f"manoeuvre file {str(p)!r}"
-    try:
-        data = tomllib.loads(p.read_text())
-    except FileNotFoundError:
-        raise ManoeuvreError(
-            f"{arg} does not exist; allowed: {', '.join(PATH_PRESETS)} or a readable .toml file"
-        ) from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise ManoeuvreError(f"{arg} cannot be read: {exc}") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise ManoeuvreError(f"{arg} is not valid TOML: {exc}") from None
+    data = read_manoeuvre_toml(p, PATH_PRESETS)
     rows = data.get("keyframe")
     if (
         "demands" in data
