@@ -141,6 +141,7 @@ class SectionPitch:
         theta = float(np.mean(ref[0] - error_rotvec(quat[idx], ref[0])[:, 1]))
         q = float(np.mean(omega[idx, 1]))
         phi, gam, k = self._gain()
+        model = loop_model(att)  # the last measurement's (unchanged within the step)
         lag_t = self.lag * obs.dt
         if not self.on:  # start at the samples' means, carried on as a free motion; the
             # integral where it holds the attitude loop's integral's acceleration
@@ -148,7 +149,7 @@ class SectionPitch:
             self.f = np.array([0.0, 0.0, -float(att.integral[1]) / k[4]])
             self.on = True
         else:  # predict over the step just flown, then move onto the measured means
-            obs.predict(loop_model(att), att.u, int(round(self.dt / obs.dt)))
+            obs.predict(model, att.u, int(round(self.dt / obs.dt)))
             x = np.array([float(obs.state[0]) - ref[0], 0.0, *self.f])
             self.f = (phi @ x + gam * self.v)[2:]
             if att.saturated:  # anti-windup
@@ -158,7 +159,6 @@ class SectionPitch:
                 obs.shift(theta - obs.hist[-1 - self.lag, 0] + d_q * lag_t, d_q)
         x = np.array([obs.state[0] - ref[0], obs.state[1] - ref[1], *self.f])
         self.v = -float(k @ x)
-        model = loop_model(att)
         demand = model.inertia * (ref[2] + self.v) - model.m0
         demand += model.stiffness * (ref[0] - model.theta_j) - model.d_qq * ref[1]
         return float(obs.state[0]), float(obs.state[1]), demand
