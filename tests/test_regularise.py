@@ -164,3 +164,18 @@ def test_choose_breaks_ties_by_order_not_by_round_off():
     # a duplicate of an earlier candidate is never picked
     dup = np.array([False, False, True])
     assert choose([0.1, 0.1, 0.1], err, 0.1, [(1, 0.5), (1, 0.0), (0, 0.0)], dup, 5e-3, 0.01) == 1
+
+
+def test_the_candidate_memo_changes_no_wingbeat_and_saves_slsqp_runs(pair, monkeypatch):
+    """A cell flagged again in a later round reuses the SLSQP answers of the targets it had
+    before (a candidate is a pure function of its demand and rounded target): the table is
+    bitwise the one rebuilt without the memo, with fewer wingbeat evaluations."""
+    import birdsim.tables.regularise as reg
+
+    _, smooth = pair
+    assert smooth.meta["regularising_pass"]["rounds"] >= 2
+    monkeypatch.setattr(reg.CandidateMemo, "for_cells", lambda self, cells: {})
+    without = build_table(BuildConfig("base", GRID), jobs=1)
+    assert without.params.tobytes() == smooth.params.tobytes()
+    assert without.cost.tobytes() == smooth.cost.tobytes()
+    assert smooth.evaluations.sum() < without.evaluations.sum()

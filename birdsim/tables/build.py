@@ -63,7 +63,7 @@ from birdsim.tables.grid import (
     sub_grid,
 )
 from birdsim.tables.lookup import LookupTable
-from birdsim.tables.regularise import smooth_cells, zigzag_cells
+from birdsim.tables.regularise import CandidateMemo, smooth_cells, zigzag_cells
 from birdsim.tables.runner import _ignore_sigint, _InlineExecutor, _run, _stop_workers
 from birdsim.tables.sweeps import (
     IDLE_WRIST,
@@ -347,6 +347,7 @@ def _regularise(
         "cells_changed": 0,
         "zigzag_cells": [],
     }
+    memo = CandidateMemo()
     for r in range(st.smooth_rounds):
         worked = False
         summary["zigzag_cells"].append(len(zigzag_cells(names, X, ok)))
@@ -362,13 +363,14 @@ def _regularise(
             tasks = {
                 f"smooth_r{r}c{colour}_{k:03d}": (
                     smooth_cells,
-                    (cfg, cells, X, ok, best[tuple(cells.T)], D),
+                    (cfg, cells, X, ok, best[tuple(cells.T)], D, memo.for_cells(cells)),
                 )
                 for k, cells in enumerate(groups)
             }
             done = _run(tasks, executor, ckpt, lambda k: None, 0)
             for name, (_fn, args) in tasks.items():
                 cells, res = args[1], done[name]
+                memo.add(res)
                 idx = tuple(cells.T)
                 summary["cells_resolved"] += len(cells)
                 summary["cells_changed"] += int(np.sum(np.any(res["params"] != X[idx], axis=-1)))

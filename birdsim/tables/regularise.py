@@ -233,6 +233,29 @@ def choose(
     return int(next(i for i in idx if scores[i][1] <= least + STEP_TIE))
 
 
+class CandidateMemo:
+    """The pass's SLSQP answers by (cell, rounded target).  A candidate is a pure
+    function of its cell's demand and its target (the start and the distance cost's
+    anchor), so a cell flagged again in a later round reuses the answers of the targets
+    it had before (bitwise the same; not counted as evaluations again)."""
+
+    def __init__(self) -> None:
+        self._by_cell: dict[tuple[int, ...], dict[bytes, np.ndarray]] = {}
+
+    def for_cells(self, cells: np.ndarray) -> dict[tuple[tuple[int, ...], bytes], np.ndarray]:
+        """The known answers of ``cells`` (m x ndim), keyed by (cell, target bytes)."""
+        out = {}
+        for c in cells:
+            cell = tuple(int(i) for i in c)
+            out.update({(cell, t): x for t, x in self._by_cell.get(cell, {}).items()})
+        return out
+
+    def add(self, result: dict[str, np.ndarray]) -> None:
+        """Remember the new answers of one :func:`smooth_cells` result."""
+        for c, t, x in zip(result["new_cells"], result["new_targets"], result["new_x"]):
+            self._by_cell.setdefault(tuple(int(i) for i in c), {})[t.tobytes()] = x
+
+
 def smooth_cells(
     cfg: BuildConfig,
     cells: np.ndarray,
@@ -240,25 +263,35 @@ def smooth_cells(
     ok: np.ndarray,
     best_cost: np.ndarray,
     demands: np.ndarray,
+    known: dict[tuple[tuple[int, ...], bytes], np.ndarray] | None = None,
 ) -> dict[str, np.ndarray]:
     """One task of the regularising pass: re-choose the wingbeat of each of ``cells``
     (m x ndim indices into the grid) given the table ``X`` (grid x d), the reachable
-    cells ``ok`` and the best cost found so far per listed cell (``best_cost``, m).
+    cells ``ok``, the best cost found so far per listed cell (``best_cost``, m) and the
+    candidates found before (``known``: :meth:`CandidateMemo.for_cells`).
 
     Returns:
         ``params`` (m x d), ``cost`` (the dissertation's cost at n_search of the kept
-        wingbeat), ``best`` (the best cost found, m), ``evaluations`` and ``converged``.
+        wingbeat), ``best`` (the best cost found, m), ``evaluations`` and ``converged``;
+        the new candidates ``new_cells``, ``new_targets``, ``new_x`` (for the memo).
     """
     from birdsim.tables.sweeps import canonical_params
 
     model = get_model(cfg.model)
     st = cfg.settings
-    names = model.param_names
+    names, d = model.param_names, X.shape[-1]
     cells = [tuple(int(i) for i in c) for c in cells]
-    owner, results = [], []
+    known = known or {}
+    owner, results, fresh = [], [], []
     for m, cell in enumerate(cells):
         for target in _targets(cell, X, ok, st.smooth_median):
-            results.append(_candidate(cfg, model, tuple(demands[cell]), target))
+            x = known.get((cell, target.tobytes()))
+            if x is None:
+                x, e, conv = _candidate(cfg, model, tuple(demands[cell]), target)
+                fresh.append((cell, target, x))
+            else:
+                e, conv = 0, True
+            results.append((x, e, conv))
             owner.append(m)
     pool: list[list[np.ndarray]] = [[X[c].copy()] for c in cells]
     evals = np.zeros(len(cells), dtype=np.int64)
@@ -290,11 +323,15 @@ def smooth_cells(
         "best": best,
         "evaluations": evals,
         "converged": conv,
+        "new_cells": np.array([f[0] for f in fresh], dtype=np.int64).reshape(-1, len(ok.shape)),
+        "new_targets": np.array([f[1] for f in fresh], dtype=float).reshape(len(fresh), d),
+        "new_x": np.array([f[2] for f in fresh], dtype=float).reshape(len(fresh), d),
     }
 
 
 __all__ = [
     "COST_TIE",
+    "CandidateMemo",
     "ZIGZAG_RAD",
     "candidate_costs",
     "choose",
