@@ -76,3 +76,32 @@ def test_slsqp_takes_the_same_path_with_and_without_it(monkeypatch):
     assert lean.iterations == plain.iterations
     np.testing.assert_allclose(lean.x, plain.x, rtol=0, atol=1e-9)
     assert lean.cost == pytest.approx(plain.cost, abs=1e-12)
+
+
+@pytest.mark.parametrize("model", ["base", "m4", "m5"])
+def test_the_one_row_distance_term_is_other_costs_bitwise(model):
+    """The lean path's eq. 93 distance term and its gradient (the regularising pass's
+    candidates) are :func:`other_cost`'s and :func:`other_cost_gradient`'s to the bit, at
+    V = 0 (with the orientation term) and V > 0; and a problem given a PointForces made for
+    its demand point (shared by a cell's candidates) takes bitwise the same SLSQP path."""
+    from birdsim.tables.cost import CostWeights, other_cost, other_cost_gradient
+
+    m = get_model(model)
+    rng = np.random.default_rng(5)
+    for speed in (0.0, 0.6):
+        for _ in range(50):
+            w = CostWeights(distance=float(rng.uniform(0.01, 1.0)))
+            prev, x = rng.uniform(*m.bounds, size=(2, len(m.param_names)))
+            prob = ForceProblem(m, 0.1, -0.2, speed, weights=w, previous=prev)
+            h = other_cost(m, x[None], speed, w, prev)[0]
+            g = other_cost_gradient(m, x[None], speed, w, prev)[0]
+            _, _, h_lean, g_lean = prob._parts_and_jacobian(x)
+            assert prob._other_point(x) == h and h_lean == h
+            assert g_lean.tobytes() == g.tobytes()
+    x0 = np.mean(m.bounds, axis=0)
+    w = CostWeights(distance=0.05)
+    own = slsqp(ForceProblem(m, 0.05, -0.2, 0.6, weights=w, previous=x0), x0)
+    pf = PointForces.create(m, Bird(), 0.6, 0.0, 32)
+    slsqp(ForceProblem(m, -0.1, -0.1, 0.6, point=pf), x0)  # the buffers used before
+    shared = slsqp(ForceProblem(m, 0.05, -0.2, 0.6, weights=w, previous=x0, point=pf), x0)
+    assert shared.x.tobytes() == own.x.tobytes() and shared.cost == own.cost

@@ -357,9 +357,9 @@ def _regularise(
             if len(mids) == 0:
                 continue
             worked = True
-            # tasks of at most SMOOTH_TASK_CELLS cells (the cells of one colour are
-            # independent: how they are grouped does not change the result)
-            groups = np.array_split(mids, -(-len(mids) // SMOOTH_TASK_CELLS))
+            # tasks of at most SMOOTH_TASK_CELLS cells and similar work (the cells of one
+            # colour are independent: how they are grouped does not change the result)
+            groups = memo.groups(mids, X, ok, st.smooth_median, SMOOTH_TASK_CELLS)
             tasks = {
                 f"smooth_r{r}c{colour}_{k:03d}": (
                     smooth_cells,

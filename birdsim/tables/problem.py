@@ -14,6 +14,7 @@ differences in ONE batched call for a plain function.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
@@ -155,6 +156,7 @@ class ForceProblem(Problem):
         n: int = 32,
         evaluator: Callable[..., tuple[np.ndarray, np.ndarray, np.ndarray]] | None = None,
         climb: float = 0.0,
+        point: PointForces | None = None,
     ) -> None:
         self.model = model if isinstance(model, KinematicModel) else get_model(model)
         super().__init__(*self.model.bounds)
@@ -170,7 +172,9 @@ class ForceProblem(Problem):
         self.previous = None if previous is None else np.asarray(previous, dtype=float)
         self.n = n
         self.evaluator = evaluator  # (X, speed) -> (Fx, Fz, P), replaces the cycle evaluation
-        self._point: PointForces | None | bool = False  # made on first use (None: no lean path)
+        # made on first use (None: no lean path); or ``point``, one made for the same model,
+        # bird, speed, climb and n (every call rewrites its buffers, so problems can share it)
+        self._point: PointForces | None | bool = point if point is not None else False
         # other_cost of one row: the orientation term is linear in the pitch
         self._ip = self.model.param_names.index("pitch")
         orient = (
@@ -191,10 +195,12 @@ class ForceProblem(Problem):
         return self._point  # type: ignore[return-value]
 
     def _other_point(self, x: np.ndarray) -> float:
-        """:func:`other_cost` of one row (the orientation term is linear in the pitch)."""
+        """:func:`other_cost` of one row, bitwise (the orientation term is linear in the
+        pitch; the distance term's norm is summed as ``np.linalg.norm`` sums it)."""
         if self.cost_weights.distance > 0 and self.previous is not None:
             return float(
-                other_cost(self.model, x[None], self.speed, self.cost_weights, self.previous)[0]
+                self._orientation * x[self._ip]
+                + self.cost_weights.distance * math.sqrt(_sum_of_squares(x - self.previous))
             )
         return float(self._orientation * x[self._ip])
 
@@ -231,13 +237,14 @@ class ForceProblem(Problem):
             self.evaluations += 1
             vals, jr = pf.gradients(x)
             r = np.array([vals[0] - self.Fx_demand, vals[1] - self.Fz_demand, vals[2]])
+            gh = np.zeros(self.dim)
+            gh[self._ip] = self._orientation
             if self.cost_weights.distance > 0 and self.previous is not None:
-                gh = other_cost_gradient(
-                    self.model, x[None], self.speed, self.cost_weights, self.previous
-                )[0]
-            else:
-                gh = np.zeros(self.dim)
-                gh[self._ip] = self._orientation
+                # other_cost_gradient of one row, bitwise
+                diff = x - self.previous
+                norm = math.sqrt(_sum_of_squares(diff))
+                if norm > 0:
+                    gh += self.cost_weights.distance * (diff / norm)
             return r, jr, self._other_point(x), gh
         X = x[None]
         grad_fn = getattr(self.evaluator, "gradients", None) if self.evaluator is not None else None
@@ -259,6 +266,12 @@ class ForceProblem(Problem):
     def achieved_from(self, r: np.ndarray) -> tuple[float, float, float]:
         """(Fx, Fz, P) from the residuals of one point."""
         return float(r[0] + self.Fx_demand), float(r[1] + self.Fz_demand), float(r[2])
+
+
+def _sum_of_squares(diff: np.ndarray) -> float:
+    """``sum(diff**2)`` of a 1-D row as ``np.linalg.norm(X, axis=-1)`` sums it (the same
+    ufunc reduction over a contiguous axis, hence the same rounding)."""
+    return float(np.add.reduce(diff * diff))
 
 
 def finish(

@@ -52,6 +52,7 @@ import numpy as np
 from birdsim.physics.kinematics import KinematicModel, get_model
 from birdsim.tables.grid import BuildConfig
 from birdsim.tables.optimize import ForceProblem, slsqp
+from birdsim.tables.point import PointForces
 from birdsim.tables.smoothness import ZIGZAG_RAD, effect_mask, zigzags
 
 #: Candidate targets closer than this (rad, max norm) to one already taken are skipped.
@@ -159,7 +160,11 @@ def _targets(
 
 
 def _candidate(
-    cfg: BuildConfig, model: KinematicModel, demand: tuple[float, ...], target: np.ndarray
+    cfg: BuildConfig,
+    model: KinematicModel,
+    demand: tuple[float, ...],
+    target: np.ndarray,
+    point: PointForces | None = None,
 ) -> tuple[np.ndarray, int, bool]:
     fx, fz, v, vc = (tuple(demand) + (0.0,))[:4]
     target = np.clip(target, *model.bounds)
@@ -174,6 +179,7 @@ def _candidate(
         previous=target,
         n=cfg.settings.n_search,
         climb=vc,
+        point=point,
     )
     sol = slsqp(prob, target, maxiter=cfg.settings.maxiter)
     return sol.x, prob.evaluations, sol.converged
@@ -250,6 +256,21 @@ class CandidateMemo:
             out.update({(cell, t): x for t, x in self._by_cell.get(cell, {}).items()})
         return out
 
+    def groups(
+        self, cells: np.ndarray, X: np.ndarray, ok: np.ndarray, median: bool, size: int
+    ) -> list[np.ndarray]:
+        """``cells`` (m x ndim, one colour) in ceil(m / size) tasks of similar work: by
+        descending count of targets without a known answer, dealt round-robin (how the
+        cells of one colour are grouped does not change the result)."""
+        keys = [tuple(int(i) for i in c) for c in cells]
+        fresh = [
+            sum(t.tobytes() not in self._by_cell.get(c, {}) for t in _targets(c, X, ok, median))
+            for c in keys
+        ]
+        order = np.argsort(-np.asarray(fresh), kind="stable")
+        n = -(-len(cells) // size)
+        return [cells[np.sort(order[g::n])] for g in range(n)]
+
     def add(self, result: dict[str, np.ndarray]) -> None:
         """Remember the new answers of one :func:`smooth_cells` result."""
         for c, t, x in zip(result["new_cells"], result["new_targets"], result["new_x"]):
@@ -284,10 +305,15 @@ def smooth_cells(
     known = known or {}
     owner, results, fresh = [], [], []
     for m, cell in enumerate(cells):
+        demand = tuple(demands[cell])
+        point: PointForces | None = None  # one per cell: every candidate's demand point
         for target in _targets(cell, X, ok, st.smooth_median):
             x = known.get((cell, target.tobytes()))
             if x is None:
-                x, e, conv = _candidate(cfg, model, tuple(demands[cell]), target)
+                if point is None:
+                    fx, fz, v, vc = (demand + (0.0,))[:4]
+                    point = PointForces.create(model, cfg.bird, v, vc, st.n_search)
+                x, e, conv = _candidate(cfg, model, demand, target, point)
                 fresh.append((cell, target, x))
             else:
                 e, conv = 0, True
