@@ -27,11 +27,15 @@ def _load(path: str) -> tuple[dict, dict]:
     return {k: z[k] for k in z.files}, meta
 
 
-def recost(t: dict, meta: dict, samples: int) -> tuple[np.ndarray, np.ndarray]:
-    """(cost, max force miss) of every cell's stored wingbeat."""
+def recost(
+    t: dict, meta: dict, samples: int, weights: CostWeights | None = None
+) -> tuple[np.ndarray, np.ndarray]:
+    """(cost, max force miss) of every cell's stored wingbeat (with the table's own cost
+    weights unless ``weights`` are given)."""
     model = get_model(meta["model"])
     bird = Bird.from_dict(meta["bird"]) if "bird" in meta else Bird()
-    weights = CostWeights(**meta["cost_weights"]) if "cost_weights" in meta else CostWeights()
+    if weights is None:
+        weights = CostWeights(**meta["cost_weights"]) if "cost_weights" in meta else CostWeights()
     axes = [t["axis_Fx"], t["axis_Fz"], t["axis_V"]] + (
         [t["axis_climb"]] if "axis_climb" in t else []
     )
@@ -51,10 +55,17 @@ def main(argv: list[str]) -> int:
     ap.add_argument("new")
     ap.add_argument("--samples", type=int, default=256)
     ap.add_argument("--reach-tol", type=float, default=0.01)
+    ap.add_argument(
+        "--old-weights",
+        action="store_true",
+        help="cost NEW with OLD's cost weights too (e.g. a table built with a token cost, "
+        "compared on the cost without it)",
+    )
     a = ap.parse_args(argv)
     (t0, m0), (t1, m1) = _load(a.old), _load(a.new)
     c0, miss0 = recost(t0, m0, a.samples)
-    c1, miss1 = recost(t1, m1, a.samples)
+    same = CostWeights(**m0.get("cost_weights", {})) if a.old_weights else None
+    c1, miss1 = recost(t1, m1, a.samples, same)
     diff = c1 - c0
     ok0, ok1 = miss0 <= a.reach_tol, miss1 <= a.reach_tol
     worse = diff > 1e-6
@@ -62,6 +73,12 @@ def main(argv: list[str]) -> int:
     print(
         f"mean cost old {c0.mean():.6f} new {c1.mean():.6f}; new - old: mean {diff.mean():+.2e}, "
         f"max {diff.max():+.2e}, min {diff.min():+.2e}"
+    )
+    both = (miss0 <= a.reach_tol) & (miss1 <= a.reach_tol)
+    print(
+        f"over the {int(both.sum())} cells reachable in both: mean old {c0[both].mean():.6f} "
+        f"new {c1[both].mean():.6f} ({diff[both].mean():+.2e}), largest increase "
+        f"{diff[both].max():+.2e}"
     )
     print(
         f"cells costing more than 1e-6 more: {int(worse.sum())}; cheaper by more than 1e-6: {int((diff < -1e-6).sum())}"
