@@ -220,31 +220,53 @@ def step(fb, pres, wind: np.ndarray, record: list | None, every: int) -> bool:
     plan = _plan(fb) if ENABLED else None
     if plan is None or not aero_kernel.supported(fb.cb):
         return False
-    m, cb, h = fb.m, fb.cb, fb.h
-    plan.sites[-1][:] = wind  # m.opt.wind (its view, kept: MjOption makes a new one per read)
-    weight = plan.weight(fb)
     Pq, P = plan.Pq, plan.P
     pres_q = np.ascontiguousarray(pres.qpos[:, Pq])
     pres_v = np.ascontiguousarray(pres.qvel[:, P])
     pres_a = np.ascontiguousarray(pres.qacc[:, P])
     n = pres_q.shape[0]
-    samples = (n + every - 1) // every
-    rec_q = np.empty((samples, m.nq))
-    rec_v = np.empty((samples, m.nv))
-    rec_out = np.empty((samples, 10))
-    fl, ints, frame = plan.aero_arguments(cb)
-    state = np.concatenate([fb.P, fb.X, fb.L])
-    stats = np.array([0.0, 0.0, fb.root_applied_max])
+    args, outs = arguments(fb, plan, wind, n, every)
     installed = mujoco.get_mjcb_passive()
     mujoco.set_mjcb_passive(None)
     try:
         tail = run_steps(
-            *plan.static, pres_q, pres_v, pres_a, Pq.start, P.start, plan.W.start,
-            plan.W.stop, *plan.sites, fl, ints, frame, state, weight, h, fb.total_mass,
-            bool(fb.config.momentum_projection), every, rec_q, rec_v, rec_out, stats,
+            *args[:12], pres_q, pres_v, pres_a, *args[12:], *outs
         )  # fmt: skip
     finally:
         mujoco.set_mjcb_passive(installed)
+    finish(fb, plan, args, outs, tail, n, record, every)
+    return True
+
+
+def arguments(fb, plan: _Plan, wind: np.ndarray, n: int, every: int) -> tuple[tuple, tuple]:
+    """:func:`run_steps`' arguments for ``n`` steps of ``fb`` under ``wind`` (written into
+    ``m.opt.wind``): those before the prescription's three arrays, those after them up to
+    ``every``, and the outputs (rec_q, rec_v, rec_out, stats), made new."""
+    m, cb = fb.m, fb.cb
+    plan.sites[-1][:] = wind  # m.opt.wind (its view, kept: MjOption makes a new one per read)
+    weight = plan.weight(fb)
+    samples = (n + every - 1) // every
+    fl, ints, frame = plan.aero_arguments(cb)
+    state = np.concatenate([fb.P, fb.X, fb.L])
+    stats = np.array([0.0, 0.0, fb.root_applied_max])
+    args = (
+        *plan.static, plan.Pq.start, plan.P.start, plan.W.start, plan.W.stop, *plan.sites,
+        fl, ints, frame, state, weight, fb.h, fb.total_mass,
+        bool(fb.config.momentum_projection), every,
+    )  # fmt: skip
+    outs = (np.empty((samples, m.nq)), np.empty((samples, m.nv)), np.empty((samples, 10)), stats)
+    return args, outs
+
+
+def finish(
+    fb, plan: _Plan, args: tuple, outs: tuple, tail: np.ndarray, n: int, record, every: int
+) -> None:
+    """After :func:`run_steps` made ``n`` steps with :func:`arguments`' ``args`` and
+    ``outs``: the bird's momenta, time, maxima and tail force, the samples appended to
+    ``record`` as the reference appends them; raises where the state is not finite."""
+    cb, h = fb.cb, fb.h
+    rec_q, rec_v, rec_out, stats = outs
+    state = args[-6]
     fb.P, fb.X, fb.L = state[:3].copy(), state[3:6].copy(), state[6:].copy()
     time = fb.time
     times = []
@@ -254,7 +276,7 @@ def step(fb, pres, wind: np.ndarray, record: list | None, every: int) -> bool:
         time += h
     fb.time = time
     fb.root_applied_max = float(stats[2])
-    if ints[aero_kernel.TAIL]:
+    if args[-8][aero_kernel.TAIL]:  # ints
         cb.tail_force_body = tail[:3].copy()
         cb.tail_alpha = float(tail[3])
     if record is not None:
@@ -269,7 +291,12 @@ def step(fb, pres, wind: np.ndarray, record: list | None, every: int) -> bool:
         fb.projection_max = max(fb.projection_max, float(stats[0]), float(stats[1]) * h)
     if not all_finite(plan.static[2], plan.static[3]):
         fb._check_finite()  # raises, naming the time
-    return True
+
+
+def plan(fb) -> _Plan | None:
+    """The compiled loop's fixed arguments for ``fb`` where :func:`usable`, else None."""
+    p = _plan(fb) if ENABLED else None
+    return p if p is not None and aero_kernel.supported(fb.cb) else None
 
 
 def usable(fb, F=None, P=None) -> bool:
@@ -277,4 +304,4 @@ def usable(fb, F=None, P=None) -> bool:
     return ENABLED and _plan(fb) is not None and aero_kernel.supported(fb.cb)
 
 
-__all__ = ["ENABLED", "run_steps", "step", "usable"]
+__all__ = ["ENABLED", "arguments", "finish", "plan", "run_steps", "step", "usable"]
