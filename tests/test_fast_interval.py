@@ -46,6 +46,7 @@ def _intervals(model: str, fused: bool, monkeypatch) -> tuple[list, list, tuple]
                 fb, params + 0.01 * k, t + np.arange(16) * h, t, 16 * h, lft, off, wind, record, 8
             )
             pres_rows.append((pres.params, pres.pitch, pres.params_left, pres.qpos[:, 7:]))
+        assert type(fb.time) is float
         state = (fb.time, fb.P, fb.X, fb.L, fb.root_applied_max, fb.projection_max,
                  fb.d.qpos.copy(), fb.d.qvel.copy(), fb.schedule.filter.x2.copy(),
                  fb.schedule.input_filter.x2.copy(), fb.cb.tail_force_body)  # fmt: skip
@@ -112,3 +113,21 @@ def test_fused_interval_steps_nothing_where_the_step_loop_does_not_apply(monkeyp
         del fb.step_many
         monkeypatch.setattr(fast_loop, "ENABLED", False)
         assert fast_interval._usable(fb) is None
+
+
+def test_sample_times_are_the_step_by_step_sums():
+    """``fast_loop.sample_times``: the times the reference's loop sums one step after the
+    other (``time += h``), bit for bit, over many starts and step sizes (a pairwise or
+    ``t0 + k h`` sum differs in the last bit)."""
+    rng = np.random.default_rng(5)
+    for _ in range(2000):
+        t0, h = float(rng.uniform(0.0, 400.0)), float(rng.uniform(1e-3, 0.1))
+        n, every = int(rng.integers(1, 40)), int(rng.integers(1, 9))
+        times, time = [], t0
+        for k in range(n):
+            if k % every == 0:
+                times.append(time)
+            time += h
+        got, end = fast_loop.sample_times(t0, h, n, every)
+        assert got == times and end == time
+        assert all(type(x) is float for x in got)

@@ -40,12 +40,15 @@ def _interval(
     m, d, dqpos, dqvel, applied, passive, bias, xfrc, M, com_t, xpos_t, xmat_t, pq1,
     pq0, pv0, w0, w1, site_ids, body_ids, site_xpos, site_xmat, areas, fold, wind,
     fl, ints, frame, state, weight, h, mass, project, every, rec_q, rec_v, rec_out, stats,
-    tail,
+    tail, t0, rec_t,
 ):  # fmt: skip
     """``fast_wingbeat``'s kernel (its flags), then, where its rows and the pitch column
     of ``right`` are finite, ``fast_loop``'s steps on the rows' columns ``pq0:pq1`` of
     qpos and ``pv0:`` of qvel and qacc (the tail's last force and angle of attack into
-    ``tail`` (4,)) and bit 8 set in the flags returned."""
+    ``tail`` (4,)), the samples' times into ``rec_t`` and the time after the steps into
+    its last entry (``t0`` plus one ``h`` per step, added one after the other as the
+    reference's loop adds them), and bit 8 (stepped) and 16 (qpos, qvel finite) set in
+    the flags returned."""
     flags = _rows(
         x1, x2, u, ex, gex, tau, tau2, y1, y2, v, ey, gey, sig, sig2, t_rel, dt, n, times,
         present, index, scale, const, affine, omega, plans, axes, kmat, kkmat, qpos0,
@@ -64,11 +67,19 @@ def _interval(
     )  # fmt: skip
     for i in range(4):
         tail[i] = out[i]
-    return flags | 8
+    time = t0
+    j = 0
+    for k in range(qpos.shape[0]):
+        if k % every == 0:
+            rec_t[j] = time
+            j += 1
+        time += h
+    rec_t[j] = time
+    return flags | 8 | (16 if _finite(dqpos, dqvel) else 0)
 
 
 if numba is not None and fast_wingbeat.kernel is not None and fast_loop.run_steps is not None:
-    _rows, _steps = fast_wingbeat.kernel, fast_loop.run_steps
+    _rows, _steps, _finite = fast_wingbeat.kernel, fast_loop.run_steps, fast_loop.all_finite
     kernel = numba.njit(cache=True)(_interval)
 else:  # pragma: no cover
     kernel = None
@@ -104,13 +115,13 @@ def interval(
     rows_args, rows = made
     n = times.shape[0]
     args, outs = fast_loop.arguments(fb, plan, wind, n, every)
-    tail = np.zeros(4)
+    tail, rec_t = np.zeros(4), np.empty(outs[0].shape[0] + 1)
     installed = mujoco.get_mjcb_passive()
     mujoco.set_mjcb_passive(None)
     try:
         flags = kernel(
             *rows_args, *rows, schedule.pitch_index, *args[:12], plan.Pq.stop, *args[12:],
-            *outs, tail,
+            *outs, tail, fb.time, rec_t,
         )  # fmt: skip
     finally:
         mujoco.set_mjcb_passive(installed)
@@ -123,7 +134,8 @@ def interval(
             pres = schedule.prescribe(times, *r, left=lft, shoulder=tuple(shoulder3))
         fb.step_many(pres, wind, record, every)
         return pres
-    fast_loop.finish(fb, plan, args, outs, tail, n, record, every)
+    times_list, t_end = rec_t[:-1].tolist(), float(rec_t[-1])
+    fast_loop.finish(fb, plan, args, outs, tail, record, times_list, t_end, bool(flags & 16))
     k = schedule.pitch_index
     return Prescription(
         qpos, qvel, qacc, r[0], r[0][:, k].copy(), None if flags & 2 else np.array(lft[0])

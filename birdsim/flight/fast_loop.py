@@ -172,15 +172,16 @@ class _Plan:
             d.site_xmat, np.ascontiguousarray(cb.areas[:, 0]), aero_kernel.fold_addresses(cb),
             m.opt.wind,
         )  # fmt: skip
+        self.gravity = m.opt.gravity  # its view, kept (as the wind's)
         self.aero_for: tuple | None = None
         self.aero: tuple = ()
         self._weight: tuple | None = None
 
     def weight(self, fb) -> np.ndarray:
         """``fb.total_mass * gravity`` (world), made again only when either changes."""
-        key = (fb.total_mass, *fb.m.opt.gravity.tolist())
+        key = (fb.total_mass, *self.gravity.tolist())
         if self._weight is None or self._weight[0] != key:
-            self._weight = (key, fb.total_mass * np.array(fb.m.opt.gravity))
+            self._weight = (key, fb.total_mass * np.array(self.gravity))
         return self._weight[1]
 
     def aero_arguments(self, cb) -> tuple:
@@ -234,8 +235,20 @@ def step(fb, pres, wind: np.ndarray, record: list | None, every: int) -> bool:
         )  # fmt: skip
     finally:
         mujoco.set_mjcb_passive(installed)
-    finish(fb, plan, args, outs, tail, n, record, every)
+    times, t_end = sample_times(fb.time, fb.h, n, every)
+    finish(fb, plan, args, outs, tail, record, times, t_end)
     return True
+
+
+def sample_times(time: float, h: float, n: int, every: int) -> tuple[list[float], float]:
+    """(the times of the samples of ``n`` steps of ``h`` from ``time``, every ``every``-th
+    step's; the time after them): the reference's time summed step by step
+    (``np.add.accumulate`` adds in order, as the reference's loop, one step after the
+    other: the same bits)."""
+    steps = np.full(n + 1, h)
+    steps[0] = time
+    sums = np.add.accumulate(steps)
+    return sums[:n:every].tolist(), float(sums[n])
 
 
 def arguments(fb, plan: _Plan, wind: np.ndarray, n: int, every: int) -> tuple[tuple, tuple]:
@@ -259,22 +272,25 @@ def arguments(fb, plan: _Plan, wind: np.ndarray, n: int, every: int) -> tuple[tu
 
 
 def finish(
-    fb, plan: _Plan, args: tuple, outs: tuple, tail: np.ndarray, n: int, record, every: int
+    fb,
+    plan: _Plan,
+    args: tuple,
+    outs: tuple,
+    tail: np.ndarray,
+    record,
+    times: list[float],
+    t_end: float,
+    finite: bool | None = None,
 ) -> None:
-    """After :func:`run_steps` made ``n`` steps with :func:`arguments`' ``args`` and
-    ``outs``: the bird's momenta, time, maxima and tail force, the samples appended to
-    ``record`` as the reference appends them; raises where the state is not finite."""
+    """After :func:`run_steps` made its steps with :func:`arguments`' ``args`` and
+    ``outs``: the bird's momenta, time (``t_end``), maxima and tail force, the samples
+    (at ``times``) appended to ``record`` as the reference appends them; raises where the
+    state is not finite (``finite``: already checked, None: checked here)."""
     cb, h = fb.cb, fb.h
     rec_q, rec_v, rec_out, stats = outs
     state = args[-6]
     fb.P, fb.X, fb.L = state[:3].copy(), state[3:6].copy(), state[6:].copy()
-    time = fb.time
-    times = []
-    for k in range(n):  # the reference's time, summed step by step
-        if k % every == 0:
-            times.append(time)
-        time += h
-    fb.time = time
+    fb.time = t_end
     fb.root_applied_max = float(stats[2])
     if args[-8][aero_kernel.TAIL]:  # ints
         cb.tail_force_body = tail[:3].copy()
@@ -287,9 +303,11 @@ def finish(
         )  # one tuple per sample, as the reference appends them
         # the same samples as arrays, for this record at this length (flight_arrays)
         fb.__dict__["last_samples"] = (record, len(record), times, rec_q, rec_v, rec_out)
-    if fb.config.momentum_projection and n:
+    if fb.config.momentum_projection and times:
         fb.projection_max = max(fb.projection_max, float(stats[0]), float(stats[1]) * h)
-    if not all_finite(plan.static[2], plan.static[3]):
+    if finite is None:
+        finite = all_finite(plan.static[2], plan.static[3])
+    if not finite:
         fb._check_finite()  # raises, naming the time
 
 
@@ -304,4 +322,4 @@ def usable(fb, F=None, P=None) -> bool:
     return ENABLED and _plan(fb) is not None and aero_kernel.supported(fb.cb)
 
 
-__all__ = ["ENABLED", "arguments", "finish", "plan", "run_steps", "step", "usable"]
+__all__ = ["ENABLED", "arguments", "finish", "plan", "run_steps", "sample_times", "step", "usable"]
