@@ -131,3 +131,33 @@ def test_sample_times_are_the_step_by_step_sums():
         got, end = fast_loop.sample_times(t0, h, n, every)
         assert got == times and end == time
         assert all(type(x) is float for x in got)
+
+
+@pytest.mark.parametrize("bad", ["flap_amp", "pitch"])
+def test_fused_interval_names_a_non_finite_target_as_the_two_calls(monkeypatch, bad):
+    """A NaN wing parameter (its rows not finite) or pitch: nothing stepped, the same
+    error as the schedule's own path (naming the joint, or the pitch)."""
+    from birdsim.errors import BirdsimError
+
+    kin = get_model("m4")
+    guess = kin.guess("cruise")
+    names = kin.param_names
+    params = np.array([guess[n] for n in names])
+    target = params.copy()
+    target[names.index(bad)] = np.nan
+    messages = []
+    for fused in (True, False):
+        monkeypatch.setattr(fast_interval, "ENABLED", fused)
+        with FreeBird("m4", BIRD, params, config=SimConfig(attitude="free")) as fb:
+            h = fb.h
+            pres0 = fb.schedule.advance(params, np.zeros(1), 0.0, 0.0)
+            fb.start(np.array([0.0, 0.0, 6.0]), np.array([0.9, 0.0, 0.0]), pres0)
+            qpos, time = fb.d.qpos.copy(), fb.time
+            with pytest.raises(BirdsimError) as err:
+                fast_interval.interval(
+                    fb, target, np.arange(16) * h, 0.0, 16 * h, None, None, np.zeros(3), [], 8
+                )
+            assert fb.time == time and np.array_equal(fb.d.qpos, qpos)
+            messages.append(str(err.value))
+    assert messages[0] == messages[1]
+    assert ("flap" if bad == "flap_amp" else "pitch") in messages[0]
