@@ -2,7 +2,8 @@
 their compiled (numba) code over the numpy / Python reference they are tested against
 (the compiled step loop, prescription, table lookup, bounded least squares, path curves,
 attitude estimate, schedule filters (alone and with the wings' rows), error window, the
-attitude loop's allocation, the held-body pose of its Jacobian measurements, a straight flight's per-sample path errors).
+attitude loop's allocation, the held-body pose of its Jacobian measurements, a straight flight's per-sample path errors, the schedule's advance
+with the steps after it).
 Tests and benchmarks flip them together to fly the reference path."""
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ from birdsim.flight import (
     fast_errors,
     fast_estimate,
     fast_hold,
+    fast_interval,
     fast_loop,
     fast_path,
     fast_prescription,
@@ -37,4 +39,5 @@ SWITCHES: tuple[ModuleType, ...] = (
     fast_wingbeat,
     fast_hold,
     fast_errors,
+    fast_interval,
 )

@@ -172,15 +172,16 @@ class _Plan:
             d.site_xmat, np.ascontiguousarray(cb.areas[:, 0]), aero_kernel.fold_addresses(cb),
             m.opt.wind,
         )  # fmt: skip
+        self.gravity = m.opt.gravity  # its view, kept (as the wind's)
         self.aero_for: tuple | None = None
         self.aero: tuple = ()
         self._weight: tuple | None = None
 
     def weight(self, fb) -> np.ndarray:
         """``fb.total_mass * gravity`` (world), made again only when either changes."""
-        key = (fb.total_mass, *fb.m.opt.gravity.tolist())
+        key = (fb.total_mass, *self.gravity.tolist())
         if self._weight is None or self._weight[0] != key:
-            self._weight = (key, fb.total_mass * np.array(fb.m.opt.gravity))
+            self._weight = (key, fb.total_mass * np.array(self.gravity))
         return self._weight[1]
 
     def aero_arguments(self, cb) -> tuple:
@@ -220,41 +221,78 @@ def step(fb, pres, wind: np.ndarray, record: list | None, every: int) -> bool:
     plan = _plan(fb) if ENABLED else None
     if plan is None or not aero_kernel.supported(fb.cb):
         return False
-    m, cb, h = fb.m, fb.cb, fb.h
-    plan.sites[-1][:] = wind  # m.opt.wind (its view, kept: MjOption makes a new one per read)
-    weight = plan.weight(fb)
     Pq, P = plan.Pq, plan.P
     pres_q = np.ascontiguousarray(pres.qpos[:, Pq])
     pres_v = np.ascontiguousarray(pres.qvel[:, P])
     pres_a = np.ascontiguousarray(pres.qacc[:, P])
     n = pres_q.shape[0]
-    samples = (n + every - 1) // every
-    rec_q = np.empty((samples, m.nq))
-    rec_v = np.empty((samples, m.nv))
-    rec_out = np.empty((samples, 10))
-    fl, ints, frame = plan.aero_arguments(cb)
-    state = np.concatenate([fb.P, fb.X, fb.L])
-    stats = np.array([0.0, 0.0, fb.root_applied_max])
+    args, outs = arguments(fb, plan, wind, n, every)
     installed = mujoco.get_mjcb_passive()
     mujoco.set_mjcb_passive(None)
     try:
         tail = run_steps(
-            *plan.static, pres_q, pres_v, pres_a, Pq.start, P.start, plan.W.start,
-            plan.W.stop, *plan.sites, fl, ints, frame, state, weight, h, fb.total_mass,
-            bool(fb.config.momentum_projection), every, rec_q, rec_v, rec_out, stats,
+            *args[:12], pres_q, pres_v, pres_a, *args[12:], *outs
         )  # fmt: skip
     finally:
         mujoco.set_mjcb_passive(installed)
+    times, t_end = sample_times(fb.time, fb.h, n, every)
+    finish(fb, plan, args, outs, tail, record, times, t_end)
+    return True
+
+
+def sample_times(time: float, h: float, n: int, every: int) -> tuple[list[float], float]:
+    """(the times of the samples of ``n`` steps of ``h`` from ``time``, every ``every``-th
+    step's; the time after them): the reference's time summed step by step
+    (``np.add.accumulate`` adds in order, as the reference's loop, one step after the
+    other: the same bits)."""
+    steps = np.full(n + 1, h)
+    steps[0] = time
+    sums = np.add.accumulate(steps)
+    return sums[:n:every].tolist(), float(sums[n])
+
+
+def arguments(fb, plan: _Plan, wind: np.ndarray, n: int, every: int) -> tuple[tuple, tuple]:
+    """:func:`run_steps`' arguments for ``n`` steps of ``fb`` under ``wind`` (written into
+    ``m.opt.wind``): those before the prescription's three arrays, those after them up to
+    ``every``, and the outputs (rec_q, rec_v, rec_out, stats), made new."""
+    m, cb = fb.m, fb.cb
+    plan.sites[-1][:] = wind  # m.opt.wind (its view, kept: MjOption makes a new one per read)
+    weight = plan.weight(fb)
+    samples = (n + every - 1) // every
+    fl, ints, frame = plan.aero_arguments(cb)
+    state = np.concatenate([fb.P, fb.X, fb.L])
+    stats = np.array([0.0, 0.0, fb.root_applied_max])
+    args = (
+        *plan.static, plan.Pq.start, plan.P.start, plan.W.start, plan.W.stop, *plan.sites,
+        fl, ints, frame, state, weight, fb.h, fb.total_mass,
+        bool(fb.config.momentum_projection), every,
+    )  # fmt: skip
+    outs = (np.empty((samples, m.nq)), np.empty((samples, m.nv)), np.empty((samples, 10)), stats)
+    return args, outs
+
+
+def finish(
+    fb,
+    plan: _Plan,
+    args: tuple,
+    outs: tuple,
+    tail: np.ndarray,
+    record,
+    times: list[float],
+    t_end: float,
+    finite: bool | None = None,
+) -> None:
+    """After :func:`run_steps` made its steps with :func:`arguments`' ``args`` and
+    ``outs``: the bird's momenta, time (``t_end``), maxima and tail force, the samples
+    (at ``times``) appended to ``record`` as the reference appends them; raises where the
+    state is not finite (``finite``: already checked, None: checked here)."""
+    cb, h = fb.cb, fb.h
+    rec_q, rec_v, rec_out, stats = outs
+    state = args[-6]
     fb.P, fb.X, fb.L = state[:3].copy(), state[3:6].copy(), state[6:].copy()
-    time = fb.time
-    times = []
-    for k in range(n):  # the reference's time, summed step by step
-        if k % every == 0:
-            times.append(time)
-        time += h
-    fb.time = time
+    fb.time = t_end
     fb.root_applied_max = float(stats[2])
-    if ints[aero_kernel.TAIL]:
+    if args[-8][aero_kernel.TAIL]:  # ints
         cb.tail_force_body = tail[:3].copy()
         cb.tail_alpha = float(tail[3])
     if record is not None:
@@ -265,11 +303,18 @@ def step(fb, pres, wind: np.ndarray, record: list | None, every: int) -> bool:
         )  # one tuple per sample, as the reference appends them
         # the same samples as arrays, for this record at this length (flight_arrays)
         fb.__dict__["last_samples"] = (record, len(record), times, rec_q, rec_v, rec_out)
-    if fb.config.momentum_projection and n:
+    if fb.config.momentum_projection and times:
         fb.projection_max = max(fb.projection_max, float(stats[0]), float(stats[1]) * h)
-    if not all_finite(plan.static[2], plan.static[3]):
+    if finite is None:
+        finite = all_finite(plan.static[2], plan.static[3])
+    if not finite:
         fb._check_finite()  # raises, naming the time
-    return True
+
+
+def plan(fb) -> _Plan | None:
+    """The compiled loop's fixed arguments for ``fb`` where :func:`usable`, else None."""
+    p = _plan(fb) if ENABLED else None
+    return p if p is not None and aero_kernel.supported(fb.cb) else None
 
 
 def usable(fb, F=None, P=None) -> bool:
@@ -277,4 +322,4 @@ def usable(fb, F=None, P=None) -> bool:
     return ENABLED and _plan(fb) is not None and aero_kernel.supported(fb.cb)
 
 
-__all__ = ["ENABLED", "run_steps", "step", "usable"]
+__all__ = ["ENABLED", "arguments", "finish", "plan", "run_steps", "sample_times", "step", "usable"]

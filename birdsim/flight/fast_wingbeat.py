@@ -92,6 +92,20 @@ def advance(schedule, u: np.ndarray, v: np.ndarray, times: np.ndarray, rel: np.n
     :meth:`WingbeatSchedule.advance` (its filters moved on by ``dt``), or None (nothing
     done) where the fused call does not apply; ``flags`` as :func:`_advance_rows` returns
     them."""
+    made = arguments(schedule, u, v, times, rel, dt)
+    if made is None:
+        return None
+    args, outs = made
+    flags = kernel(*args, *outs)
+    return (*outs, flags)
+
+
+def arguments(
+    schedule, u: np.ndarray, v: np.ndarray, times: np.ndarray, rel: np.ndarray, dt: float
+) -> tuple[tuple, tuple] | None:
+    """:func:`_advance_rows`' arguments up to ``qpos0`` and its outputs (right, left,
+    shoulder, qpos, qvel, qacc; made new) for :func:`advance`, or None where the fused
+    call does not apply."""
     if not (ENABLED and fast_schedule.ENABLED and fast_prescription.ENABLED) or kernel is None:
         return None
     mean_filter, input_filter = schedule.filter, schedule.input_filter
@@ -109,13 +123,13 @@ def advance(schedule, u: np.ndarray, v: np.ndarray, times: np.ndarray, rel: np.n
     right, left = np.empty((3, T, n)), np.empty((3, T, n))
     shoulder = np.empty((3, T, v.shape[0] - 2 * n))
     qpos, qvel, qacc = np.empty((T, m.nq)), np.empty((T, m.nv)), np.empty((T, m.nv))
-    flags = kernel(
+    args = (
         mean_filter.x1, mean_filter.x2, u, ex, gex, tau, tau**2,
         input_filter.x1, input_filter.x2, v, ey, gey, sig, sig**2, rel, float(dt), n,
         np.ascontiguousarray(times, dtype=float), *sp, float(schedule.bird.omega), *geo,
-        m.qpos0, right, left, shoulder, qpos, qvel, qacc,
+        m.qpos0,
     )  # fmt: skip
-    return right, left, shoulder, qpos, qvel, qacc, flags
+    return args, (right, left, shoulder, qpos, qvel, qacc)
 
 
-__all__ = ["ENABLED", "advance", "kernel"]
+__all__ = ["ENABLED", "advance", "arguments", "kernel"]

@@ -24,6 +24,7 @@ from birdsim.flight.attitude_commands import bank_command, body_rates, command_f
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.demand_schedule import DemandSchedule, RefState
 from birdsim.flight.fast_errors import air_speeds, straight_errors
+from birdsim.flight.fast_interval import interval
 from birdsim.flight.flight_arrays import attitude_estimate, extend_rows, flight_arrays, keep_last
 from birdsim.flight.float_ops import clip_float
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
@@ -343,9 +344,8 @@ def fly(
                 fb.cb.tail_controls = tail
             else:
                 right = cmd.params
-            pres = fb.schedule.advance(right, t + step_offsets, t, dt_ctl, left, offset)
-            start = len(record)
-            fb.step_many(pres, wind, record, every)
+            start, times = len(record), t + step_offsets  # advance and steps: fast_interval
+            pres = interval(fb, right, times, t, dt_ctl, left, offset, wind, record, every)
             t_new, q_new, v_new = step_records.new_samples(fb, record, start, blocks)
             if track is None:
                 refs = sample_reference(reference, t_new)

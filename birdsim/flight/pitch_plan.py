@@ -96,14 +96,22 @@ def feedforward_pitch(ctl: Any, path: Any, names: tuple) -> Callable[[float], fl
     ``path``'s feed-forward through the controller ``ctl`` (a
     :class:`birdsim.flight.controller.Controller`; no error, no wind), asked in
     increasing ``t``: the body drag at that pitch by fixed-point steps (three from 0 at
-    the first ``t``, then one from the last pitch)."""
+    the first ``t``, then one from the last pitch).  The feed-forward's command reads
+    only the state's accelerations and velocities and the pitch: a step whose five
+    numbers have the bits of an earlier step's takes that step's answer (a path flown
+    at constant velocity asks the table once, not twice per wingbeat; the same bits)."""
     zero, i = np.zeros(2), names.index("pitch")
     last: list[float] = []
+    known: dict[bytes, float] = {}
 
     def f(t: float) -> float:
         p = last[0] if last else 0.0
+        s = path.state(t)
         for _ in range(1 if last else 3):
-            p = float(ctl.command(path.state(t), None, zero, p).params[i])
+            key = np.array([s.ax, s.az, s.vx, s.vz, p], dtype=float).tobytes()
+            hit = known.get(key)
+            p = float(ctl.command(s, None, zero, p).params[i]) if hit is None else hit
+            known[key] = p
         last[:] = [p]
         return p
 

@@ -162,14 +162,9 @@ class WingbeatSchedule:
         ``offset``: a correction added to both wings' parameters, smoothed like the
         attitude inputs (the stroke plane's compensation of a pitch error)."""
         times = np.asarray(times, dtype=float)
-        right = np.asarray(target, dtype=float)
-        left = right if target_left is None else np.asarray(target_left, dtype=float)
-        sh = np.asarray(self.shoulder_target, dtype=float)
+        right, left, u, v = self.inputs(target, target_left, offset)
         rel = times - t_now
         n = len(self.names)
-        off = np.zeros(n) if offset is None else np.asarray(offset, dtype=float)
-        u = 0.5 * (right + left)
-        v = np.concatenate([0.5 * (right - left), off, sh, sh])
         fused = fast_wingbeat.advance(self, u, v, times, rel, dt)
         if fused is not None:  # the filters and the rows in one call (fast_wingbeat)
             right3, left3, shoulder3, qpos, qvel, qacc, flags = fused
@@ -186,6 +181,23 @@ class WingbeatSchedule:
         r = tuple(a + b[:, :n] + b[:, n : 2 * n] for a, b in zip(mean, inputs))
         lft = tuple(a - b[:, :n] + b[:, n : 2 * n] for a, b in zip(mean, inputs))
         return self.prescribe(times, *r, left=lft, shoulder=tuple(b[:, 2 * n :] for b in inputs))
+
+    def inputs(
+        self,
+        target: Sequence[float],
+        target_left: Sequence[float] | None = None,
+        offset: Sequence[float] | None = None,
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """(right, left, u, v) of :meth:`advance`'s arguments: both wings' targets, the
+        mean filter's input u (their mean) and the input filter's v (half their
+        difference, the offset, the shoulder targets of both sides)."""
+        right = np.asarray(target, dtype=float)
+        left = right if target_left is None else np.asarray(target_left, dtype=float)
+        sh = np.asarray(self.shoulder_target, dtype=float)
+        off = np.zeros(len(self.names)) if offset is None else np.asarray(offset, dtype=float)
+        u = 0.5 * (right + left)
+        v = np.concatenate([0.5 * (right - left), off, sh, sh])
+        return right, left, u, v
 
     @property
     def output(self) -> np.ndarray:
