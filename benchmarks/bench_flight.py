@@ -50,7 +50,8 @@ def main() -> None:
                     wall, cpu = _rate(path, table, bird, model, config)
                     best[a] = (max(best[a][0], wall), max(best[a][1], cpu))
             for a, (wall, cpu) in best.items():
-                # the trimmed start flies probe wingbeats (2 posed, 3 free) on top
+                # the trimmed start flies probe wingbeats (2 posed; free 3 to 7 until the
+                # rotation's bias converges, trim_rotation: m4 cruise 5) on top
                 print(
                     f"{model} period/{steps} {a:5s}: {wall:6.1f} wingbeats per wall second, "
                     f"{cpu:6.1f} per CPU second (best of {REPEATS}, {BEATS:g} wingbeats + probes)"

@@ -15,10 +15,12 @@
    stiffness appears.
 4. The pigeon's free hover (m3, its bird file): measured 1.56 degrees RMS wingbeat-mean
    pitch error after two wingbeats and 0.0175 m path RMS (the code before the seventh
-   stage: 3.15 and 0.0210); asserted below 2.5 degrees and 0.020 m (both fail on that
-   code).  Its take-off: measured 7.99 degrees and 0.0127 m with the eighth stage's gate
-   (before it 10.1 and 0.0128); asserted below 9 degrees (fails on the code before) and
-   0.025 m.  No attitude-saturated sample, the root's applied force exactly zero.
+   stage: 3.15 and 0.0210); since the ninth stage's trim (the hover's command 70 instead
+   of 65 degrees, its path 0.0069 m) 2.79 degrees; asserted below the issue's 3 degrees
+   and 0.020 m (both fail on the code before the seventh stage).  Its take-off:
+   measured 7.99 degrees and 0.0127 m with the eighth stage's gate (before it 10.1 and
+   0.0128; since the ninth stage 7.79 and 0.0133); asserted below 9 degrees (fails on the
+   code before the eighth stage) and 0.025 m.  No attitude-saturated sample, the root's applied force exactly zero.
 """
 
 from __future__ import annotations
@@ -124,7 +126,7 @@ def test_the_gate_enters_slow_and_holds_while_the_tail_has_no_stiffness():
 
 @pytest.mark.slow  # ~10 s each on this machine, with the table's load
 @pytest.mark.parametrize(
-    "preset,pitch_max,path_max", [("hover", 2.5, 0.020), ("take-off", 9.0, 0.025)]
+    "preset,pitch_max,path_max", [("hover", 3.0, 0.020), ("take-off", 9.0, 0.025)]
 )
 def test_pigeon_slow_flight_pitch_on_the_section(preset, pitch_max, path_max):
     from birdsim.commands.fly import load_table_for

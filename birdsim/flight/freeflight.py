@@ -32,7 +32,7 @@ from birdsim.flight.pitch_plan import PitchPlan, feedforward_pitch
 from birdsim.flight.pitch_section import section_source
 from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
 from birdsim.flight.track import TrackFrame, is_three_d
-from birdsim.flight.trim import sample_reference, trim_start
+from birdsim.flight.trim import sample_reference, trim_rotation, trim_start
 from birdsim.flight.turning import TURN_PITCH_PLAN, attitude_loop_for, turn_command, turn_pitch
 from birdsim.flight.wingbeat import INPUT_SMOOTHING_BEATS, WingbeatSchedule
 from birdsim.physics.bird import Bird
@@ -40,8 +40,10 @@ from birdsim.physics.units import reduced_bird, scales
 
 TWO_PI = 2.0 * math.pi
 #: The integral term's acceleration is bounded by this fraction of gravity (the
-#: table-vs-flight mismatch it trims is ~4 % of the weight in cruise).
-INTEGRAL_LIMIT = 0.1
+#: table-vs-flight mismatch it trims is ~4 % of the weight in cruise) or, attitude free,
+#: by this multiple of the mismatch the trimmed start measured where that is larger (the
+#: free pigeon's hover: 14 % of the weight; docs/free-body.md, "ninth stage").
+INTEGRAL_LIMIT, FREE_BIAS_MARGIN = 0.1, 1.5
 #: Time constant (wingbeats) of the body's pitch command (attitude free, with a
 #: stroke plane): the table's pitch smoothed; the stroke plane turns by the difference.
 PITCH_COMMAND_BEATS = 3.0
@@ -184,15 +186,16 @@ def fly(
         h = fb.h
         pos0, vel0 = np.array([ref0.x, 0.0, ref0.z]), np.array([ref0.vx, 0.0, ref0.vz])
         integral = np.zeros(2)
+        int_limit = INTEGRAL_LIMIT * red.gravity / gains.ki if red.gravity > 0 else np.inf
         if trim:
             if not ctl.open_loop and gains.ki > 0:
                 # the wingbeat's real mean force differs a little from the table's (the body
-                # bobs, the wings weigh): start the integral where it cancels that difference
-                *_, bias = trim_start(fb, path, cmd.params, pos0, vel0, config, every)
-                if free:  # again, from the rotation the first probe measured
-                    *_, bias = trim_start(fb, path, cmd.params, pos0, vel0, config, every)
-                limit = INTEGRAL_LIMIT * red.gravity / gains.ki if red.gravity > 0 else np.inf
-                integral = np.clip(bias / gains.ki, -limit, limit)
+                # bobs, the wings weigh): the integral starts where it cancels the difference
+                probe = trim_rotation if free else trim_start  # free: the rotation trimmed
+                *_, bias = probe(fb, path, cmd.params, pos0, vel0, config, every)
+                if free:
+                    int_limit = np.maximum(int_limit, FREE_BIAS_MARGIN * np.abs(bias) / gains.ki)
+                integral = np.clip(bias / gains.ki, -int_limit, int_limit)
                 cmd = command(
                     0.0,
                     (np.zeros(2), np.zeros(2), ref0.vx),
@@ -255,8 +258,7 @@ def fly(
                 # anti-windup: frozen while saturated or far off the path (a gust), and
                 # bounded: the integral only trims the small mismatch between the table's
                 # mean force and the flown one
-                limit = INTEGRAL_LIMIT * red.gravity / gains.ki if red.gravity > 0 else np.inf
-                integral = (integral + dt_ctl * est[0]).clip(-limit, limit)  # np.clip
+                integral = (integral + dt_ctl * est[0]).clip(-int_limit, int_limit)  # np.clip
             wind = wind_at(gusts, t / TWO_PI, speed)
             left = offset = None
             if free:
