@@ -218,12 +218,7 @@ def _finish(fb, pending, n, every, state, stats, tail, ints, rec_q, rec_v, rec_o
     finishes one: its momenta, time, checks, tail force and log samples."""
     record = pending[2]
     fb.P, fb.X, fb.L = state[:3].copy(), state[3:6].copy(), state[6:].copy()
-    time, times = fb.time, []
-    for k in range(n):  # the reference's time, summed step by step
-        if k % every == 0:
-            times.append(time)
-        time += fb.h
-    fb.time = time
+    times, fb.time = fast_loop.sample_times(fb.time, fb.h, n, every)  # summed step by step
     fb.root_applied_max = float(stats[2])
     if ints[aero_kernel.TAIL]:
         fb.cb.tail_force_body = tail[:3].copy()
