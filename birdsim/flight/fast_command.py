@@ -85,7 +85,15 @@ def prepare(ctl: Any) -> tuple | None:
     if usable and not ctl.has_climb and ctl.to_table is demand_from_acceleration:
         if tuple(table.axis_names) == ("Fx", "Fz", "V"):
             rb, b = reduced_bird(ctl.bird), ctl.bird
-            consts = (b.mass, b.gravity, rb.mass, rb.gravity, rb.rho, rb.body_drag_area, CLIMB_SPEED)
+            consts = (
+                b.mass,
+                b.gravity,
+                rb.mass,
+                rb.gravity,
+                rb.rho,
+                rb.body_drag_area,
+                CLIMB_SPEED,
+            )
             lo = np.array([ctl.lo[n] for n in ("Fx", "Fz", "V")])
             hi = np.array([ctl.hi[n] for n in ("Fx", "Fz", "V")])
             prep = (tuple(float(x) for x in consts), lo, hi, fast, len(ctl.names))
