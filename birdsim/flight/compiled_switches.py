@@ -3,7 +3,7 @@ their compiled (numba) code over the numpy / Python reference they are tested ag
 (the compiled step loop, prescription, table lookup, bounded least squares, path curves,
 attitude estimate, schedule filters (alone and with the wings' rows), error window, the
 attitude loop's allocation, the held-body pose of its Jacobian measurements, a straight flight's per-sample path errors, the schedule's advance
-with the steps after it).
+with the steps after it, the path controller's table lookup).
 Tests and benchmarks flip them together to fly the reference path."""
 
 from __future__ import annotations
@@ -13,6 +13,7 @@ from types import ModuleType
 from birdsim.flight import (
     bounded_lsq,
     fast_attitude,
+    fast_command,
     fast_errors,
     fast_estimate,
     fast_hold,
@@ -40,4 +41,5 @@ SWITCHES: tuple[ModuleType, ...] = (
     fast_hold,
     fast_errors,
     fast_interval,
+    fast_command,
 )

@@ -39,7 +39,7 @@ from typing import Any, Protocol
 import numpy as np
 
 from birdsim.errors import BirdsimError
-from birdsim.flight import fast_window
+from birdsim.flight import fast_command, fast_window
 from birdsim.flight.demand import (
     air_path_angle,
 )  # one air-path rule (CLIMB_SPEED re-exported)
@@ -53,6 +53,7 @@ REACH_TOLERANCE = 0.01
 #: A lookup airspeed (or climb rate) clipped by more than this (semispan omega) counts
 #: as saturated.
 V_CLIP_TOLERANCE = 0.05
+_TOLERANCES = (V_CLIP_TOLERANCE, REACH_TOLERANCE)  # the compiled lookup's
 
 
 class Reference(Protocol):
@@ -262,6 +263,9 @@ class Controller:
         """
         if self.has_climb:
             return self._lookup_climbing(ax, az, vx_air, vz_air, pitch)
+        fast = fast_command.lookup(self, ax, az, vx_air, vz_air, pitch, _TOLERANCES)
+        if fast is not None:  # compiled (within round-off of the lines below)
+            return Command(*fast[:4], fast[4], (ax, az), 0.0)
         m, grav = self.bird.mass, self.bird.gravity
         gamma = float(air_path_angle(vx_air, vz_air))  # faded below CLIMB_SPEED of forward airspeed
         f_x, f_z = m * ax, m * (az + grav)  # aerodynamic force needed, world

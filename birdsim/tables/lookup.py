@@ -240,14 +240,18 @@ class LookupTable:
         names = list(self.param_names) + [f"achieved_{n}" for n in ACHIEVED_NAMES] + ["cost"]
         return {n: vals[:, k].reshape(shape) for k, n in enumerate(names[: d + 4])}
 
-    def _values(self, pts: np.ndarray) -> np.ndarray:
-        """The interpolated (parameters, achieved Fx, Fz, P, cost) at ``pts`` (n, axes)."""
+    def interpolant(self) -> fast_lookup.Interpolant:
+        """The grid and values made ready for the compiled interpolation (kept)."""
         fast = self.__dict__.get("_fast")
         if fast is None:
             rgi = self._interpolator()
             fast = fast_lookup.Interpolant(rgi.grid, rgi.values)
             object.__setattr__(self, "_fast", fast)
-        vals = fast_lookup.interpolate(fast, pts)  # scipy's numbers, compiled
+        return fast
+
+    def _values(self, pts: np.ndarray) -> np.ndarray:
+        """The interpolated (parameters, achieved Fx, Fz, P, cost) at ``pts`` (n, axes)."""
+        vals = fast_lookup.interpolate(self.interpolant(), pts)  # scipy's numbers, compiled
         return self._interpolator()(pts) if vals is None else vals
 
     def lookup_row(self, Fx: float, Fz: float, V: float) -> np.ndarray | None:
