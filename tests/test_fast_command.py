@@ -104,3 +104,33 @@ def test_flights_agree_within_a_nanosemispan(monkeypatch, case):
     for k in ("x", "y", "z"):
         assert np.abs(np.asarray(a[k]) - np.asarray(b[k])).max() <= PATH_TOL, k
     assert np.array_equal(a["saturated"], b["saturated"])
+
+
+@pytest.mark.parametrize("open_loop", [False, True])
+def test_path_command_is_the_command_at_the_path_state(monkeypatch, open_loop):
+    """The path's state, the feedback and the lookup in one call
+    (``Controller.command_at``) against ``command(path.state(t), ...)``: a climbing path
+    inside and past its keyframes, random errors, integrals and winds, feedback on and
+    off; the same flags and accelerations, the rest within 1e-12."""
+    table = load_table("tables/m4.npz")
+    red = reduced_bird(BIRD)
+    ctl = Controller(table, red, gains_for(red), open_loop=open_loop)
+    keys = (PathKeyframe(0.0, 6.0, V=0.9), PathKeyframe(3.0, 6.6, V=0.6))
+    path = FlightPath("climb", 6.0, False, False, keys)
+    calls: list = []
+    kernel = fast_command.path_kernel
+    monkeypatch.setattr(fast_command, "path_kernel", lambda *a: calls.append(1) or kernel(*a))
+    rng = np.random.default_rng(5)
+    for i in range(200):
+        t = float(rng.uniform(-1.0, 6.0 * 2 * np.pi + 4.0))
+        est = None if i % 5 == 0 else (rng.normal(0, 0.02, 2), rng.normal(0, 0.02, 2), 0.8)
+        integral, pitch = rng.normal(0, 0.05, 2), float(rng.normal(0.0, 0.2))
+        wind = (float(rng.normal(0, 0.1)), float(rng.normal(0, 0.05)))
+        a = ctl.command_at(path, t, est, integral, pitch, wind)
+        b = ctl.command(path.state(t), est, integral, pitch, wind)
+        assert a.saturated == b.saturated and a.climb == b.climb == 0.0
+        assert a.a_cmd == b.a_cmd and all(type(x) is float for x in a.a_cmd)
+        for x, y in ((a.Fx, b.Fx), (a.Fz, b.Fz), (a.V, b.V)):
+            assert type(x) is float and abs(x - y) <= 1e-12, (t, est)
+        assert np.abs(a.params - b.params).max() <= 1e-12
+    assert len(calls) == 200

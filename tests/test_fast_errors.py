@@ -45,3 +45,30 @@ def test_gusty_cruise_flies_as_the_reference(monkeypatch):
         logs[compiled] = r.arrays
     for k in logs[True]:
         assert np.array_equal(logs[True][k], logs[False][k], equal_nan=True), k
+
+
+def test_path_errors_are_sampling_then_errors(monkeypatch):
+    """The fused call (the straight path's curves at the samples' times, then the
+    errors) against ``sample_reference`` and the errors: bitwise, inside the keyframes
+    and past the path's end (its tangent), and the compiled call really ran."""
+    from birdsim.flight.trim import sample_reference
+
+    keys = (PathKeyframe(0.0, 6.0, V=0.9), PathKeyframe(2.0, 6.4, V=0.7))
+    path = FlightPath("climb", 4.0, False, False, keys)
+    assert fast_errors.path_kernel is not None
+    calls: list = []
+    kernel = fast_errors.path_kernel
+    monkeypatch.setattr(fast_errors, "path_kernel", lambda *a: calls.append(1) or kernel(*a))
+    rng = np.random.default_rng(11)
+    for n in (1, 2, 16):
+        t = np.sort(rng.uniform(-1.0, 4.0 * 2 * np.pi + 3.0, n))
+        q, v = rng.normal(size=(n, 22)), rng.normal(size=(n, 21))
+        wind = rng.normal(size=3) * 0.1
+        refs, *got = fast_errors.path_errors(path, t, q, v, wind)
+        want_refs = sample_reference(path, t)
+        want = fast_errors.straight_errors(want_refs, q, v, wind)
+        for k in ("x", "z"):
+            assert np.array_equal(refs[k], want_refs[k]), k
+        for a, b in zip(got, want):
+            assert np.array_equal(a, b)
+    assert len(calls) == 3

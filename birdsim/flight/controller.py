@@ -244,6 +244,24 @@ class Controller:
             vx, vz = float(ref.vx), float(ref.vz)
         return self.lookup(ax, az, vx - wind[0], vz - wind[1], pitch)
 
+    def command_at(
+        self,
+        path: Any,
+        t: float,
+        est: tuple[np.ndarray, np.ndarray, float] | None,
+        integral: np.ndarray,
+        pitch: float,
+        wind: tuple[float, float] = (0.0, 0.0),
+    ) -> Command:
+        """:meth:`command` at ``path.state(t)``: the path's curves, the feedback and the
+        lookup in one compiled call where it applies (:func:`fast_command.path_command`,
+        within round-off of these lines)."""
+        if not self.has_climb:
+            fast = fast_command.path_command(self, path, t, est, integral, pitch, wind, _TOLERANCES)
+            if fast is not None:
+                return Command(*fast[:4], fast[4], fast[5], 0.0)
+        return self.command(path.state(t), est, integral, pitch, wind)
+
     def lookup(self, ax: float, az: float, vx_air: float, vz_air: float, pitch: float) -> Command:
         """The wingbeat that gives the whole bird the acceleration (ax, az) (world, z up)
         while it moves through the air at (vx_air, vz_air).

@@ -21,6 +21,7 @@ from typing import Any
 
 import numpy as np
 
+from birdsim.flight import fast_path
 from birdsim.flight.demand import CLIMB_SPEED, demand_from_acceleration
 from birdsim.physics.jit import numba
 from birdsim.physics.units import reduced_bird
@@ -68,8 +69,40 @@ def _level_command(ax, az, vx_air, vz_air, pitch, consts, lo, hi, tol, grids, fl
     return 2 if (sat or miss > tol[1]) else 1
 
 
-_interpolate = fast_lookup.kernel
+def _path_command(
+    cx, xx, cz, xz, t, feedback, ep, ev, vx_est, gains, integral, wx, wz, pitch, consts, lo,
+    hi, tol, grids, flat, shape, out,
+):  # fmt: skip
+    """:func:`_level_command` at the path's state at ``t`` (its x and z curves
+    ``(cx, xx)``, ``(cz, xz)``: ``fast_path``'s evaluation) with the path loop's feedback
+    (``feedback``: the error estimate ``ep``, ``ev`` (2,) and speed ``vx_est``, ``gains``
+    = (kp, kd, ki), ``integral`` (2,)) and the wind (wx, wz): ``Controller.command``'s
+    lines.  ``out`` as :func:`_level_command`'s, with the acceleration commanded (ax, az)
+    in two more entries after it."""
+    tt = np.empty(1)
+    tt[0] = t
+    xv, zv = np.empty((3, 1)), np.empty((3, 1))
+    _curve(cx, xx, tt, xv)
+    _curve(cz, xz, tt, zv)
+    ax, az = xv[2, 0], zv[2, 0]
+    if feedback:
+        ax += gains[0] * ep[0] + gains[1] * ev[0] + gains[2] * integral[0]
+        az += gains[0] * ep[1] + gains[1] * ev[1] + gains[2] * integral[1]
+        vx, vz = vx_est, zv[1, 0] - ev[1]
+    else:
+        vx, vz = xv[1, 0], zv[1, 0]
+    k = out.shape[0] - 2
+    out[k], out[k + 1] = ax, az
+    args = (vx - wx, vz - wz, pitch, consts, lo, hi, tol, grids, flat, shape)
+    return _level_command_jit(ax, az, *args, out[:k])
+
+
+_interpolate, _curve = fast_lookup.kernel, fast_path.values_kernel
 kernel = numba.njit(cache=True)(_level_command) if numba is not None else None
+_level_command_jit = kernel
+path_kernel = (
+    numba.njit(cache=True)(_path_command) if numba is not None and _curve is not None else None
+)
 
 
 def prepare(ctl: Any) -> tuple | None:
@@ -118,6 +151,12 @@ def lookup(
     tol = np.array(tolerances, dtype=float)
     args = (float(ax), float(az), float(vx_air), float(vz_air), float(pitch), consts, lo, hi, tol)
     code = kernel(*args, fast.grid, fast.flat, fast.shape, out)
+    return _answer(ctl, out, d, code)
+
+
+def _answer(ctl: Any, out: np.ndarray, d: int, code: int) -> tuple | None:
+    """:func:`lookup`'s answer from a kernel's ``out`` and code (the air path's angle
+    added to the pitch parameter)."""
     if code == 0:
         return None
     params = out[:d].copy()
@@ -127,4 +166,53 @@ def lookup(
     return float(out[d]), float(out[d + 1]), float(out[d + 2]), params, code == 2
 
 
-__all__ = ["ENABLED", "kernel", "lookup", "prepare"]
+def path_command(
+    ctl: Any,
+    path: Any,
+    t: float,
+    est: tuple | None,
+    integral: np.ndarray,
+    pitch: float,
+    wind: tuple[float, float],
+    tolerances: tuple,
+) -> tuple | None:
+    """(Fx, Fz, V_table, params, saturated, (ax, az)) of ``ctl.command(path.state(t),
+    est, integral, pitch, wind)`` in one compiled call, or None where the Python lines
+    must answer (as :func:`lookup`; also a path whose curves are not compiled)."""
+    if not (ENABLED and fast_lookup.ENABLED and fast_path.ENABLED) or path_kernel is None:
+        return None
+    got = ctl.__dict__.get("_fast_path_command")
+    if got is None or got[0] is not path or got[1] is not ctl.gains:
+        got = (path, ctl.gains, _path_arguments(ctl, path, tolerances))
+        ctl.__dict__["_fast_path_command"] = got
+    fixed = got[2]
+    if fixed is None:
+        return None
+    curves, gains, zeros, tail, d = fixed
+    if est is not None and not ctl.open_loop:
+        f = np.asarray
+        feedback, ep, ev, vx = True, f(est[0], dtype=float), f(est[1], dtype=float), float(est[2])
+    else:
+        feedback, ep, ev, vx = False, zeros, zeros, 0.0
+    out = np.empty(d + 6)
+    code = path_kernel(
+        *curves, float(t), feedback, ep, ev, vx, gains, np.asarray(integral, dtype=float), float(wind[0]),
+        float(wind[1]), float(pitch), *tail, out,
+    )  # fmt: skip
+    got = _answer(ctl, out, d, code)
+    return None if got is None else (*got, (float(out[d + 4]), float(out[d + 5])))
+
+
+def _path_arguments(ctl: Any, path: Any, tolerances: tuple) -> tuple | None:
+    """:func:`path_command`'s fixed arguments for ``ctl`` on ``path``, or None."""
+    prep, curves = prepare(ctl), fast_path.path_curves(path)
+    if prep is None or curves is None:
+        return None
+    consts, lo, hi, fast, d = prep
+    g = ctl.gains
+    tol = np.array(tolerances, dtype=float)
+    tail = (consts, lo, hi, tol, fast.grid, fast.flat, fast.shape)
+    return curves, np.array((g.kp, g.kd, g.ki), dtype=float), np.zeros(2), tail, d
+
+
+__all__ = ["ENABLED", "kernel", "lookup", "path_command", "path_kernel", "prepare"]

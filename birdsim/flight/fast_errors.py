@@ -13,9 +13,12 @@ differences are the reference's elementwise ones, the airspeed ``sqrt(u . u)`` b
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
+from birdsim.flight import fast_path
+from birdsim.flight.trim import sample_reference
 from birdsim.physics.jit import numba
 
 #: the errors compiled (False: the numpy reference)
@@ -46,6 +49,41 @@ def _errors(x, z, vx, vz, q_new, v_new, wind, e_pos, e_vel, lat_new, v_air):
 kernel = numba.njit(cache=True)(_errors) if numba is not None else None
 
 
+def _path_errors(cx, xx, cz, xz, t, q_new, v_new, wind, refs, e_pos, e_vel, lat_new, v_air):
+    """:func:`_errors` against a straight path's x and z curves (``fast_path``'s
+    evaluation at the samples' times ``t``; their values, slopes and second derivatives
+    into ``refs`` (6, n): x, vx, ax, z, vz, az)."""
+    _curve(cx, xx, t, refs[0:3])
+    _curve(cz, xz, t, refs[3:6])
+    _errors_jit(
+        refs[0], refs[3], refs[1], refs[4], q_new, v_new, wind, e_pos, e_vel, lat_new, v_air
+    )
+
+
+_errors_jit, _curve = kernel, fast_path.values_kernel
+path_kernel = (
+    numba.njit(cache=True)(_path_errors) if kernel is not None and _curve is not None else None
+)
+
+
+def path_errors(
+    reference: Any, t: np.ndarray, q_new: np.ndarray, v_new: np.ndarray, wind: np.ndarray
+) -> tuple[dict, np.ndarray, np.ndarray, np.ndarray, list[float]]:
+    """(the reference's x and z at the samples' times ``t``, then :func:`straight_errors`'
+    four) in one compiled call for a straight path's own curves
+    (:func:`birdsim.flight.fast_path.path_curves`), else ``sample_reference`` and
+    :func:`straight_errors`: the same numbers."""
+    curves = fast_path.path_curves(reference) if ENABLED and path_kernel is not None else None
+    if curves is None:
+        refs = sample_reference(reference, t)
+        return (refs, *straight_errors(refs, q_new, v_new, wind))
+    n = q_new.shape[0]
+    refs = np.empty((6, n))
+    e_pos, e_vel, lat_new, v_air = np.empty((n, 2)), np.empty((n, 2)), np.empty((n, 2)), np.empty(n)
+    path_kernel(*curves, t, q_new, v_new, wind, refs, e_pos, e_vel, lat_new, v_air)
+    return {"x": refs[0], "z": refs[3]}, e_pos, e_vel, lat_new, v_air.tolist()
+
+
 def straight_errors(
     refs: dict, q_new: np.ndarray, v_new: np.ndarray, wind: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, list[float]]:
@@ -68,4 +106,4 @@ def straight_errors(
     return e_pos, e_vel, lat_new, v_air.tolist()
 
 
-__all__ = ["ENABLED", "air_speeds", "kernel", "straight_errors"]
+__all__ = ["ENABLED", "air_speeds", "kernel", "path_errors", "path_kernel", "straight_errors"]

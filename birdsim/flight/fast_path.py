@@ -128,4 +128,17 @@ def curve_values(pp: PPoly, t: np.ndarray) -> np.ndarray | None:
     return out
 
 
-__all__ = ["ENABLED", "curve_values", "values_kernel"]
+def path_curves(path) -> tuple | None:
+    """(c, x) of a straight path's x curve and then its z curve, packed for
+    :data:`values_kernel`, or None where they are not evaluated here (switched off, not
+    a FlightPath's own curves: a speed-form path's track, a side component)."""
+    if not ENABLED or values_kernel is None:
+        return None
+    curves = [getattr(path, k, False) for k in ("_x", "_z", "_y", "_track")]
+    if any(c is False for c in curves) or curves[2] is not None or curves[3] is not None:
+        return None
+    px, pz = _packed(curves[0]), _packed(curves[1])
+    return None if px is None or pz is None else (*px, *pz)
+
+
+__all__ = ["ENABLED", "curve_values", "path_curves", "values_kernel"]

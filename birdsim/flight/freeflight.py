@@ -23,7 +23,7 @@ from birdsim.flight.attitude import FIT_BEATS
 from birdsim.flight.attitude_commands import bank_command, body_rates, command_filter
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.demand_schedule import DemandSchedule, RefState
-from birdsim.flight.fast_errors import air_speeds, straight_errors
+from birdsim.flight.fast_errors import air_speeds, path_errors
 from birdsim.flight.fast_interval import interval
 from birdsim.flight.flight_arrays import attitude_estimate, extend_rows, flight_arrays, keep_last
 from birdsim.flight.float_ops import clip_float
@@ -154,7 +154,7 @@ def fly(
             fx, fz, v = reference.demands(t)
             return ctl.lookup_table_force(fx, fz, v - float(w[0]))
         if track is None:
-            return ctl.command(path.state(t), est, integral, pitch, (float(w[0]), float(w[2])))
+            return ctl.command_at(path, t, est, integral, pitch, (float(w[0]), float(w[2])))
         # turning: the force in the banked plane carries the weight, the path's vertical
         # acceleration and the commanded sideways one (the plan's and the lateral loop's)
         ts = track.state(t)
@@ -350,8 +350,8 @@ def fly(
             pres = interval(fb, right, times, t, dt_ctl, left, offset, wind, record, every)
             t_new, q_new, v_new = step_records.new_samples(fb, record, start, blocks)
             if track is None:
-                refs = sample_reference(reference, t_new)
-                e_pos, e_vel, lat_new, v_air_new = straight_errors(refs, q_new, v_new, wind)
+                refs, *errors = path_errors(reference, t_new, q_new, v_new, wind)
+                e_pos, e_vel, lat_new, v_air_new = errors
                 v_along = v_new[:, 0]
                 lat_window = keep_last((lat_window,), (lat_new,), n_fit)[0]
                 y_ref = np.zeros(len(t_new))
