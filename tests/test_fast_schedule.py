@@ -171,3 +171,25 @@ def test_compiled_error_estimate_is_numpys(monkeypatch, per_beat):
         for a, b in zip(got[True], got[False]):
             assert np.array_equal(a, b)
     assert fast_window.estimate(windows[True]._rows, per_beat, per_beat, 0.1, 1.0) is None
+
+
+def test_remembered_exponentials_are_computed_ones(monkeypatch):
+    """``fast_schedule.exponentials`` answers a repeated argument set from its memo: the
+    same bits as computing them (numpy's ``exp`` of the same quotients), a fresh set for
+    a ``rel`` one bit away, and at most ``MEMO_SIZE`` sets kept."""
+    rng = np.random.default_rng(2)
+    monkeypatch.setattr(fast_schedule, "_EXPONENTIALS", {})
+    for _ in range(200):
+        rel = np.cumsum(np.full(16, rng.uniform(0.01, 0.1)))
+        tau, sig, dt = rng.uniform(1.0, 20.0), rng.uniform(1.0, 20.0), float(rel[-1])
+        first = fast_schedule.exponentials(tau, sig, rel, dt)
+        again = fast_schedule.exponentials(tau, sig, rel.copy(), dt)
+        assert all(a is b for a, b in zip(first, again))  # remembered
+        want = np.exp(np.concatenate([-rel / tau, -rel / sig, [-dt / tau, -dt / sig]]))
+        got = np.concatenate([first[0], first[1], [first[2], first[3]]])
+        assert np.array_equal(got, want)  # bitwise numpy's
+        near = rel.copy()
+        near[3] = np.nextafter(near[3], 1.0)
+        other = fast_schedule.exponentials(tau, sig, near, dt)
+        assert other[0] is not first[0] and other[0][3] == np.exp(-near[3] / tau)
+        assert len(fast_schedule._EXPONENTIALS) <= fast_schedule.MEMO_SIZE

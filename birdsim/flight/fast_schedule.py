@@ -71,13 +71,25 @@ else:  # pragma: no cover
     kernel = None
 
 
+#: :func:`exponentials`' answers by their arguments (a flight's intervals repeat a few
+#: dozen ``rel`` arrays: the steps' offsets from the interval's start, as summed)
+_EXPONENTIALS: dict = {}
+MEMO_SIZE = 64
+
+
 def exponentials(
     tau: float, sig: float, rel: np.ndarray, dt: float
 ) -> tuple[np.ndarray, np.ndarray, float, float]:
     """(exp(-rel / tau), exp(-rel / sig), exp(-dt / tau), exp(-dt / sig)): the
     reference's exponents (numpy's division, Python's for dt) in one ``np.exp`` call
     (numpy's exponential of an entry does not depend on the array around it: checked on
-    100 000 values at every offset and length up to 17)."""
+    100 000 values at every offset and length up to 17).  An earlier call's arrays where
+    the arguments have its bits (kept for :data:`MEMO_SIZE` argument sets; the callers
+    only read them)."""
+    key = (tau, sig, dt, rel.dtype.char, rel.tobytes())
+    hit = _EXPONENTIALS.get(key)
+    if hit is not None:
+        return hit
     T = rel.shape[0]
     arg = np.empty(2 * T + 2)
     neg = -rel
@@ -85,7 +97,11 @@ def exponentials(
     np.divide(neg, sig, out=arg[T : 2 * T])
     arg[2 * T], arg[2 * T + 1] = -dt / tau, -dt / sig
     e = np.exp(arg)
-    return e[:T], e[T : 2 * T], float(e[2 * T]), float(e[2 * T + 1])
+    out = e[:T], e[T : 2 * T], float(e[2 * T]), float(e[2 * T + 1])
+    if len(_EXPONENTIALS) >= MEMO_SIZE:
+        _EXPONENTIALS.clear()
+    _EXPONENTIALS[key] = out
+    return out
 
 
 def advance(
