@@ -193,3 +193,25 @@ def test_remembered_exponentials_are_computed_ones(monkeypatch):
         other = fast_schedule.exponentials(tau, sig, near, dt)
         assert other[0] is not first[0] and other[0][3] == np.exp(-near[3] / tau)
         assert len(fast_schedule._EXPONENTIALS) <= fast_schedule.MEMO_SIZE
+
+
+def test_compiled_tail_frame_is_tail_frame():
+    """The aero kernel's tail frame (``tail.frame_into`` compiled) is ``tail_frame`` of
+    the clipped controls to the bit, signs of zeros included: random controls within and
+    beyond the bounds, through ``aero_kernel.parameters`` of a bird's callback."""
+    from birdsim.mujoco.tail import frame_into, tail_frame
+
+    assert aero_kernel.frame_kernel is not None
+    rng = np.random.default_rng(4)
+    out, ref = np.empty((3, 3)), np.empty((3, 3))
+    for e, r in rng.uniform(-0.7, 0.7, (5000, 2)):
+        aero_kernel.frame_kernel(float(e), float(r), out)
+        frame_into(float(e), float(r), ref)
+        assert np.array_equal(out, ref) and np.array_equal(np.signbit(out), np.signbit(ref))
+    with FreeBird("m4", BIRD, _params("m4"), config=SimConfig(attitude="free")) as fb:
+        for e, s, r in rng.uniform(-1.0, 1.2, (200, 3)):
+            fb.cb.tail_controls = TailControls(float(e), float(s), float(r))
+            frame = aero_kernel.parameters(fb.cb)[2]
+            want = tail_frame(fb.cb.tail_controls.clipped())
+            assert np.array_equal(frame, want)
+            assert np.array_equal(np.signbit(frame), np.signbit(want))

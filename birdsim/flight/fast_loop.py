@@ -173,6 +173,11 @@ class _Plan:
             m.opt.wind,
         )  # fmt: skip
         self.gravity = m.opt.gravity  # its view, kept (as the wind's)
+        #: :func:`arguments`' fixed head (the static views, the slices' bounds, the sites)
+        slices = all(isinstance(s, slice) for s in (self.Pq, self.P, self.W))
+        bounds = (self.Pq.start, self.P.start, self.W.start, self.W.stop) if slices else ()
+        self.head = (*self.static, *bounds, *self.sites)
+        self.shape = (m.nq, m.nv)
         self.aero_for: tuple | None = None
         self.aero: tuple = ()
         self._weight: tuple | None = None
@@ -255,19 +260,18 @@ def arguments(fb, plan: _Plan, wind: np.ndarray, n: int, every: int) -> tuple[tu
     """:func:`run_steps`' arguments for ``n`` steps of ``fb`` under ``wind`` (written into
     ``m.opt.wind``): those before the prescription's three arrays, those after them up to
     ``every``, and the outputs (rec_q, rec_v, rec_out, stats), made new."""
-    m, cb = fb.m, fb.cb
     plan.sites[-1][:] = wind  # m.opt.wind (its view, kept: MjOption makes a new one per read)
     weight = plan.weight(fb)
     samples = (n + every - 1) // every
-    fl, ints, frame = plan.aero_arguments(cb)
+    fl, ints, frame = plan.aero_arguments(fb.cb)
     state = np.concatenate([fb.P, fb.X, fb.L])
     stats = np.array([0.0, 0.0, fb.root_applied_max])
-    args = (
-        *plan.static, plan.Pq.start, plan.P.start, plan.W.start, plan.W.stop, *plan.sites,
+    args = plan.head + (
         fl, ints, frame, state, weight, fb.h, fb.total_mass,
         bool(fb.config.momentum_projection), every,
     )  # fmt: skip
-    outs = (np.empty((samples, m.nq)), np.empty((samples, m.nv)), np.empty((samples, 10)), stats)
+    nq, nv = plan.shape
+    outs = (np.empty((samples, nq)), np.empty((samples, nv)), np.empty((samples, 10)), stats)
     return args, outs
 
 

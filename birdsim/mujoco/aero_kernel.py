@@ -28,7 +28,7 @@ import numpy as np
 
 from birdsim.mujoco import capi
 from birdsim.mujoco.callback import AeroCallback
-from birdsim.mujoco.tail import SPREAD_MIN, TailControls, plane_force, tail_frame
+from birdsim.mujoco.tail import SPREAD_MIN, TailControls, frame_into, plane_force, tail_frame
 from birdsim.physics.aero import SeedPolar
 from birdsim.physics.jit import numba
 
@@ -57,9 +57,16 @@ def parameters(cb: AeroCallback) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The callback's constants and switches for :func:`apply_aero`: (floats, ints,
     tail frame (3, 3): columns chord, span, normal in torso axes)."""
     ctl = cb.tail_controls if cb.tail else TailControls()
-    clipped = ctl.clipped()
-    floats, ints = constants(cb, clipped.spread)
-    return floats, ints, np.ascontiguousarray(tail_frame(clipped))
+    elevation, spread, roll = ctl.clipped_values()
+    floats, ints = constants(cb, spread)
+    if frame_kernel is None:  # pragma: no cover
+        return floats, ints, np.ascontiguousarray(tail_frame(TailControls(elevation, 1.0, roll)))
+    frame = np.empty((3, 3))
+    frame_kernel(elevation, roll, frame)
+    return floats, ints, frame
+
+
+frame_kernel = numba.njit(cache=True)(frame_into) if numba is not None else None
 
 
 def constants(cb: AeroCallback, spread: float) -> tuple[np.ndarray, np.ndarray]:

@@ -56,7 +56,11 @@ class TailControls:
     roll: float = 0.0
 
     def clipped(self) -> "TailControls":
-        return TailControls(
+        return TailControls(*self.clipped_values())
+
+    def clipped_values(self) -> tuple[float, float, float]:
+        """(elevation, spread, roll) of :meth:`clipped` as floats (no new object)."""
+        return (
             min(max(float(self.elevation), -ELEVATION_MAX), ELEVATION_MAX),
             min(max(float(self.spread), SPREAD_MIN), 1.0),
             min(max(float(self.roll), -ROLL_MAX), ROLL_MAX),
@@ -65,19 +69,23 @@ class TailControls:
 
 def tail_frame(controls: TailControls) -> np.ndarray:
     """Columns: the tail's chord (forward), span (left) and normal (up) in body axes."""
-    e, r = controls.elevation, controls.roll
+    out = np.empty((3, 3))
+    frame_into(controls.elevation, controls.roll, out)
+    return out
+
+
+def frame_into(e: float, r: float, out: np.ndarray) -> None:
+    """:func:`tail_frame` of the elevation ``e`` and roll ``r`` (rad) into ``out`` (3, 3)
+    (plain Python; :mod:`birdsim.mujoco.aero_kernel` compiles it: the C library's ``cos``
+    and ``sin`` there as in ``math``, the same bits)."""
     ce, se, cr, sr = math.cos(e), math.sin(e), math.cos(r), math.sin(r)
     # rot_x @ rot_y, rot_y = [[ce, 0, se], [0, 1, 0], [-se, 0, ce]] (trailing edge up),
     # rot_x = [[1, 0, 0], [0, cr, -sr], [0, sr, cr]] (right side down): each entry has one
     # product that is not an exact zero, so the matrix product's numbers in any order of
     # summation (cos > 0 within the clipped angles: a +0 term makes a zero +0)
-    return np.array(
-        [
-            [ce, 0.0, se + 0.0],
-            [sr * se + 0.0, cr, -sr * ce + 0.0],
-            [cr * -se + 0.0, sr + 0.0, cr * ce],
-        ]
-    )
+    out[0, 0], out[0, 1], out[0, 2] = ce, 0.0, se + 0.0
+    out[1, 0], out[1, 1], out[1, 2] = sr * se + 0.0, cr, -sr * ce + 0.0
+    out[2, 0], out[2, 1], out[2, 2] = cr * -se + 0.0, sr + 0.0, cr * ce
 
 
 def tail_cp_offset(tail_root: float, tail_length: float) -> np.ndarray:
@@ -142,5 +150,6 @@ __all__ = [
     "plane_force",
     "tail_cp_offset",
     "tail_force",
+    "frame_into",
     "tail_frame",
 ]
