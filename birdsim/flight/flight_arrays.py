@@ -29,7 +29,7 @@ def attitude_estimate(
     -- no Euler angles, so no gimbal lock at a steep body; before a whole wingbeat the
     missing samples are the start's."""
     if isinstance(window, tuple):  # the samples as two arrays (quat (n, 4), omega (n, 3))
-        quat, rate = (np.array(a, dtype=float) for a in window)
+        quat, rate = np.asarray(window[0], dtype=float), np.asarray(window[1], dtype=float)
         if not len(quat):
             window = []
     if not isinstance(window, tuple):
