@@ -60,7 +60,7 @@ def bank_command(window: list, per_beat: int, gravity: float, a_left_ref: float 
     if len(window) == 0 or gravity <= 0.0:  # a list of pairs or an (n, 2) array
         return 0.0
     n = FIT_BEATS * per_beat
-    yv = np.array(window, dtype=float)
+    yv = np.asarray(window, dtype=float)  # read only
     if len(yv) < n:
         yv = np.vstack([np.repeat(yv[:1], n - len(yv), axis=0), yv])
     y, vy = fit_matrix(n, TWO_PI)[0] @ yv
