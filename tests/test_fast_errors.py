@@ -72,3 +72,36 @@ def test_path_errors_are_sampling_then_errors(monkeypatch):
         for a, b in zip(got, want):
             assert np.array_equal(a, b)
     assert len(calls) == 3
+
+
+def test_straight_samples_are_errors_then_windows(monkeypatch):
+    """The fused call also appends the samples to the attitude window (quat, ``C_SEED``
+    omega) and the lateral one (y, vy) and keeps their last ``n_fit`` rows: bitwise
+    ``path_errors`` and ``keep_last``, from empty, partial and full windows."""
+    from birdsim.flight.flight_arrays import keep_last
+    from birdsim.flight.simulate import C_SEED
+
+    path = FlightPath("cruise", 4.0, False, False, (PathKeyframe(0.0, 6.0, V=0.9),))
+    calls: list = []
+    kernel = fast_errors.samples_kernel
+    monkeypatch.setattr(fast_errors, "samples_kernel", lambda *a: calls.append(1) or kernel(*a))
+    rng = np.random.default_rng(13)
+    for old, n, n_fit in ((0, 2, 16), (5, 2, 16), (15, 2, 16), (16, 2, 16), (3, 8, 4), (0, 1, 1)):
+        t = np.sort(rng.uniform(0.0, 20.0, n))
+        q, v = rng.normal(size=(n, 22)), rng.normal(size=(n, 21))
+        wind = rng.normal(size=3) * 0.1
+        att = (rng.normal(size=(old, 4)), rng.normal(size=(old, 3)))
+        lat = rng.normal(size=(old, 2))
+        refs, e_pos, e_vel, v_air, att_new, lat_new = fast_errors.straight_samples(
+            path, t, q, v, wind, att, lat, n_fit
+        )
+        want = fast_errors.path_errors(path, t, q, v, wind)
+        for a, b in zip(
+            (refs["x"], refs["z"], e_pos, e_vel, v_air), (*want[0].values(), *want[1:3], want[4])
+        ):
+            assert np.array_equal(a, b)
+        want_att = keep_last(att, (q[:, 3:7], C_SEED * v[:, 3:6]), n_fit)
+        want_lat = keep_last((lat,), (want[3],), n_fit)[0]
+        for a, b in zip((*att_new, lat_new), (*want_att, want_lat)):
+            assert a.shape == b.shape and np.array_equal(a, b)
+    assert len(calls) == 6

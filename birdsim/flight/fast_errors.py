@@ -18,6 +18,8 @@ from typing import Any
 import numpy as np
 
 from birdsim.flight import fast_path
+from birdsim.flight.flight_arrays import keep_last
+from birdsim.flight.simulate import C_SEED
 from birdsim.flight.trim import sample_reference
 from birdsim.physics.jit import numba
 
@@ -60,10 +62,43 @@ def _path_errors(cx, xx, cz, xz, t, q_new, v_new, wind, refs, e_pos, e_vel, lat_
     )
 
 
+def _keep_last(old, new, out):
+    """``out`` (m, k) = the last m rows of ``old`` (n_old, k) followed by ``new`` (n, k)
+    (``flight_arrays.keep_last``'s ``np.concatenate([old, new])[-m:]``)."""
+    n_old = old.shape[0]
+    skip = n_old + new.shape[0] - out.shape[0]
+    for r in range(out.shape[0]):
+        s = skip + r
+        if s < n_old:
+            out[r, :] = old[s, :]
+        else:
+            out[r, :] = new[s - n_old, :]
+
+
+def _samples(
+    cx, xx, cz, xz, t, q_new, v_new, wind, refs, e_pos, e_vel, lat_new, v_air, c_seed,
+    quat, omega, lat, new_quat, new_omega, new_lat,
+):  # fmt: skip
+    """:func:`_path_errors`, then the attitude window (``quat`` (., 4), ``omega`` (., 3):
+    MuJoCo's quaternions and ``c_seed`` times the body rates) and the lateral one (``lat``
+    (., 2): y, vy) with the samples appended, their last rows into ``new_*``."""
+    _path_errors(cx, xx, cz, xz, t, q_new, v_new, wind, refs, e_pos, e_vel, lat_new, v_air)
+    n = q_new.shape[0]
+    rates = np.empty((n, 3))
+    for i in range(n):
+        for j in range(3):
+            rates[i, j] = c_seed[j] * v_new[i, 3 + j]
+    _keep_last(quat, q_new[:, 3:7], new_quat)
+    _keep_last(omega, rates, new_omega)
+    _keep_last(lat, lat_new, new_lat)
+
+
 _errors_jit, _curve = kernel, fast_path.values_kernel
-path_kernel = (
-    numba.njit(cache=True)(_path_errors) if kernel is not None and _curve is not None else None
-)
+path_kernel = samples_kernel = None
+if kernel is not None and _curve is not None:
+    _path_errors = numba.njit(cache=True)(_path_errors)
+    _keep_last = numba.njit(cache=True)(_keep_last)
+    path_kernel, samples_kernel = _path_errors, numba.njit(cache=True)(_samples)
 
 
 def path_errors(
@@ -82,6 +117,39 @@ def path_errors(
     e_pos, e_vel, lat_new, v_air = np.empty((n, 2)), np.empty((n, 2)), np.empty((n, 2)), np.empty(n)
     path_kernel(*curves, t, q_new, v_new, wind, refs, e_pos, e_vel, lat_new, v_air)
     return {"x": refs[0], "z": refs[3]}, e_pos, e_vel, lat_new, v_air.tolist()
+
+
+def straight_samples(
+    reference: Any,
+    t: np.ndarray,
+    q_new: np.ndarray,
+    v_new: np.ndarray,
+    wind: np.ndarray,
+    att_window: tuple[np.ndarray, np.ndarray],
+    lat_window: np.ndarray,
+    n_fit: int,
+) -> tuple:
+    """(refs, e_pos, e_vel, airspeeds) of :func:`path_errors`, then the attitude window
+    (quat, ``C_SEED`` omega) and the lateral window (y, vy) with the samples appended,
+    their last ``n_fit`` rows (``flight_arrays.keep_last``): in one compiled call where
+    :func:`path_errors` makes one, the same numbers."""
+    curves = fast_path.path_curves(reference) if ENABLED and samples_kernel is not None else None
+    quat, omega = att_window
+    n = q_new.shape[0]
+    if curves is None or n_fit < 1 or lat_window.shape[1:] != (2,) or not len(t):
+        refs, e_pos, e_vel, lat_new, v_air = path_errors(reference, t, q_new, v_new, wind)
+        att_window = keep_last(att_window, (q_new[:, 3:7], C_SEED * v_new[:, 3:6]), n_fit)
+        return refs, e_pos, e_vel, v_air, att_window, keep_last((lat_window,), (lat_new,), n_fit)[0]
+    refs = np.empty((6, n))
+    e_pos, e_vel, lat_new, v_air = np.empty((n, 2)), np.empty((n, 2)), np.empty((n, 2)), np.empty(n)
+    m_att, m_lat = min(len(quat) + n, n_fit), min(len(lat_window) + n, n_fit)
+    new_quat, new_omega, new_lat = np.empty((m_att, 4)), np.empty((m_att, 3)), np.empty((m_lat, 2))
+    samples_kernel(
+        *curves, t, q_new, v_new, wind, refs, e_pos, e_vel, lat_new, v_air, C_SEED, quat, omega,
+        lat_window, new_quat, new_omega, new_lat,
+    )  # fmt: skip
+    refs_xz = {"x": refs[0], "z": refs[3]}
+    return refs_xz, e_pos, e_vel, v_air.tolist(), (new_quat, new_omega), new_lat
 
 
 def straight_errors(
@@ -106,4 +174,13 @@ def straight_errors(
     return e_pos, e_vel, lat_new, v_air.tolist()
 
 
-__all__ = ["ENABLED", "air_speeds", "kernel", "path_errors", "path_kernel", "straight_errors"]
+__all__ = [
+    "ENABLED",
+    "air_speeds",
+    "kernel",
+    "path_errors",
+    "path_kernel",
+    "samples_kernel",
+    "straight_errors",
+    "straight_samples",
+]

@@ -23,7 +23,7 @@ from birdsim.flight.attitude import FIT_BEATS
 from birdsim.flight.attitude_commands import bank_command, body_rates, command_filter
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.demand_schedule import DemandSchedule, RefState
-from birdsim.flight.fast_errors import air_speeds, path_errors
+from birdsim.flight.fast_errors import air_speeds, straight_samples
 from birdsim.flight.fast_interval import interval
 from birdsim.flight.flight_arrays import attitude_estimate, extend_rows, flight_arrays, keep_last
 from birdsim.flight.float_ops import clip_float
@@ -350,11 +350,10 @@ def fly(
             pres = interval(fb, right, times, t, dt_ctl, left, offset, wind, record, every)
             t_new, q_new, v_new = step_records.new_samples(fb, record, start, blocks)
             if track is None:
-                refs, *errors = path_errors(reference, t_new, q_new, v_new, wind)
-                e_pos, e_vel, lat_new, v_air_new = errors
-                v_along = v_new[:, 0]
-                lat_window = keep_last((lat_window,), (lat_new,), n_fit)[0]
-                y_ref = np.zeros(len(t_new))
+                refs, e_pos, e_vel, v_air_new, att_window, lat_window = straight_samples(
+                    reference, t_new, q_new, v_new, wind, att_window, lat_window, n_fit
+                )
+                v_along, y_ref = v_new[:, 0], np.zeros(len(t_new))
             else:
                 e_pos, e_vel, v_along, lateral, refs = track.errors(
                     t_new, q_new[:, :3], v_new[:, :3]
@@ -362,8 +361,8 @@ def fly(
                 lat_window.extend(map(tuple, lateral))
                 del lat_window[: max(0, len(lat_window) - n_fit)]
                 y_ref, v_air_new = refs["y"], air_speeds(v_new, wind)  # |v - wind|
+                att_window = keep_last(att_window, (q_new[:, 3:7], C_SEED * v_new[:, 3:6]), n_fit)
             window.add_many(e_pos, e_vel, v_along)
-            att_window = keep_last(att_window, (q_new[:, 3:7], C_SEED * v_new[:, 3:6]), n_fit)
             rows["V_air"].extend(v_air_new)
             rows["params"].extend(pres.params[: len(t_new) * every : every])
             rows["pitch_command"].extend(
