@@ -40,9 +40,10 @@ def test_the_rocking_moment_is_nose_down_in_the_climb_out_and_scales_with_the_ro
 
 @pytest.mark.slow  # ~10 s on this machine, with the table's load
 def test_pigeon_take_off_pitch_with_the_rocking_moment():
-    """The pigeon's free take-off (m3): wingbeat-mean pitch 6.09 degrees RMS from the
-    command after two wingbeats (7.79 without the rocking's moment: this fails there;
-    the issue's target is 3), no saturated sample, the path within 1.5 x the posed."""
+    """The pigeon's free take-off (m3): wingbeat-mean pitch 4.43 degrees RMS from the
+    command after two wingbeats (7.79 without the rocking's moment, 6.09 with it measured
+    only at the Jacobians' 0.1 rad steps: this fails on both; the issue's target is 3),
+    no saturated sample, the path within 1.5 x the posed."""
     from birdsim.commands.fly import load_table_for
     from birdsim.flight.attitude_summary import attitude_figures
     from birdsim.flight.flightlog import log_arrays, summary
@@ -56,7 +57,7 @@ def test_pigeon_take_off_pitch_with_the_rocking_moment():
     r = fly(PATH_PRESETS["take-off"], table, bird, "m3", config=SimConfig(attitude="free"))
     att = attitude_figures(r.arrays)
     s = summary(log_arrays(r, "take-off"))
-    assert att["wingbeat_mean_pitch_rms_error_deg"] < 7.0
+    assert att["wingbeat_mean_pitch_rms_error_deg"] < 5.5
     assert att["attitude_saturated_samples"] == 0 and s["wingbeats_saturated"] == 0
     assert s["rms_error_after_start"] < 0.0228
     assert r.meta["root_applied_max"] == 0.0

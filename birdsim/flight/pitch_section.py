@@ -67,6 +67,13 @@ SECTION_BEATS = 1.0
 #: loop's pitch integral takes it over when the loop is left (tenth stage: the pigeon's
 #: take-off pitch 7.79 -> 6.09 degrees RMS; docs/free-body.md).
 ROCKING_MOMENT = True
+#: While the loop is on, the attitude loop's Jacobians, ``M_0`` and the rocking's moment
+#: are measured again when the command has moved by this much since (rad; elsewhere
+#: :data:`birdsim.flight.attitude.JAC_DPITCH`, 0.1): the model is piecewise constant,
+#: and at 0.1 rad its ``M_0`` with the rocking's moment stepped by up to 0.003 table
+#: units in the take-off's climb-out (the pigeon's take-off pitch 6.09 degrees RMS; at
+#: 0.04 and 0.02 rad 4.43 and 4.52: converged; tenth stage).
+SECTION_JAC_DPITCH = 0.04
 
 
 def section_map(
@@ -195,6 +202,8 @@ class SectionPitch:
         self.v = -float(k @ x)
         demand = model.inertia * (ref[2] + self.v) - model.m0
         demand += model.stiffness * (ref[0] - model.theta_j) - model.d_qq * ref[1]
+        if abs(att._jac[3] - ref[0]) > SECTION_JAC_DPITCH:  # measured again this step
+            att._jac = None
         return float(obs.state[0]), float(obs.state[1]), demand
 
 
@@ -223,6 +232,7 @@ __all__ = [
     "QUAD_OFFSET_BEATS",
     "ROCKING_MOMENT",
     "SECTION_BEATS",
+    "SECTION_JAC_DPITCH",
     "SECTION_LOOP",
     "SectionPitch",
     "placed_gain",
