@@ -106,7 +106,8 @@ def test_the_gate_enters_slow_and_holds_while_the_tail_has_no_stiffness():
     jac[1, [name for name, _, _ in INPUTS].index("dihedral")] = -0.2
     att = SimpleNamespace(
         inertia=np.ones(3), stiffness=np.zeros(3), rate_jac=np.zeros((3, 3)),
-        _jac=(0.0, np.zeros(3), jac, 0.0), u=np.zeros(n_in), integral=np.zeros(3),
+        _jac=(0.0, np.zeros(3), jac, 0.1),  # measured at the command, as flights do
+        u=np.zeros(n_in), integral=np.zeros(3),
         saturated=False, enabled=True, straight=True,
     )  # fmt: skip
     window = (np.array([pitch_quat(0.1)] * per_beat), np.zeros((per_beat, 3)))

@@ -231,25 +231,12 @@ def held_mean_moments(
     phases, once per body rate in ``omegas`` (seed body axes): the measurement
     :func:`measured_rate_derivatives`, :mod:`birdsim.flight.attitude_stiffness` and
     :mod:`birdsim.flight.attitude_refresh` share."""
-    m, cb, sched = fb.m, fb.cb, fb.schedule
+    m, cb = fb.m, fb.cb
     d = getattr(fb, "_jac_data", None)
     if d is None:
         d = fb._jac_data = mujoco.MjData(m)
     n = JAC_SAMPLES
-    times = np.arange(n) * (fb.red.period / n)
-    names = sched.names
-    u = np.zeros(len(INPUTS)) if inputs is None else np.asarray(inputs, dtype=float)
-    right, left, sh, tail = split_inputs(names, params, u)
-    z = np.zeros((n, len(names)))
-    sw = np.repeat([np.concatenate([sh, sh])], n, axis=0)
-    pres = sched.prescribe(
-        times,
-        np.repeat([right], n, axis=0),
-        z,
-        z,
-        left=(np.repeat([left], n, axis=0), z, z),
-        shoulder=(sw, np.zeros_like(sw), np.zeros_like(sw)),
-    )
+    pres, tail = held_prescription(fb, params, inputs, n)
     c = np.array([1.0, -1.0, -1.0])  # seed <-> MuJoCo axes
     wind = m.opt.wind.copy()
     saved = cb.tail_controls
@@ -268,6 +255,30 @@ def held_mean_moments(
         m.opt.wind[:] = wind
         cb.tail_controls = saved
     return out
+
+
+def held_prescription(
+    fb, params: np.ndarray, inputs: np.ndarray | None, n: int
+) -> tuple[object, TailControls]:
+    """(the prescription of ``n`` phases of one wingbeat of ``params`` with the inputs
+    ``inputs`` (:data:`INPUTS`; None: every input at zero), the tail's controls): what
+    the held body beats in :func:`held_mean_moments`."""
+    sched = fb.schedule
+    times = np.arange(n) * (fb.red.period / n)
+    names = sched.names
+    u = np.zeros(len(INPUTS)) if inputs is None else np.asarray(inputs, dtype=float)
+    right, left, sh, tail = split_inputs(names, params, u)
+    z = np.zeros((n, len(names)))
+    sw = np.repeat([np.concatenate([sh, sh])], n, axis=0)
+    pres = sched.prescribe(
+        times,
+        np.repeat([right], n, axis=0),
+        z,
+        z,
+        left=(np.repeat([left], n, axis=0), z, z),
+        shoulder=(sw, np.zeros_like(sw), np.zeros_like(sw)),
+    )
+    return pres, tail
 
 
 def _unit(i: int) -> np.ndarray:
@@ -307,6 +318,8 @@ __all__ = [
     "JAC_STEP",
     "RATE_STEP",
     "SHOULDER_BOUND",
+    "held_mean_moments",
+    "held_prescription",
     "measured_jacobian",
     "measured_rate_derivatives",
     "measured_with_rocking",

@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -41,6 +42,7 @@ from scipy.linalg import expm
 from birdsim.flight.attitude_jacobians import INPUTS
 from birdsim.flight.flight_arrays import error_rotvec
 from birdsim.flight.pitch_observer import SLOW_SPEED, PitchObserver, loop_model
+from birdsim.flight.pitch_rocking import rocking_pitch_moment
 from birdsim.flight.wingbeat import INPUT_SMOOTHING_BEATS
 
 TWO_PI = 2.0 * math.pi  # one wingbeat in reduced time units
@@ -59,6 +61,19 @@ SECTION_LOOP = True
 QUAD_OFFSET_BEATS = 1.0 / 16.0
 #: Wingbeats per time constant of the closed loop's three slow poles.
 SECTION_BEATS = 1.0
+#: The loop's model counts the body's rocking's rectified moment in ``M_0``
+#: (:func:`birdsim.flight.pitch_rocking.rocking_pitch_moment`, measured once per
+#: measurement of the attitude loop's Jacobians while the loop is on), and the attitude
+#: loop's pitch integral takes it over when the loop is left (tenth stage: the pigeon's
+#: take-off pitch 7.79 -> 6.09 degrees RMS; docs/free-body.md).
+ROCKING_MOMENT = True
+#: While the loop is on, the attitude loop's Jacobians, ``M_0`` and the rocking's moment
+#: are measured again when the command has moved by this much since (rad; elsewhere
+#: :data:`birdsim.flight.attitude.JAC_DPITCH`, 0.1): the model is piecewise constant,
+#: and at 0.1 rad its ``M_0`` with the rocking's moment stepped by up to 0.003 table
+#: units in the take-off's climb-out (the pigeon's take-off pitch 6.09 degrees RMS; at
+#: 0.04 and 0.02 rad 4.43 and 4.52: converged; tenth stage).
+SECTION_JAC_DPITCH = 0.04
 
 
 def section_map(
@@ -93,10 +108,13 @@ def placed_gain(phi: np.ndarray, gamma: np.ndarray, poles: list[float]) -> np.nd
 class SectionPitch:
     """The estimate and the discrete loop of one flight (see the module).  ``att`` the
     attitude loop (its last measurement's model, the inputs it commanded), ``per_beat``
-    log samples per wingbeat (a multiple of 16), ``dt_ctl`` the control step (time units)."""
+    log samples per wingbeat (a multiple of 16), ``dt_ctl`` the control step (time units);
+    ``rocking``: the model counts the rocking's rectified moment (``att`` a flight's
+    :class:`birdsim.flight.attitude.AttitudeLoop`: its bird and the wingbeat it measured at)."""
 
-    def __init__(self, att: Any, per_beat: int, dt_ctl: float):
+    def __init__(self, att: Any, per_beat: int, dt_ctl: float, rocking: bool = False):
         self.att = att
+        self.with_rocking = rocking
         self.dt = dt_ctl
         self.tau = INPUT_SMOOTHING_BEATS * TWO_PI
         self.quarter = per_beat // 4
@@ -108,6 +126,8 @@ class SectionPitch:
         self.f = np.zeros(3)  # the loop's (f1, f2, z)
         self.v = 0.0  # the commanded acceleration (per unit inertia)
         self._design: dict = {}
+        self._rock_for: object = None  # the attitude loop's M_0 the moment below is for
+        self._rock = 0.0  # the rocking's rectified moment (table units)
 
     def _gain(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(Phi, Gamma, K) for the last measurement's inertia, stiffness and damping."""
@@ -118,6 +138,21 @@ class SectionPitch:
             p, p_f = math.exp(-self.dt / (SECTION_BEATS * TWO_PI)), math.exp(-self.dt / self.tau)
             self._design[key] = (phi, gam, placed_gain(phi, gam, [p, p, p, p_f, p_f]))
         return self._design[key]
+
+    def rocking(self) -> float:
+        """The rocking's rectified pitching moment at the attitude loop's last measurement
+        (its pitch, airspeed and wingbeat; table units); 0 without ``rocking``."""
+        att = self.att
+        if not self.with_rocking:
+            return 0.0
+        speed, m0, _, pitch = att._jac
+        if self._rock_for is not m0:  # once per measurement of M_0
+            inertia = float(att.inertia[1])
+            self._rock = rocking_pitch_moment(
+                att.fb, att.check.at, pitch, max(speed, 0.0), inertia
+            )[0]
+            self._rock_for = m0
+        return self._rock
 
     def step(
         self, window: tuple, ref: tuple[float, float, float], airspeed: float
@@ -133,6 +168,8 @@ class SectionPitch:
         # entered below SLOW_SPEED, kept on while the tail has no pitch stiffness
         slow = (airspeed < SLOW_SPEED or self.on) and att.stiffness[1] <= 1e-9  # (round-off)
         if not (slow and att.enabled and att.straight and att._jac is not None):
+            if self.on:  # the attitude loop's pitch integral holds the rocking's moment now
+                att.integral[1] -= self._rock / float(att.inertia[1])
             self.on = False
             return None
         if len(quat) <= self.offset + 3 * self.quarter:
@@ -142,11 +179,15 @@ class SectionPitch:
         q = float(np.mean(omega[idx, 1]))
         phi, gam, k = self._gain()
         model = loop_model(att)  # the last measurement's (unchanged within the step)
+        rock = self.rocking()
+        model = replace(model, m0=model.m0 + rock) if rock else model
         lag_t = self.lag * obs.dt
         if not self.on:  # start at the samples' means, carried on as a free motion; the
-            # integral where it holds the attitude loop's integral's acceleration
+            # integral where it holds the attitude loop's integral's acceleration (which
+            # held the rocking's moment too)
             obs.start(theta + q * lag_t, q, 0.0, att.u)
-            self.f = np.array([0.0, 0.0, -float(att.integral[1]) / k[4]])
+            share = float(att.integral[1]) + rock / model.inertia
+            self.f = np.array([0.0, 0.0, -share / k[4]])
             self.on = True
         else:  # predict over the step just flown, then move onto the measured means
             obs.predict(model, att.u, int(round(self.dt / obs.dt)))
@@ -161,6 +202,8 @@ class SectionPitch:
         self.v = -float(k @ x)
         demand = model.inertia * (ref[2] + self.v) - model.m0
         demand += model.stiffness * (ref[0] - model.theta_j) - model.d_qq * ref[1]
+        if abs(att._jac[3] - ref[0]) > SECTION_JAC_DPITCH:  # measured again this step
+            att._jac = None
         return float(obs.state[0]), float(obs.state[1]), demand
 
 
@@ -171,7 +214,8 @@ def section_source(att: Any, per_beat: int, dt_ctl: float, straight: bool) -> Ca
     (:data:`SECTION_LOOP`, ``straight``) the section's (:class:`SectionPitch`; ``err`` and
     ``rates`` copied with their pitch entries replaced), else the fit's pitch (``ref[0]
     - err[1]``), ``err``, ``rates`` and None."""
-    sec = SectionPitch(att, per_beat, dt_ctl) if SECTION_LOOP and straight else None
+    on = SECTION_LOOP and straight
+    sec = SectionPitch(att, per_beat, dt_ctl, rocking=ROCKING_MOMENT) if on else None
 
     def source(window: tuple, ref: tuple, err: Any, rates: Any, airspeed: float) -> tuple:
         out = None if sec is None else sec.step(window, ref, airspeed)
@@ -186,7 +230,9 @@ def section_source(att: Any, per_beat: int, dt_ctl: float, straight: bool) -> Ca
 
 __all__ = [
     "QUAD_OFFSET_BEATS",
+    "ROCKING_MOMENT",
     "SECTION_BEATS",
+    "SECTION_JAC_DPITCH",
     "SECTION_LOOP",
     "SectionPitch",
     "placed_gain",
