@@ -117,3 +117,21 @@ def test_a_table_for_one_power_cost_does_not_serve_another() -> None:
     assert not same_reduced_bird(pos, heavy)
     # the wing's reduced mass is what counts: half the fraction of twice the mass serves
     assert same_reduced_bird(heavy, Bird(power_cost="positive", wing_mass_fraction=0.03, mass=2.0))
+
+
+def test_a_positive_cost_trim_reports_the_net_aerodynamic_power() -> None:
+    from birdsim.tables.optimize import slsqp
+    from birdsim.validation.run import load_flying_bird
+    from birdsim.validation.trim import TrimProblem, _point
+
+    pigeon = load_flying_bird(None)
+    bird = dataclasses.replace(pigeon, power_cost="positive", wing_mass_fraction=0.06)
+    model = get_model("m5")
+    x0 = np.array([0.0, 0.49, 0.27, 0.37, 0.07, 0.05, 1.57, 0.41, -0.89, 0.0])
+    problem = TrimProblem(model, bird, 9.0)
+    point = _point(problem, slsqp(problem, x0))
+    cyc = evaluate_cycle(model, point.params, 9.0, bird=pigeon, n=64, check_bounds=False)
+    assert point.trimmed
+    assert point.power == pytest.approx(2.0 * float(cyc.mean.P), rel=1e-9)
+    positive = 2.0 * float(positive_power(cyc, bird))
+    assert positive > point.power * 1.02  # the cost's power is not what is reported
