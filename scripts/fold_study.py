@@ -29,6 +29,7 @@ import numpy as np
 from birdsim.physics.bird import Bird
 from birdsim.physics.cycle import evaluate_cycle
 from birdsim.physics.kinematics import KinematicModel, get_model
+from birdsim.physics.shaft_power import positive_power
 from birdsim.physics.span import span_ratio
 from birdsim.validation.trim import TrimPoint, trim_sweep
 
@@ -60,11 +61,11 @@ def with_upper(upper: dict[str, float]) -> KinematicModel:
 def histories(model: KinematicModel, bird: Bird, p: TrimPoint) -> dict[str, float]:
     """Positive-only power [W] and the upstroke's share of the weight of a trimmed beat."""
     c = evaluate_cycle(model, p.params, p.speed, bird=bird, n=N, check_bounds=False)
-    power = 2.0 * np.asarray(c.power).ravel()
     fz = 2.0 * np.asarray(c.force_earth)[..., 2].ravel()
     up = np.cos(np.arange(N) * 2.0 * math.pi / N) < 0.0
     weight = bird.mass * bird.gravity
-    return {"positive": float(np.maximum(power, 0.0).mean()), "up": -fz[up].sum() / N / weight}
+    positive = 2.0 * float(np.asarray(positive_power(c, bird)).ravel()[0])
+    return {"positive": positive, "up": -fz[up].sum() / N / weight}
 
 
 def _line(model: KinematicModel, bird: Bird, p: TrimPoint, cost: float) -> str:

@@ -96,6 +96,14 @@ class Bird:
     leg_mass_fraction: float = 0.04
     #: toe span of one foot, front toe tip to hind toe tip [length]: the foot's grip
     toe_span: float = 0.155
+    # ---- the optimiser's power (issue 24; birdsim/physics/shaft_power.py).  "net": the
+    # cycle-mean aerodynamic power (negative work credited, today's cost); "positive":
+    # the mean of the positive part of aerodynamic plus inertial power (work the muscles
+    # cannot recover).  Left out of ``to_dict`` at their defaults (files stay as before).
+    power_cost: str = "net"
+    #: ONE wing's mass as a fraction of the bird's, lumped at the panels' control points
+    #: by area (only the "positive" power cost reads it; 0: massless wings)
+    wing_mass_fraction: float = 0.0
 
     def __post_init__(self) -> None:
         for name in ("leg_length", "toe_span"):
@@ -162,6 +170,16 @@ class Bird:
             )
         if not isinstance(self.polar, Polar):
             raise BirdConfigError(f"bird.polar={self.polar!r} is invalid; allowed: a Polar object")
+        if self.power_cost not in POWER_COSTS:
+            raise BirdConfigError(
+                f"bird.power_cost={self.power_cost!r} is invalid; allowed: {' or '.join(POWER_COSTS)}"
+            )
+        v = self.wing_mass_fraction
+        if not (_is_number(v) and 0.0 <= v <= 0.5):
+            raise BirdConfigError(
+                f"bird.wing_mass_fraction={v!r} is invalid; allowed: a number in [0, 0.5] "
+                "(one wing's share of the bird's mass)"
+            )
 
     def panels(self, model: str) -> tuple[PanelGeometry, ...]:
         """The wing panels of ``model``: one for base..m3, arm and hand for m4."""
@@ -185,6 +203,9 @@ class Bird:
         d = {f.name: getattr(self, f.name) for f in fields(self) if f.name != "polar"}
         d["body_inertia"] = list(self.body_inertia)
         d["polar"] = self.polar.to_dict()
+        for name, default in _COST_DEFAULTS.items():
+            if d[name] == default:
+                del d[name]  # bird files and tables written before the option, unchanged
         return d
 
     @classmethod
@@ -291,6 +312,11 @@ FLIGHT_FIELDS = (
     "toe_span",
 )
 
+#: The optimiser's power measures (the ``power_cost`` field).
+POWER_COSTS = ("net", "positive")
+#: Fields left out of ``to_dict`` at these (default) values.
+_COST_DEFAULTS = {"power_cost": "net", "wing_mass_fraction": 0.0}
+
 #: m5's skeleton: (field, lower, upper, what is allowed and why).  Estimates, not
 #: measured ranges (docs/conventions.md): the elbow strictly inside the arm (a humerus and
 #: a forearm of non-zero length); the wrist flexing between not at all and twice the
@@ -342,4 +368,4 @@ def _parse_value(key: str, raw: str, kind: type) -> Any:
     return _parse_number(key, raw)
 
 
-__all__ = ["FLIGHT_FIELDS", "Bird", "PanelGeometry", "asdict"]
+__all__ = ["FLIGHT_FIELDS", "POWER_COSTS", "Bird", "PanelGeometry", "asdict"]

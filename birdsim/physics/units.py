@@ -118,6 +118,15 @@ def same_reduced_bird(a: Bird, b: Bird, *, rel_tol: float = 1e-9) -> bool:
 
     for key in ("name", "mass", "gravity", *FLIGHT_FIELDS):  # not the wings' business
         da.pop(key), db.pop(key)
+    for key in ("power_cost", "wing_mass_fraction"):  # left out of to_dict at their defaults
+        da.pop(key, None), db.pop(key, None)
+    if ra.power_cost != rb.power_cost or not math.isclose(  # the optimiser's power measure
+        ra.wing_mass_fraction * ra.mass,
+        rb.wing_mass_fraction * rb.mass,
+        rel_tol=rel_tol,
+        abs_tol=1e-12,
+    ):
+        return False
     if ra.induced_velocity or rb.induced_velocity:
         da["c_over_s"], db["c_over_s"] = a.chord / a.semispan, b.chord / b.semispan
     for key, va in da.items():

@@ -8,7 +8,10 @@
                                         norm of the parameter change, radians)
 
 Fx, Fz and P are the dissertation's force (right wing + body drag, seed earth axes,
-Fz < 0 is up) and the cycle-mean mechanical power of that wing.  Every function here
+Fz < 0 is up) and the cycle-mean mechanical power of that wing; for a bird with
+``power_cost = "positive"`` P is instead the mean positive part of that wing's
+aerodynamic plus inertial power (:mod:`birdsim.physics.shaft_power`; numpy histories,
+gradients by central differences).  Every function here
 is vectorised: parameter sets are rows of ``X`` (shape ``B x d``, columns in
 ``model.param_names`` order) and demands broadcast against the batch.
 
@@ -28,6 +31,7 @@ from birdsim.physics.aero import body_drag
 from birdsim.physics.bird import Bird
 from birdsim.physics.cycle import DEFAULT_SAMPLES, evaluate_cycle, sample_phases
 from birdsim.physics.kinematics import KinematicModel
+from birdsim.physics.shaft_power import positive_power
 
 #: Names of the cost fractions, in the order of the last axis of ``fractions``.
 FRACTION_NAMES = ("force_x", "force_z", "power", "other")
@@ -121,18 +125,27 @@ def forces(
     Bounds are not checked: optimisers probe a hair outside them for finite differences.
     """
     X = np.asarray(X, dtype=float)
-    if X.ndim == 2 and not bird.induced_velocity:
+    net = bird.power_cost == "net"
+    if X.ndim == 2 and not bird.induced_velocity and net:
         out = _kernel_forces(model, X, speed, bird, n, climb)
         if out is not None:
             return out
     params = {name: X[..., i] for i, name in enumerate(model.param_names)}
-    mean = evaluate_cycle(
-        model, params, speed, climb=climb, bird=bird, n=n, check_bounds=False
-    ).mean
+    cyc = evaluate_cycle(
+        model,
+        params,
+        speed,
+        climb=climb,
+        bird=bird,
+        n=n,
+        check_bounds=False,
+        backend="kernel" if net else "numpy",
+    )
+    mean = cyc.mean
     return (
         np.asarray(mean.Fx, dtype=float),
         np.asarray(mean.Fz, dtype=float),
-        np.asarray(mean.P, dtype=float),
+        np.asarray(mean.P if net else positive_power(cyc, bird), dtype=float),
     )
 
 
@@ -168,7 +181,11 @@ def forces_and_gradients(
     v = np.ascontiguousarray(np.broadcast_to(np.asarray(speed, dtype=float), (B,)))
     vc = np.ascontiguousarray(np.broadcast_to(np.asarray(climb, dtype=float), (B,)))
     flat = {name: np.ascontiguousarray(X[:, i]) for i, name in enumerate(model.param_names)}
-    out = kernel.means_and_gradients(model, flat, v, vc, bird, sample_phases(n, False))
+    out = (
+        kernel.means_and_gradients(model, flat, v, vc, bird, sample_phases(n, False))
+        if bird.power_cost == "net"
+        else None
+    )
     if out is None:
         steps = FD_STEP * np.eye(d)
         Y = np.concatenate(

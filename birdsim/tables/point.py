@@ -152,11 +152,13 @@ class PointForces:
         cls, model: KinematicModel, bird: Bird, speed: float, climb: float, n: int
     ) -> PointForces | None:
         """A :class:`PointForces`, or None where the kernel cannot serve it (no JIT, a
-        polar it does not know, induced velocity on, or joint motions not affine)."""
+        polar it does not know, induced velocity on, a power cost other than the net
+        power, or joint motions not affine)."""
         if (
             not kernel.available()
             or not kernel.supported(bird)
             or bird.induced_velocity
+            or bird.power_cost != "net"
             or not _affine(model, bird)
         ):
             return None

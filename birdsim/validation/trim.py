@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -193,8 +193,13 @@ def check_flying_bird(bird: Bird) -> None:
 
 
 def _point(problem: TrimProblem, sol: Solution) -> TrimPoint:
-    """Re-evaluate the solution at N_CHECK samples; SI power and residuals / weight."""
-    check = TrimProblem(problem.model, problem.bird_si, problem.speed_si, n=N_CHECK)
+    """Re-evaluate the solution at N_CHECK samples; SI power and residuals / weight.  The
+    power is the net aerodynamic power whatever the bird's ``power_cost`` (the one the
+    measurements compare with); the cost is the optimiser's."""
+    bird = problem.bird_si
+    if bird.power_cost != "net":
+        bird = replace(bird, power_cost="net")
+    check = TrimProblem(problem.model, bird, problem.speed_si, n=N_CHECK)
     fx, fz, p = check.achieved(sol.x)
     w = problem.weight
     rx, rz = 2.0 * fx / w, (2.0 * fz + w) / w
@@ -221,11 +226,13 @@ def trim_sweep(
     extra_starts: Sequence[np.ndarray | None] | None = None,
     label: str = "seed polar",
     backward: bool = True,
+    corners: bool = True,
     progress: object | None = None,
 ) -> TrimSweep:
     """Trimmed level flight at each speed [bird units, m/s for SI], warm-started along speed.
 
-    Forward pass: the first speed from ``first_starts`` Sobol points plus the box corners;
+    Forward pass: the first speed from ``first_starts`` Sobol points plus the box corners
+    (``corners=False``: without them);
     each next speed from the previous optimum plus ``starts`` Sobol points.  Backward pass:
     each speed re-solved from its faster neighbour's optimum, kept if cheaper (a branch
     found late reaches back; ``backward=False`` skips it).  ``start_from`` (one parameter
@@ -254,7 +261,7 @@ def trim_sweep(
             cands.append(sols[-1].x)
         if not sols and start_from is None:
             cands.extend(random_starts(prob, first_starts, seed=0))
-            cands.extend(box_corners(prob))
+            cands.extend(box_corners(prob) if corners else ())
         elif start_from is None:
             cands.extend(random_starts(prob, starts, seed=k))
         if extra_starts is not None and extra_starts[k] is not None:
