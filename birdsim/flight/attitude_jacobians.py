@@ -8,6 +8,9 @@ wingbeat over :data:`JAC_SAMPLES` phases.  Used by :class:`birdsim.flight.attitu
 
 from __future__ import annotations
 
+import contextlib
+from collections.abc import Iterator
+
 import mujoco
 import numpy as np
 
@@ -231,30 +234,45 @@ def held_mean_moments(
     phases, once per body rate in ``omegas`` (seed body axes): the measurement
     :func:`measured_rate_derivatives`, :mod:`birdsim.flight.attitude_stiffness` and
     :mod:`birdsim.flight.attitude_refresh` share."""
-    m, cb = fb.m, fb.cb
-    d = getattr(fb, "_jac_data", None)
-    if d is None:
-        d = fb._jac_data = mujoco.MjData(m)
-    n = JAC_SAMPLES
-    pres, tail = held_prescription(fb, params, inputs, n)
-    c = np.array([1.0, -1.0, -1.0])  # seed <-> MuJoCo axes
-    wind = m.opt.wind.copy()
-    saved = cb.tail_controls
-    m.opt.wind[:] = 0.0
-    cb.tail_controls = tail
+    n, c = JAC_SAMPLES, SEED_AXES
     quat = pitch_quat(pitch)
     out = []
-    try:
+    with held_body(fb, params, inputs) as (m, d, pres):
         for omega in omegas:
             acc = np.zeros(3)
             for k in range(n):
                 _hold(m, d, pres.qpos[k], pres.qvel[k], quat, speed, omega * c)
                 acc += d.qfrc_passive[3:6]
             out.append(acc / n * c)
+    return out
+
+
+SEED_AXES = np.array([1.0, -1.0, -1.0])
+"""The signs taking MuJoCo's body axes to the seed's (x forward, y right, z down) and
+back."""
+
+
+@contextlib.contextmanager
+def held_body(
+    fb, params: np.ndarray, inputs: np.ndarray | None
+) -> Iterator[tuple[mujoco.MjModel, mujoco.MjData, object]]:
+    """(the model, a scratch MjData, the prescription of :data:`JAC_SAMPLES` phases of
+    one wingbeat of ``params`` with ``inputs``) for holding the body in still air with
+    the tail at the inputs' controls; the wind and the tail's controls restored on
+    exit."""
+    m, cb = fb.m, fb.cb
+    d = getattr(fb, "_jac_data", None)
+    if d is None:
+        d = fb._jac_data = mujoco.MjData(m)
+    pres, tail = held_prescription(fb, params, inputs, JAC_SAMPLES)
+    wind, saved = m.opt.wind.copy(), cb.tail_controls
+    m.opt.wind[:] = 0.0
+    cb.tail_controls = tail
+    try:
+        yield m, d, pres
     finally:
         m.opt.wind[:] = wind
         cb.tail_controls = saved
-    return out
 
 
 def held_prescription(

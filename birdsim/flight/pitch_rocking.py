@@ -29,8 +29,9 @@ from birdsim.flight.attitude_jacobians import (
     JAC_SAMPLES,
     JAC_STEP,
     RATE_STEP,
+    SEED_AXES,
     _hold,
-    held_prescription,
+    held_body,
 )
 from birdsim.mujoco.model import pitch_quat
 
@@ -42,20 +43,11 @@ def rocking_pitch_moment(
     rocking's peak to peak (rad)) of the held body at ``pitch`` (rad) and airspeed
     ``speed`` beating ``params`` with every input at zero, ``inertia`` its pitch inertia
     (reduced); :data:`JAC_SAMPLES` phases, steps :data:`RATE_STEP` and :data:`JAC_STEP`."""
-    m, cb = fb.m, fb.cb
-    d = getattr(fb, "_jac_data", None)
-    if d is None:
-        d = fb._jac_data = mujoco.MjData(m)
-    n = JAC_SAMPLES
-    pres, tail = held_prescription(fb, params, None, n)
-    c = np.array([1.0, -1.0, -1.0])  # seed <-> MuJoCo axes
+    n, c = JAC_SAMPLES, SEED_AXES
     held = ((pitch, 0.0), (pitch, RATE_STEP), (pitch + JAC_STEP, 0.0))
     mom, h = np.zeros((3, n)), np.zeros(n)
-    vec, res = np.zeros(m.nv), np.zeros(m.nv)
-    wind, saved = m.opt.wind.copy(), cb.tail_controls
-    m.opt.wind[:] = 0.0
-    cb.tail_controls = tail
-    try:
+    with held_body(fb, params, None) as (m, d, pres):
+        vec, res = np.zeros(m.nv), np.zeros(m.nv)
         for i, (theta, q) in enumerate(held):
             quat, omega = pitch_quat(theta), np.array([0.0, q, 0.0]) * c
             for k in range(n):
@@ -66,9 +58,6 @@ def rocking_pitch_moment(
                     vec[:6] = 0.0
                     mujoco.mj_mulM(m, d, res, vec)
                     h[k] = res[4] * c[1]
-    finally:
-        m.opt.wind[:] = wind
-        cb.tail_controls = saved
     d_q = (mom[1] - mom[0]) / RATE_STEP
     d_th = (mom[2] - mom[0]) / JAC_STEP
     damping, stiffness = float(d_q.mean()), float(d_th.mean())
