@@ -289,26 +289,51 @@ def _unit(i: int) -> np.ndarray:
     return u
 
 
+#: :func:`split_inputs`' plan per parameter names: per input (what it moves, where)
+_SPLIT_PLANS: dict[tuple[str, ...], tuple[tuple[int, int], ...]] = {}
+_DIFF, _SHOULDER, _ELEVATION, _ROLL, _NONE = range(5)
+
+
+def _split_plan(names: tuple[str, ...]) -> tuple[tuple[int, int], ...]:
+    """Per input of :data:`INPUTS`: (kind code, the parameter's or shoulder's index)."""
+    plan = _SPLIT_PLANS.get(names)
+    if plan is None:
+        rows = []
+        for name, kind, _ in INPUTS:
+            if kind == "diff" and name in names:
+                rows.append((_DIFF, names.index(name)))
+            elif kind == "shoulder":
+                rows.append((_SHOULDER, 0 if name == "sweep" else 1))
+            elif name == "tail_elevation":
+                rows.append((_ELEVATION, -1))
+            elif name == "tail_roll":
+                rows.append((_ROLL, -1))
+            else:
+                rows.append((_NONE, -1))
+        plan = _SPLIT_PLANS[tuple(names)] = tuple(rows)
+    return plan
+
+
 def split_inputs(
     names: tuple[str, ...], params: np.ndarray, u: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray, float, TailControls]:
     """(right params, left params, shoulder offsets (sweep, dihedral), tail controls) for
-    inputs ``u``."""
+    inputs ``u`` (per input of :data:`INPUTS`, as floats: the same numbers as numpy's)."""
     right = np.array(params, dtype=float)
     left = right.copy()
     shoulder = np.zeros(2)
     elevation = roll = 0.0
-    for (name, kind, _), ui in zip(INPUTS, u):
-        if kind == "diff" and name in names:
-            j = names.index(name)
+    values = np.asarray(u, dtype=float).tolist()
+    for (kind, j), ui in zip(_split_plan(names), values):
+        if kind == _DIFF:
             right[j] += 0.5 * ui
             left[j] -= 0.5 * ui
-        elif kind == "shoulder":
-            shoulder[0 if name == "sweep" else 1] = float(ui)
-        elif name == "tail_elevation":
-            elevation = float(ui)
-        elif name == "tail_roll":
-            roll = float(ui)
+        elif kind == _SHOULDER:
+            shoulder[j] = ui
+        elif kind == _ELEVATION:
+            elevation = ui
+        elif kind == _ROLL:
+            roll = ui
     return right, left, shoulder, TailControls(elevation, 1.0, roll)
 
 

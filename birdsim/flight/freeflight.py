@@ -28,6 +28,12 @@ from birdsim.flight.fast_interval import interval
 from birdsim.flight.flight_arrays import attitude_estimate, extend_rows, flight_arrays, keep_last
 from birdsim.flight.float_ops import clip_float
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
+from birdsim.flight.path_integral import (
+    FREE_BIAS_MARGIN,
+    INTEGRAL_LIMIT,
+    integral_step,
+    within_band,
+)
 from birdsim.flight.pitch_plan import PitchPlan, feedforward_pitch
 from birdsim.flight.pitch_section import section_source
 from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
@@ -39,11 +45,6 @@ from birdsim.physics.bird import Bird
 from birdsim.physics.units import reduced_bird, scales
 
 TWO_PI = 2.0 * math.pi
-#: The integral term's acceleration is bounded by this fraction of gravity (the
-#: table-vs-flight mismatch it trims is ~4 % of the weight in cruise) or, attitude free,
-#: by this multiple of the mismatch the trimmed start measured where that is larger (the
-#: free pigeon's hover: 14 % of the weight; docs/free-body.md, "ninth stage").
-INTEGRAL_LIMIT, FREE_BIAS_MARGIN = 0.1, 1.5
 #: Time constant (wingbeats) of the body's pitch command (attitude free, with a
 #: stroke plane): the table's pitch smoothed; the stroke plane turns by the difference.
 PITCH_COMMAND_BEATS = 3.0
@@ -61,8 +62,6 @@ JAC_AT_COMMAND = True
 #: from the feed-forward's table pitch PLAN_PER_BEAT times a wingbeat.
 PITCH_PLAN = True
 PLAN_PER_BEAT = 2
-#: The integral only runs while the estimated position error is below this (semispans).
-INTEGRAL_BAND = 0.1
 MAG_LEAD = 0.0  # (measured 0.5, 0.75 wingbeats: circle RMS 0.29, 0.32; kept 0)
 
 
@@ -253,12 +252,12 @@ def fly(
                 and not cmd.saturated
                 and not ctl.open_loop
                 and gains.ki > 0
-                and np.abs(est[0]).max() < INTEGRAL_BAND
+                and within_band(est[0])
             ):
                 # anti-windup: frozen while saturated or far off the path (a gust), and
                 # bounded: the integral only trims the small mismatch between the table's
                 # mean force and the flown one
-                integral = (integral + dt_ctl * est[0]).clip(-int_limit, int_limit)  # np.clip
+                integral = integral_step(integral, dt_ctl, est[0], int_limit)
             wind = wind_at(gusts, t / TWO_PI, speed)
             left = offset = None
             if free:

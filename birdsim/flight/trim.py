@@ -103,7 +103,7 @@ def trim_start(
 
 #: The free body's trim: probes until the bias they measure changes by less than this
 #: fraction of gravity (a twentieth of the path integral's bound,
-#: :data:`birdsim.flight.freeflight.INTEGRAL_LIMIT`), at most ROTATION_PROBES probes.
+#: :data:`birdsim.flight.path_integral.INTEGRAL_LIMIT`), at most ROTATION_PROBES probes.
 BIAS_TOL = 0.005
 ROTATION_PROBES = 6
 
