@@ -138,8 +138,8 @@ def interval(
     finally:
         mujoco.set_mjcb_passive(installed)
     right3, left3, shoulder3, qpos, qvel, qacc = rows
-    r, lft = tuple(right3), tuple(left3)
     if not flags & 8:  # not finite: the schedule's path (it raises naming the joint)
+        r, lft = tuple(right3), tuple(left3)
         if flags & 4:
             pres = schedule._finish(qpos, qvel, qacc, *r, None if flags & 2 else lft)
         else:
@@ -148,10 +148,9 @@ def interval(
         return pres
     times_list, t_end = rec_t[:-1].tolist(), float(rec_t[-1])
     fast_loop.finish(fb, plan, args, outs, tail, record, times_list, t_end, bool(flags & 16))
-    k = schedule.pitch_index
-    return Prescription(
-        qpos, qvel, qacc, r[0], r[0][:, k].copy(), None if flags & 2 else np.array(lft[0])
-    )
+    k, params = schedule.pitch_index, right3[0]
+    left = None if flags & 2 else np.array(left3[0])
+    return Prescription(qpos, qvel, qacc, params, params[:, k].copy(), left)
 
 
 def _inputs(schedule, target, target_left, offset) -> tuple | None:
