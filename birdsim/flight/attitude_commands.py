@@ -63,7 +63,7 @@ def bank_command(window: list, per_beat: int, gravity: float, a_left_ref: float 
     yv = np.asarray(window, dtype=float)  # read only
     if len(yv) < n:
         yv = np.vstack([np.repeat(yv[:1], n - len(yv), axis=0), yv])
-    y, vy = fit_matrix(n, TWO_PI)[0] @ yv
+    y, vy = (fit_matrix(n, TWO_PI)[0] @ yv).tolist()  # floats: numpy scalars' numbers
     w = 1.0 / LATERAL_BEATS  # omega / (2 pi N), reduced units (omega = 1 per 2 pi)
     w = w / TWO_PI
     a_left = a_left_ref - (w * w * y + 2.0 * w * vy)

@@ -52,8 +52,9 @@ kernel = (
 
 
 def _arguments(cb: AeroCallback, m: mujoco.MjModel, d: mujoco.MjData) -> tuple:
-    """The kernel's arguments for ``d`` (kept per MjData) and the callback's current
-    constants (made again when the tail's controls or the switches change)."""
+    """The kernel's arguments for ``d`` (its qpos, qvel and qfrc_passive, then the sites';
+    kept per MjData) and the callback's current constants (made again when the tail's
+    controls or the switches change)."""
     key = d._address
     got = cb.__dict__.get("_fast_hold")
     if got is None or got[0] != key:
@@ -62,7 +63,8 @@ def _arguments(cb: AeroCallback, m: mujoco.MjModel, d: mujoco.MjData) -> tuple:
             d.site_xmat, np.ascontiguousarray(cb.areas[:, 0]), aero_kernel.fold_addresses(cb),
             m.opt.wind,
         )  # fmt: skip
-        got = (key, sites, None, None)
+        # the views the kernel writes and reads first (MjData's memory stays where it is)
+        got = (key, (d.qpos, d.qvel, d.qfrc_passive, *sites), None, None)
     params_key = (cb.tail_controls, cb.enabled, cb.body_drag)
     if got[2] is None or any(a is not b for a, b in zip(params_key, got[2])):
         fl, ints, frame = aero_kernel.parameters(cb)
@@ -84,14 +86,14 @@ def hold(m: mujoco.MjModel, d: mujoco.MjData, qpos: np.ndarray, qvel: np.ndarray
         return False
     if not aero_kernel.supported(cb):
         return False
-    sites, (fl, ints, frame) = _arguments(cb, m, d)
+    (qpos_d, qvel_d, passive, *sites), (fl, ints, frame) = _arguments(cb, m, d)
     tail_out = np.zeros(4)
     f = np.ascontiguousarray
     mujoco.set_mjcb_passive(None)
     try:
         kernel(
-            m._address, d._address, d.qpos, d.qvel, f(qpos, dtype=float), f(qvel, dtype=float),
-            f(quat, dtype=float), float(speed), f(omega_mj, dtype=float), d.qfrc_passive,
+            m._address, d._address, qpos_d, qvel_d, f(qpos, dtype=float), f(qvel, dtype=float),
+            f(quat, dtype=float), float(speed), f(omega_mj, dtype=float), passive,
             *sites, fl, ints, frame, tail_out,
         )  # fmt: skip
     finally:
