@@ -44,11 +44,34 @@ def _hold(m, d, qpos_d, qvel_d, row_q, row_v, quat, speed, omega, passive, site_
     )  # fmt: skip
 
 
-kernel = (
-    numba.njit(cache=True)(_hold)
-    if numba is not None and aero_kernel.apply_aero is not None
-    else None
-)
+def _hold_rows(m, d, qpos_d, qvel_d, rows_q, rows_v, quat, speed, omega, passive, site_ids,
+               body_ids, site_xpos, site_xmat, areas, fold, wind, fl, ints, frame, tail_out,
+               c, vec, res, mom, h):  # fmt: skip
+    """:func:`_hold` at every row of ``rows_q`` / ``rows_v``, each pose's moment
+    ``qfrc_passive[3:6] * c`` into ``mom`` (n, 3) and the wings' angular momentum relative
+    to the torso (``M`` times qvel with the root's six entries zeroed, ``[3:6] * c``)
+    into ``h`` (n, 3); ``vec``, ``res`` (nv,) scratch."""
+    for k in range(rows_q.shape[0]):
+        kernel(
+            m, d, qpos_d, qvel_d, rows_q[k], rows_v[k], quat, speed, omega, passive, site_ids,
+            body_ids, site_xpos, site_xmat, areas, fold, wind, fl, ints, frame, tail_out,
+        )  # fmt: skip
+        for j in range(3):
+            mom[k, j] = passive[3 + j] * c[j]
+        for i in range(vec.shape[0]):
+            vec[i] = qvel_d[i]
+        for i in range(6):
+            vec[i] = 0.0
+        capi.mj_mulM(m, d, res.ctypes.data, vec.ctypes.data)
+        for j in range(3):
+            h[k, j] = res[3 + j] * c[j]
+
+
+if numba is not None and aero_kernel.apply_aero is not None:
+    kernel = numba.njit(cache=True)(_hold)
+    rows_kernel = numba.njit(cache=True)(_hold_rows)
+else:  # pragma: no cover
+    kernel = rows_kernel = None
 
 
 def _arguments(cb: AeroCallback, m: mujoco.MjModel, d: mujoco.MjData) -> tuple:
@@ -74,6 +97,53 @@ def _arguments(cb: AeroCallback, m: mujoco.MjModel, d: mujoco.MjData) -> tuple:
     return got[1], got[3]
 
 
+def _callback(m: mujoco.MjModel) -> AeroCallback | None:
+    """The installed AeroCallback of ``m`` where the compiled forces cover it, else None."""
+    cb = mujoco.get_mjcb_passive()
+    if not (isinstance(cb, AeroCallback) and cb.model._address == m._address):
+        return None
+    return cb if aero_kernel.supported(cb) else None
+
+
+def _after(cb: AeroCallback, tail_out: np.ndarray, poses: int) -> None:
+    """The callback's state as ``poses`` calls of it leave it (the last one's tail)."""
+    if cb.enabled:
+        cb.calls += poses
+        if cb.tail:
+            cb.tail_force_body = tail_out[:3].copy()
+            cb.tail_alpha = float(tail_out[3])
+
+
+def hold_rows(m: mujoco.MjModel, d: mujoco.MjData, qpos: np.ndarray, qvel: np.ndarray,
+              quat: np.ndarray, speed: float, omega_mj: np.ndarray, c: np.ndarray,
+              mom: np.ndarray, h: np.ndarray) -> bool:  # fmt: skip
+    """:func:`hold` at every row of ``qpos`` / ``qvel`` (n, nq) / (n, nv) in one call,
+    per row ``d.qfrc_passive[3:6] * c`` into ``mom`` (n, 3) and ``mj_mulM`` of ``d.qvel``
+    with its first six entries zeroed, ``[3:6] * c``, into ``h`` (n, 3): the loop of
+    ``attitude_jacobians.measured_with_rocking``, the same numbers.  False (nothing done)
+    where :func:`hold` does not apply."""
+    if not ENABLED or rows_kernel is None:
+        return False
+    cb = _callback(m)
+    if cb is None:
+        return False
+    (qpos_d, qvel_d, passive, *sites), (fl, ints, frame) = _arguments(cb, m, d)
+    tail_out = np.zeros(4)
+    f = np.ascontiguousarray
+    mujoco.set_mjcb_passive(None)
+    try:
+        rows_kernel(
+            m._address, d._address, qpos_d, qvel_d, f(qpos, dtype=float), f(qvel, dtype=float),
+            f(quat, dtype=float), float(speed), f(omega_mj, dtype=float), passive, *sites,
+            fl, ints, frame, tail_out, f(c, dtype=float), np.zeros(m.nv), np.zeros(m.nv),
+            mom, h,
+        )  # fmt: skip
+    finally:
+        mujoco.set_mjcb_passive(cb)
+    _after(cb, tail_out, len(qpos))
+    return True
+
+
 def hold(m: mujoco.MjModel, d: mujoco.MjData, qpos: np.ndarray, qvel: np.ndarray,
          quat: np.ndarray, speed: float, omega_mj: np.ndarray) -> bool:  # fmt: skip
     """``attitude_jacobians._hold`` compiled: True when done (``d`` posed and forward, its
@@ -81,10 +151,8 @@ def hold(m: mujoco.MjModel, d: mujoco.MjData, qpos: np.ndarray, qvel: np.ndarray
     (switched off, no installed AeroCallback of ``m`` that the compiled forces cover)."""
     if not ENABLED or kernel is None:
         return False
-    cb = mujoco.get_mjcb_passive()
-    if not (isinstance(cb, AeroCallback) and cb.model._address == m._address):
-        return False
-    if not aero_kernel.supported(cb):
+    cb = _callback(m)
+    if cb is None:
         return False
     (qpos_d, qvel_d, passive, *sites), (fl, ints, frame) = _arguments(cb, m, d)
     tail_out = np.zeros(4)
@@ -98,12 +166,8 @@ def hold(m: mujoco.MjModel, d: mujoco.MjData, qpos: np.ndarray, qvel: np.ndarray
         )  # fmt: skip
     finally:
         mujoco.set_mjcb_passive(cb)
-    if cb.enabled:
-        cb.calls += 1
-        if cb.tail:
-            cb.tail_force_body = tail_out[:3].copy()
-            cb.tail_alpha = float(tail_out[3])
+    _after(cb, tail_out, 1)
     return True
 
 
-__all__ = ["ENABLED", "hold", "kernel"]
+__all__ = ["ENABLED", "hold", "hold_rows", "kernel", "rows_kernel"]
