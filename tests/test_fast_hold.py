@@ -38,6 +38,14 @@ def _measure(fb, params, compiled: bool, monkeypatch) -> list:
         return done
 
     monkeypatch.setattr(fast_hold, "hold", counted)
+    rows = fast_hold.hold_rows
+
+    def counted_rows(m, d, qpos, *a, **k):  # every pose of a compiled loop counted
+        done = rows(m, d, qpos, *a, **k)
+        calls[0] += done * len(qpos)
+        return done
+
+    monkeypatch.setattr(fast_hold, "hold_rows", counted_rows)
     fb.cb.tail_controls = TailControls(0.1, 0.8, -0.05)
     omega = np.array([0.02, -0.01, 0.03])
     m0, jac = measured_jacobian(fb, params, 0.1, 0.9, omega)
@@ -47,6 +55,7 @@ def _measure(fb, params, compiled: bool, monkeypatch) -> list:
     _hold(fb.m, d, fb.d.qpos, fb.d.qvel, pitch_quat(0.2), 0.8, omega)
     fb.m.opt.wind[:] = 0.0
     monkeypatch.setattr(fast_hold, "hold", hold)
+    monkeypatch.setattr(fast_hold, "hold_rows", rows)
     assert (calls[0] > 100) == compiled
     return [m0, jac, rate, d.qfrc_passive.copy(), fb.cb.tail_force_body, fb.cb.tail_alpha]
 

@@ -46,11 +46,12 @@ def _hold(m, d, qpos_d, qvel_d, row_q, row_v, quat, speed, omega, passive, site_
 
 def _hold_rows(m, d, qpos_d, qvel_d, rows_q, rows_v, quat, speed, omega, passive, site_ids,
                body_ids, site_xpos, site_xmat, areas, fold, wind, fl, ints, frame, tail_out,
-               c, vec, res, mom, h):  # fmt: skip
+               c, vec, res, mom, h, acc):  # fmt: skip
     """:func:`_hold` at every row of ``rows_q`` / ``rows_v``, each pose's moment
-    ``qfrc_passive[3:6] * c`` into ``mom`` (n, 3) and the wings' angular momentum relative
-    to the torso (``M`` times qvel with the root's six entries zeroed, ``[3:6] * c``)
-    into ``h`` (n, 3); ``vec``, ``res`` (nv,) scratch."""
+    ``qfrc_passive[3:6] * c`` into ``mom`` (n, 3) and added to ``acc`` (3,) (unscaled, in
+    order), and the wings' angular momentum relative to the torso (``M`` times qvel with
+    the root's six entries zeroed, ``[3:6] * c``) into ``h`` (n, 3; none where ``h`` has
+    no rows); ``vec``, ``res`` (nv,) scratch."""
     for k in range(rows_q.shape[0]):
         kernel(
             m, d, qpos_d, qvel_d, rows_q[k], rows_v[k], quat, speed, omega, passive, site_ids,
@@ -58,6 +59,9 @@ def _hold_rows(m, d, qpos_d, qvel_d, rows_q, rows_v, quat, speed, omega, passive
         )  # fmt: skip
         for j in range(3):
             mom[k, j] = passive[3 + j] * c[j]
+            acc[j] += passive[3 + j]
+        if h.shape[0] == 0:
+            continue
         for i in range(vec.shape[0]):
             vec[i] = qvel_d[i]
         for i in range(6):
@@ -116,12 +120,14 @@ def _after(cb: AeroCallback, tail_out: np.ndarray, poses: int) -> None:
 
 def hold_rows(m: mujoco.MjModel, d: mujoco.MjData, qpos: np.ndarray, qvel: np.ndarray,
               quat: np.ndarray, speed: float, omega_mj: np.ndarray, c: np.ndarray,
-              mom: np.ndarray, h: np.ndarray) -> bool:  # fmt: skip
+              mom: np.ndarray, h: np.ndarray | None = None,
+              acc: np.ndarray | None = None) -> bool:  # fmt: skip
     """:func:`hold` at every row of ``qpos`` / ``qvel`` (n, nq) / (n, nv) in one call,
-    per row ``d.qfrc_passive[3:6] * c`` into ``mom`` (n, 3) and ``mj_mulM`` of ``d.qvel``
-    with its first six entries zeroed, ``[3:6] * c``, into ``h`` (n, 3): the loop of
-    ``attitude_jacobians.measured_with_rocking``, the same numbers.  False (nothing done)
-    where :func:`hold` does not apply."""
+    per row ``d.qfrc_passive[3:6] * c`` into ``mom`` (n, 3), ``d.qfrc_passive[3:6]``
+    added to ``acc`` (3,) one row after the other, and ``mj_mulM`` of ``d.qvel`` with
+    its first six entries zeroed, ``[3:6] * c``, into ``h`` (n, 3) where given: the
+    loops of ``attitude_jacobians.measured_with_rocking`` and ``measured_jacobian``, the
+    same numbers.  False (nothing done) where :func:`hold` does not apply."""
     if not ENABLED or rows_kernel is None:
         return False
     cb = _callback(m)
@@ -136,7 +142,7 @@ def hold_rows(m: mujoco.MjModel, d: mujoco.MjData, qpos: np.ndarray, qvel: np.nd
             m._address, d._address, qpos_d, qvel_d, f(qpos, dtype=float), f(qvel, dtype=float),
             f(quat, dtype=float), float(speed), f(omega_mj, dtype=float), passive, *sites,
             fl, ints, frame, tail_out, f(c, dtype=float), np.zeros(m.nv), np.zeros(m.nv),
-            mom, h,
+            mom, np.zeros((0, 3)) if h is None else h, np.zeros(3) if acc is None else acc,
         )  # fmt: skip
     finally:
         mujoco.set_mjcb_passive(cb)
