@@ -101,21 +101,38 @@ def _arguments(cb: AeroCallback, m: mujoco.MjModel, d: mujoco.MjData) -> tuple:
     return got[1], got[3]
 
 
-def _callback(m: mujoco.MjModel) -> AeroCallback | None:
-    """The installed AeroCallback of ``m`` where the compiled forces cover it, else None."""
+def _run(fn, m: mujoco.MjModel, d: mujoco.MjData, qpos: np.ndarray, qvel: np.ndarray,
+         quat: np.ndarray, speed: float, omega_mj: np.ndarray, poses: int, extra: tuple) -> bool:  # fmt: skip
+    """``fn`` (:data:`kernel` or :data:`rows_kernel`; None: not compiled) on the installed
+    AeroCallback of ``m`` with the callback uninstalled for the call, ``extra`` its
+    arguments after the tail's; the callback's state then as ``poses`` calls of it leave
+    it (the last one's tail).  False (nothing done) where the compiled forces do not
+    cover the callback or it is not ``m``'s."""
+    if not ENABLED or fn is None:
+        return False
     cb = mujoco.get_mjcb_passive()
     if not (isinstance(cb, AeroCallback) and cb.model._address == m._address):
-        return None
-    return cb if aero_kernel.supported(cb) else None
-
-
-def _after(cb: AeroCallback, tail_out: np.ndarray, poses: int) -> None:
-    """The callback's state as ``poses`` calls of it leave it (the last one's tail)."""
+        return False
+    if not aero_kernel.supported(cb):
+        return False
+    (qpos_d, qvel_d, passive, *sites), (fl, ints, frame) = _arguments(cb, m, d)
+    tail_out = np.zeros(4)
+    f = np.ascontiguousarray
+    mujoco.set_mjcb_passive(None)
+    try:
+        fn(
+            m._address, d._address, qpos_d, qvel_d, f(qpos, dtype=float), f(qvel, dtype=float),
+            f(quat, dtype=float), float(speed), f(omega_mj, dtype=float), passive,
+            *sites, fl, ints, frame, tail_out, *extra,
+        )  # fmt: skip
+    finally:
+        mujoco.set_mjcb_passive(cb)
     if cb.enabled:
         cb.calls += poses
         if cb.tail:
             cb.tail_force_body = tail_out[:3].copy()
             cb.tail_alpha = float(tail_out[3])
+    return True
 
 
 def hold_rows(m: mujoco.MjModel, d: mujoco.MjData, qpos: np.ndarray, qvel: np.ndarray,
@@ -128,26 +145,11 @@ def hold_rows(m: mujoco.MjModel, d: mujoco.MjData, qpos: np.ndarray, qvel: np.nd
     its first six entries zeroed, ``[3:6] * c``, into ``h`` (n, 3) where given: the
     loops of ``attitude_jacobians.measured_with_rocking`` and ``measured_jacobian``, the
     same numbers.  False (nothing done) where :func:`hold` does not apply."""
-    if not ENABLED or rows_kernel is None:
-        return False
-    cb = _callback(m)
-    if cb is None:
-        return False
-    (qpos_d, qvel_d, passive, *sites), (fl, ints, frame) = _arguments(cb, m, d)
-    tail_out = np.zeros(4)
-    f = np.ascontiguousarray
-    mujoco.set_mjcb_passive(None)
-    try:
-        rows_kernel(
-            m._address, d._address, qpos_d, qvel_d, f(qpos, dtype=float), f(qvel, dtype=float),
-            f(quat, dtype=float), float(speed), f(omega_mj, dtype=float), passive, *sites,
-            fl, ints, frame, tail_out, f(c, dtype=float), np.zeros(m.nv), np.zeros(m.nv),
-            mom, np.zeros((0, 3)) if h is None else h, np.zeros(3) if acc is None else acc,
-        )  # fmt: skip
-    finally:
-        mujoco.set_mjcb_passive(cb)
-    _after(cb, tail_out, len(qpos))
-    return True
+    extra = (
+        np.ascontiguousarray(c, dtype=float), np.zeros(m.nv), np.zeros(m.nv), mom,
+        np.zeros((0, 3)) if h is None else h, np.zeros(3) if acc is None else acc,
+    )  # fmt: skip
+    return _run(rows_kernel, m, d, qpos, qvel, quat, speed, omega_mj, len(qpos), extra)
 
 
 def hold(m: mujoco.MjModel, d: mujoco.MjData, qpos: np.ndarray, qvel: np.ndarray,
@@ -155,25 +157,7 @@ def hold(m: mujoco.MjModel, d: mujoco.MjData, qpos: np.ndarray, qvel: np.ndarray
     """``attitude_jacobians._hold`` compiled: True when done (``d`` posed and forward, its
     ``qfrc_passive`` the Python callback's), False (nothing done) where it does not apply
     (switched off, no installed AeroCallback of ``m`` that the compiled forces cover)."""
-    if not ENABLED or kernel is None:
-        return False
-    cb = _callback(m)
-    if cb is None:
-        return False
-    (qpos_d, qvel_d, passive, *sites), (fl, ints, frame) = _arguments(cb, m, d)
-    tail_out = np.zeros(4)
-    f = np.ascontiguousarray
-    mujoco.set_mjcb_passive(None)
-    try:
-        kernel(
-            m._address, d._address, qpos_d, qvel_d, f(qpos, dtype=float), f(qvel, dtype=float),
-            f(quat, dtype=float), float(speed), f(omega_mj, dtype=float), passive,
-            *sites, fl, ints, frame, tail_out,
-        )  # fmt: skip
-    finally:
-        mujoco.set_mjcb_passive(cb)
-    _after(cb, tail_out, 1)
-    return True
+    return _run(kernel, m, d, qpos, qvel, quat, speed, omega_mj, 1, ())
 
 
 __all__ = ["ENABLED", "hold", "hold_rows", "kernel", "rows_kernel"]
