@@ -15,6 +15,7 @@ from birdsim.flight.attitude_jacobians import (
     _hold,
     measured_jacobian,
     measured_rate_derivatives,
+    measured_with_rocking,
 )
 from birdsim.flight.simulate import FreeBird, SimConfig
 from birdsim.mujoco.model import pitch_quat
@@ -37,6 +38,14 @@ def _measure(fb, params, compiled: bool, monkeypatch) -> list:
         return done
 
     monkeypatch.setattr(fast_hold, "hold", counted)
+    rows = fast_hold.hold_rows
+
+    def counted_rows(m, d, qpos, *a, **k):  # every pose of a compiled loop counted
+        done = rows(m, d, qpos, *a, **k)
+        calls[0] += done * len(qpos)
+        return done
+
+    monkeypatch.setattr(fast_hold, "hold_rows", counted_rows)
     fb.cb.tail_controls = TailControls(0.1, 0.8, -0.05)
     omega = np.array([0.02, -0.01, 0.03])
     m0, jac = measured_jacobian(fb, params, 0.1, 0.9, omega)
@@ -46,6 +55,7 @@ def _measure(fb, params, compiled: bool, monkeypatch) -> list:
     _hold(fb.m, d, fb.d.qpos, fb.d.qvel, pitch_quat(0.2), 0.8, omega)
     fb.m.opt.wind[:] = 0.0
     monkeypatch.setattr(fast_hold, "hold", hold)
+    monkeypatch.setattr(fast_hold, "hold_rows", rows)
     assert (calls[0] > 100) == compiled
     return [m0, jac, rate, d.qfrc_passive.copy(), fb.cb.tail_force_body, fb.cb.tail_alpha]
 
@@ -63,3 +73,33 @@ def test_compiled_hold_is_the_callback(model, monkeypatch):
     for a, b in zip(out[True], out[False]):
         assert np.array_equal(a, b), (a, b)  # bitwise
     assert np.any(out[False][3] != 0.0) and out[False][5] != 0.0  # forces, a tail angle
+
+
+@pytest.mark.parametrize("model", ["m4", "m5"])
+def test_compiled_rows_are_the_held_loop(model, monkeypatch):
+    """The rocking measurement's loop of held poses (moment and the wings' relative
+    angular momentum per pose, ``mj_mulM`` called from numba) in one compiled call:
+    bitwise the reference's loop, the callback's tail state and call count as it leaves
+    them."""
+    kin = get_model(model)
+    guess = kin.guess("cruise")
+    params = np.array([guess[n] for n in kin.param_names])
+    out, rows, used = {}, fast_hold.hold_rows, [0]
+
+    def counted(*a, **k):
+        done = rows(*a, **k)
+        used[0] += done
+        return done
+
+    monkeypatch.setattr(fast_hold, "hold_rows", counted)
+    for compiled in (True, False):
+        monkeypatch.setattr(fast_hold, "ENABLED", compiled)
+        used[0] = 0
+        with FreeBird(model, BIRD, params, config=SimConfig(attitude="free")) as fb:
+            fb.cb.tail_controls = TailControls(0.1, 0.8, -0.05)
+            inertia = np.array([0.3, 0.5, 0.7])
+            got = measured_with_rocking(fb, params, 0.1, 0.9, inertia, np.array([0.02, 0, 0.03]))
+            out[compiled] = [*got, fb.cb.tail_force_body, fb.cb.tail_alpha, fb.cb.calls]
+        assert (used[0] > 0) == compiled
+    for a, b in zip(out[True], out[False]):
+        assert np.array_equal(a, b), (a, b)  # bitwise

@@ -307,7 +307,7 @@ class AttitudeLoop:
             self._jac is None
             or abs(self._jac[0] - speed) > JAC_DV
             or abs(self._jac[3] - jp) > JAC_DPITCH
-            or np.abs(self._turn - turn).max() > JAC_DRATE
+            or any(abs(a - b) > JAC_DRATE for a, b in zip(self._turn.tolist(), turn.tolist()))
         ):
             m0, jac = self._measure(at, jp, speed, turn if turn.any() else None)
             self._jac = (speed, m0, jac, jp)

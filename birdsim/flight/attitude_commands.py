@@ -63,7 +63,7 @@ def bank_command(window: list, per_beat: int, gravity: float, a_left_ref: float 
     yv = np.asarray(window, dtype=float)  # read only
     if len(yv) < n:
         yv = np.vstack([np.repeat(yv[:1], n - len(yv), axis=0), yv])
-    y, vy = fit_matrix(n, TWO_PI)[0] @ yv
+    y, vy = (fit_matrix(n, TWO_PI)[0] @ yv).tolist()  # floats: numpy scalars' numbers
     w = 1.0 / LATERAL_BEATS  # omega / (2 pi N), reduced units (omega = 1 per 2 pi)
     w = w / TWO_PI
     a_left = a_left_ref - (w * w * y + 2.0 * w * vy)
@@ -76,15 +76,34 @@ def body_rates(pitch: float, roll: float, pitch_rate: float, yaw_rate: float) ->
     """The body rates (p, q, r), seed body axes, of the Z-Y-X attitude (yaw, ``pitch``,
     ``roll``) turning at ``yaw_rate`` (about seed z, down) and ``pitch_rate``, the roll
     held: the rates a steady turn's command moves at (Euler kinematics)."""
+    return np.array(_rates(pitch, roll, pitch_rate, yaw_rate))
+
+
+def _rates(pitch: float, roll: float, pitch_rate: float, yaw_rate: float) -> tuple:
+    """:func:`body_rates` as three floats."""
     cp, sp = math.cos(pitch), math.sin(pitch)
     cr, sr = math.cos(roll), math.sin(roll)
-    return np.array(
-        [
-            -yaw_rate * sp,
-            pitch_rate * cr + yaw_rate * cp * sr,
-            -pitch_rate * sr + yaw_rate * cp * cr,
-        ]
+    return (
+        -yaw_rate * sp,
+        pitch_rate * cr + yaw_rate * cp * sr,
+        -pitch_rate * sr + yaw_rate * cp * cr,
     )
+
+
+def straight_commands(
+    pitch: float,
+    roll: float,
+    rates: tuple[float, float],
+    accs: tuple[float, float],
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A straight path's (rate command, acceleration command, the command's own turning
+    rates) for the attitude loop, seed body axes: ``body_rates(pitch, roll, q, 0) +
+    [p, 0, 0]`` for the ``rates`` (p, q) of the roll and pitch commands, ``[*accs, 0]``
+    for their accelerations, and ``body_rates(pitch, roll, 0, 0)``: those numpy
+    expressions' numbers, made of floats."""
+    p0, q0, r0 = _rates(pitch, roll, rates[1], 0.0)
+    rate_cmd = np.array([p0 + rates[0], q0 + 0.0, r0 + 0.0])
+    return rate_cmd, np.array([accs[0], accs[1], 0.0]), body_rates(pitch, roll, 0.0, 0.0)
 
 
 __all__ = [
@@ -95,4 +114,5 @@ __all__ = [
     "bank_command",
     "body_rates",
     "command_filter",
+    "straight_commands",
 ]

@@ -36,6 +36,7 @@ INPUTS = (
 #: Phases per wingbeat of a Jacobian measurement and the input step (rad).
 JAC_SAMPLES = 16
 JAC_STEP = 0.02
+_ONES = np.ones(3)
 
 
 def _hold(
@@ -100,7 +101,11 @@ def measured_jacobian(
     try:
         for i in range(k_in):
             cb.tail_controls = split[i][3]
-            acc = np.zeros(3)
+            acc, rows = np.zeros(3), slice(i * n, (i + 1) * n)
+            if fast_hold.hold_rows(m, d, pres.qpos[rows], pres.qvel[rows], quat, speed,
+                                   omega_mj, _ONES, np.empty((n, 3)), acc=acc):  # fmt: skip
+                out.append(acc / n * np.array([1.0, -1.0, -1.0]))  # compiled, the same sum
+                continue
             for k in range(i * n, (i + 1) * n):
                 _hold(m, d, pres.qpos[k], pres.qvel[k], quat, speed, omega_mj)
                 acc += d.qfrc_passive[3:6]
@@ -168,6 +173,10 @@ def measured_with_rocking(
     try:
         for i, (sp, omega) in enumerate(sets):
             cb.tail_controls = sp[3]
+            rows = slice(i * n, (i + 1) * n)  # compiled, the same numbers:
+            if fast_hold.hold_rows(m, d, pres.qpos[rows], pres.qvel[rows], quat, speed,
+                                   omega * c, c, mom[i], h[i]):  # fmt: skip
+                continue
             for k in range(n):
                 row = i * n + k
                 _hold(m, d, pres.qpos[row], pres.qvel[row], quat, speed, omega * c)
@@ -307,26 +316,51 @@ def _unit(i: int) -> np.ndarray:
     return u
 
 
+#: :func:`split_inputs`' plan per parameter names: per input (what it moves, where)
+_SPLIT_PLANS: dict[tuple[str, ...], tuple[tuple[int, int], ...]] = {}
+_DIFF, _SHOULDER, _ELEVATION, _ROLL, _NONE = range(5)
+
+
+def _split_plan(names: tuple[str, ...]) -> tuple[tuple[int, int], ...]:
+    """Per input of :data:`INPUTS`: (kind code, the parameter's or shoulder's index)."""
+    plan = _SPLIT_PLANS.get(names)
+    if plan is None:
+        rows = []
+        for name, kind, _ in INPUTS:
+            if kind == "diff" and name in names:
+                rows.append((_DIFF, names.index(name)))
+            elif kind == "shoulder":
+                rows.append((_SHOULDER, 0 if name == "sweep" else 1))
+            elif name == "tail_elevation":
+                rows.append((_ELEVATION, -1))
+            elif name == "tail_roll":
+                rows.append((_ROLL, -1))
+            else:
+                rows.append((_NONE, -1))
+        plan = _SPLIT_PLANS[tuple(names)] = tuple(rows)
+    return plan
+
+
 def split_inputs(
     names: tuple[str, ...], params: np.ndarray, u: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray, float, TailControls]:
     """(right params, left params, shoulder offsets (sweep, dihedral), tail controls) for
-    inputs ``u``."""
+    inputs ``u`` (per input of :data:`INPUTS`, as floats: the same numbers as numpy's)."""
     right = np.array(params, dtype=float)
     left = right.copy()
     shoulder = np.zeros(2)
     elevation = roll = 0.0
-    for (name, kind, _), ui in zip(INPUTS, u):
-        if kind == "diff" and name in names:
-            j = names.index(name)
+    values = np.asarray(u, dtype=float).tolist()
+    for (kind, j), ui in zip(_split_plan(names), values):
+        if kind == _DIFF:
             right[j] += 0.5 * ui
             left[j] -= 0.5 * ui
-        elif kind == "shoulder":
-            shoulder[0 if name == "sweep" else 1] = float(ui)
-        elif name == "tail_elevation":
-            elevation = float(ui)
-        elif name == "tail_roll":
-            roll = float(ui)
+        elif kind == _SHOULDER:
+            shoulder[j] = ui
+        elif kind == _ELEVATION:
+            elevation = ui
+        elif kind == _ROLL:
+            roll = ui
     return right, left, shoulder, TailControls(elevation, 1.0, roll)
 
 

@@ -3,7 +3,7 @@ their compiled (numba) code over the numpy / Python reference they are tested ag
 (the compiled step loop, prescription, table lookup, bounded least squares, path curves,
 attitude estimate, schedule filters (alone and with the wings' rows), error window, the
 attitude loop's allocation, the held-body pose of its Jacobian measurements, a straight flight's per-sample path errors, the schedule's advance
-with the steps after it, the path controller's table lookup).
+with the steps after it, the path controller's table lookup, the pitch plan's smoothing).
 Tests and benchmarks flip them together to fly the reference path."""
 
 from __future__ import annotations
@@ -22,6 +22,7 @@ from birdsim.flight import (
     fast_path,
     fast_prescription,
     fast_schedule,
+    fast_smooth,
     fast_window,
     fast_wingbeat,
 )
@@ -42,4 +43,5 @@ SWITCHES: tuple[ModuleType, ...] = (
     fast_errors,
     fast_interval,
     fast_command,
+    fast_smooth,
 )

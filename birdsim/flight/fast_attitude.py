@@ -314,6 +314,19 @@ def _plan(loop, groups: tuple) -> tuple:
     return out
 
 
+def _gains(loop, gains) -> tuple:
+    """(omega_a, kp, kd, ki, inertia) as the kernel takes them, made again only when the
+    loop's placed gains or its inertia are other objects."""
+    hit = loop.__dict__.get("_fast_attitude_gains")
+    if hit is not None and hit[0] is gains and hit[1] is loop.inertia:
+        return hit[2]
+    f = np.ascontiguousarray
+    out = tuple(f(a, dtype=float) for a in (gains.omega_a, gains.kp, gains.kd, gains.ki))
+    out += (f(loop.inertia, dtype=float),)
+    loop._fast_attitude_gains = (gains, loop.inertia, out)
+    return out
+
+
 def allocate(loop, groups, params, gains, m0, jac, residual, damping, err, rates, dt,
              rate_cmd, acc_cmd, turn, limit_rad, authority, split, a_lp, lam) -> bool:  # fmt: skip
     """The update of ``loop`` (an AttitudeLoop; ``groups`` its allocations' (rows, columns),
@@ -325,6 +338,7 @@ def allocate(loop, groups, params, gains, m0, jac, residual, damping, err, rates
     if not (ENABLED and bounded_lsq.ENABLED) or kernel is None:
         return False  # the reference's lsq_linear for every solve: the reference runs
     index, lower, upper, bound, groups, wings, tail = _plan(loop, groups)
+    omega_a, kp, kd, ki, inertia = _gains(loop, gains)
     f = np.ascontiguousarray
     zero = np.zeros(3)
     slow = loop.__dict__.get("_slow")
@@ -333,9 +347,8 @@ def allocate(loop, groups, params, gains, m0, jac, residual, damping, err, rates
     out = np.empty(2)
     integral = np.array(loop.integral, dtype=float)
     state = kernel(
-        f(params, dtype=float), index, lower, upper, bound,
-        f(gains.omega_a, dtype=float), f(gains.kp, dtype=float), f(gains.kd, dtype=float),
-        f(gains.ki, dtype=float), f(loop.inertia, dtype=float), float(limit_rad), authority,
+        f(params, dtype=float), index, lower, upper, bound, omega_a, kp, kd, ki, inertia,
+        float(limit_rad), authority,
         lateral, float(loop.lateral_integral_rad) if lateral else 0.0, groups,
         integral, bool(loop.saturated), float(dt), f(err, dtype=float), f(rates, dtype=float),
         zero if rate_cmd is None else f(rate_cmd, dtype=float),

@@ -34,6 +34,7 @@ ENABLED = True
 
 
 def _interval(
+    target, target_left, offset, shoulder_target,
     x1, x2, u, ex, gex, tau, tau2, y1, y2, v, ey, gey, sig, sig2, t_rel, dt, n, times,
     present, index, scale, const, affine, omega, plans, axes, kmat, kkmat, qpos0,
     right, left, shoulder, qpos, qvel, qacc, pitch_index,
@@ -42,13 +43,23 @@ def _interval(
     fl, ints, frame, state, weight, h, mass, project, every, rec_q, rec_v, rec_out, stats,
     tail, t0, rec_t,
 ):  # fmt: skip
-    """``fast_wingbeat``'s kernel (its flags), then, where its rows and the pitch column
+    """The schedule's filter inputs into ``u`` and ``v`` from the wings' targets, the
+    offset and the shoulders' target (``WingbeatSchedule.inputs``, its operations),
+    ``fast_wingbeat``'s kernel (its flags), then, where its rows and the pitch column
     of ``right`` are finite, ``fast_loop``'s steps on the rows' columns ``pq0:pq1`` of
     qpos and ``pv0:`` of qvel and qacc (the tail's last force and angle of attack into
     ``tail`` (4,)), the samples' times into ``rec_t`` and the time after the steps into
     its last entry (``t0`` plus one ``h`` per step, added one after the other as the
     reference's loop adds them), and bit 8 (stepped) and 16 (qpos, qvel finite) set in
     the flags returned."""
+    k = target.shape[0]
+    for j in range(k):
+        u[j] = 0.5 * (target[j] + target_left[j])
+        v[j] = 0.5 * (target[j] - target_left[j])
+        v[k + j] = offset[j]
+    for j in range(shoulder_target.shape[0]):
+        v[2 * k + j] = shoulder_target[j]
+        v[2 * k + shoulder_target.shape[0] + j] = shoulder_target[j]
     flags = _rows(
         x1, x2, u, ex, gex, tau, tau2, y1, y2, v, ey, gey, sig, sig2, t_rel, dt, n, times,
         present, index, scale, const, affine, omega, plans, axes, kmat, kkmat, qpos0,
@@ -104,10 +115,11 @@ def interval(
     made = None
     if plan is not None:
         schedule = fb.schedule
-        times = np.asarray(times, dtype=float)
-        _, _, u, v = schedule.inputs(target, target_left, offset)
-        rel = times - t_now
-        made = fast_wingbeat.arguments(schedule, u, v, times, rel, dt)
+        inputs = _inputs(schedule, target, target_left, offset)
+        if inputs is not None:  # u and v, filled by the kernel
+            times = np.asarray(times, dtype=float)
+            rel = times - t_now
+            made = fast_wingbeat.arguments(schedule, inputs[-2], inputs[-1], times, rel, dt)
     if made is None:
         pres = fb.schedule.advance(target, times, t_now, dt, target_left, offset)
         fb.step_many(pres, wind, record, every)
@@ -120,14 +132,14 @@ def interval(
     mujoco.set_mjcb_passive(None)
     try:
         flags = kernel(
-            *rows_args, *rows, schedule.pitch_index, *args[:12], plan.Pq.stop, *args[12:],
+            *inputs[:4], *rows_args, *rows, schedule.pitch_index, *args[:12], plan.Pq.stop, *args[12:],
             *outs, tail, fb.time, rec_t,
         )  # fmt: skip
     finally:
         mujoco.set_mjcb_passive(installed)
     right3, left3, shoulder3, qpos, qvel, qacc = rows
-    r, lft = tuple(right3), tuple(left3)
     if not flags & 8:  # not finite: the schedule's path (it raises naming the joint)
+        r, lft = tuple(right3), tuple(left3)
         if flags & 4:
             pres = schedule._finish(qpos, qvel, qacc, *r, None if flags & 2 else lft)
         else:
@@ -136,10 +148,23 @@ def interval(
         return pres
     times_list, t_end = rec_t[:-1].tolist(), float(rec_t[-1])
     fast_loop.finish(fb, plan, args, outs, tail, record, times_list, t_end, bool(flags & 16))
-    k = schedule.pitch_index
-    return Prescription(
-        qpos, qvel, qacc, r[0], r[0][:, k].copy(), None if flags & 2 else np.array(lft[0])
-    )
+    k, params = schedule.pitch_index, right3[0]
+    left = None if flags & 2 else np.array(left3[0])
+    return Prescription(qpos, qvel, qacc, params, params[:, k].copy(), left)
+
+
+def _inputs(schedule, target, target_left, offset) -> tuple | None:
+    """(right, left, offset, shoulder target) as floats and ``u``, ``v`` (made empty) for
+    the kernel's ``WingbeatSchedule.inputs``, or None where a shape is not the schedule's
+    (its numpy path then runs and says so)."""
+    right = np.asarray(target, dtype=float)
+    left = right if target_left is None else np.asarray(target_left, dtype=float)
+    n = len(schedule.names)
+    off = np.zeros(n) if offset is None else np.asarray(offset, dtype=float)
+    sh = np.asarray(schedule.shoulder_target, dtype=float)
+    if right.shape != (n,) or left.shape != (n,) or off.shape != (n,) or sh.ndim != 1:
+        return None
+    return right, left, off, sh, np.empty(n), np.empty(2 * n + 2 * sh.shape[0])
 
 
 def _usable(fb):

@@ -264,7 +264,8 @@ def arguments(fb, plan: _Plan, wind: np.ndarray, n: int, every: int) -> tuple[tu
     weight = plan.weight(fb)
     samples = (n + every - 1) // every
     fl, ints, frame = plan.aero_arguments(fb.cb)
-    state = np.concatenate([fb.P, fb.X, fb.L])
+    state = np.empty(9)  # np.concatenate([fb.P, fb.X, fb.L]), its copies made directly
+    state[:3], state[3:6], state[6:] = fb.P, fb.X, fb.L
     stats = np.array([0.0, 0.0, fb.root_applied_max])
     args = plan.head + (
         fl, ints, frame, state, weight, fb.h, fb.total_mass,

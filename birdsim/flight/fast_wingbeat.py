@@ -100,6 +100,29 @@ def advance(schedule, u: np.ndarray, v: np.ndarray, times: np.ndarray, rel: np.n
     return (*outs, flags)
 
 
+def _fixed(schedule) -> tuple | None:
+    """The arguments of :func:`_advance_rows` that stay for ``schedule`` (its filters'
+    time constants, the coefficients' form, the bird's omega, the wings' geometry,
+    ``qpos0``), made again when its filters, model or bird are other objects or the time
+    constants changed; None where the fused call does not apply."""
+    mean_filter, input_filter = schedule.filter, schedule.input_filter
+    tau, sig = mean_filter.tau, input_filter.tau
+    key = (mean_filter, input_filter, schedule.m, schedule.kin, schedule.bird)
+    hit = schedule.__dict__.get("_fast_wingbeat_fixed")
+    if hit is not None and all(a is b for a, b in zip(hit[0], key)) and hit[1] == (tau, sig):
+        return hit[2]
+    out = None
+    if tau != 0.0 and sig != 0.0:
+        m = schedule.m
+        sp = fast_prescription.spec(schedule.kin, schedule.bird)
+        geo = fast_prescription.geometry(m)
+        if sp is not None and geo is not None:
+            tail = (*sp, float(schedule.bird.omega), *geo, m.qpos0)
+            out = (tau, tau**2, sig, sig**2, len(schedule.names), m.nq, m.nv, tail)
+    schedule.__dict__["_fast_wingbeat_fixed"] = (key, (tau, sig), out)
+    return out
+
+
 def arguments(
     schedule, u: np.ndarray, v: np.ndarray, times: np.ndarray, rel: np.ndarray, dt: float
 ) -> tuple[tuple, tuple] | None:
@@ -108,26 +131,20 @@ def arguments(
     call does not apply."""
     if not (ENABLED and fast_schedule.ENABLED and fast_prescription.ENABLED) or kernel is None:
         return None
+    fixed = _fixed(schedule)
+    if fixed is None:
+        return None
+    tau, tau2, sig, sig2, n, nq, nv, tail = fixed
     mean_filter, input_filter = schedule.filter, schedule.input_filter
-    if mean_filter.tau == 0.0 or input_filter.tau == 0.0:
-        return None
-    m = schedule.m
-    sp = fast_prescription.spec(schedule.kin, schedule.bird)
-    geo = fast_prescription.geometry(m)
-    if sp is None or geo is None:
-        return None
-    n = len(schedule.names)
-    ex, ey, gex, gey = fast_schedule.exponentials(mean_filter.tau, input_filter.tau, rel, dt)
-    tau, sig = mean_filter.tau, input_filter.tau
+    ex, ey, gex, gey = fast_schedule.exponentials(tau, sig, rel, dt)
     T = rel.shape[0]
     right, left = np.empty((3, T, n)), np.empty((3, T, n))
     shoulder = np.empty((3, T, v.shape[0] - 2 * n))
-    qpos, qvel, qacc = np.empty((T, m.nq)), np.empty((T, m.nv)), np.empty((T, m.nv))
+    qpos, qvel, qacc = np.empty((T, nq)), np.empty((T, nv)), np.empty((T, nv))
     args = (
-        mean_filter.x1, mean_filter.x2, u, ex, gex, tau, tau**2,
-        input_filter.x1, input_filter.x2, v, ey, gey, sig, sig**2, rel, float(dt), n,
-        np.ascontiguousarray(times, dtype=float), *sp, float(schedule.bird.omega), *geo,
-        m.qpos0,
+        mean_filter.x1, mean_filter.x2, u, ex, gex, tau, tau2,
+        input_filter.x1, input_filter.x2, v, ey, gey, sig, sig2, rel, float(dt), n,
+        np.ascontiguousarray(times, dtype=float), *tail,
     )  # fmt: skip
     return args, (right, left, shoulder, qpos, qvel, qacc)
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -20,14 +20,21 @@ from birdsim.errors import BirdsimError, limits_text, magnitude_ok
 from birdsim.flight import flight_arrays as step_records
 from birdsim.flight import turning
 from birdsim.flight.attitude import FIT_BEATS
-from birdsim.flight.attitude_commands import bank_command, body_rates, command_filter
+from birdsim.flight.attitude_commands import bank_command, command_filter, straight_commands
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.demand_schedule import DemandSchedule, RefState
 from birdsim.flight.fast_errors import air_speeds, straight_samples
 from birdsim.flight.fast_interval import interval
 from birdsim.flight.flight_arrays import attitude_estimate, extend_rows, flight_arrays, keep_last
+from birdsim.flight.flight_result import FlightResult
 from birdsim.flight.float_ops import clip_float
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
+from birdsim.flight.path_integral import (
+    FREE_BIAS_MARGIN,
+    INTEGRAL_LIMIT,
+    integral_step,
+    within_band,
+)
 from birdsim.flight.pitch_plan import PitchPlan, feedforward_pitch
 from birdsim.flight.pitch_section import section_source
 from birdsim.flight.simulate import C_SEED, FreeBird, SimConfig
@@ -39,11 +46,6 @@ from birdsim.physics.bird import Bird
 from birdsim.physics.units import reduced_bird, scales
 
 TWO_PI = 2.0 * math.pi
-#: The integral term's acceleration is bounded by this fraction of gravity (the
-#: table-vs-flight mismatch it trims is ~4 % of the weight in cruise) or, attitude free,
-#: by this multiple of the mismatch the trimmed start measured where that is larger (the
-#: free pigeon's hover: 14 % of the weight; docs/free-body.md, "ninth stage").
-INTEGRAL_LIMIT, FREE_BIAS_MARGIN = 0.1, 1.5
 #: Time constant (wingbeats) of the body's pitch command (attitude free, with a
 #: stroke plane): the table's pitch smoothed; the stroke plane turns by the difference.
 PITCH_COMMAND_BEATS = 3.0
@@ -61,23 +63,7 @@ JAC_AT_COMMAND = True
 #: from the feed-forward's table pitch PLAN_PER_BEAT times a wingbeat.
 PITCH_PLAN = True
 PLAN_PER_BEAT = 2
-#: The integral only runs while the estimated position error is below this (semispans).
-INTEGRAL_BAND = 0.1
 MAG_LEAD = 0.0  # (measured 0.5, 0.75 wingbeats: circle RMS 0.29, 0.32; kept 0)
-
-
-@dataclass
-class FlightResult:
-    """Per log sample arrays (reduced units) and what produced them."""
-
-    arrays: dict[str, np.ndarray]
-    bird: Bird
-    model: str
-    param_names: tuple[str, ...]
-    gains: Gains
-    open_loop: bool
-    projection_max: float
-    meta: dict[str, Any] = field(default_factory=dict)
 
 
 def fly(
@@ -253,12 +239,12 @@ def fly(
                 and not cmd.saturated
                 and not ctl.open_loop
                 and gains.ki > 0
-                and np.abs(est[0]).max() < INTEGRAL_BAND
+                and within_band(est[0])
             ):
                 # anti-windup: frozen while saturated or far off the path (a gust), and
                 # bounded: the integral only trims the small mismatch between the table's
                 # mean force and the flown one
-                integral = (integral + dt_ctl * est[0]).clip(-int_limit, int_limit)  # np.clip
+                integral = integral_step(integral, dt_ctl, est[0], int_limit)
             wind = wind_at(gusts, t / TWO_PI, speed)
             left = offset = None
             if free:
@@ -280,7 +266,7 @@ def fly(
                 turn_cmd = None
                 if track is None:
                     roll_cmd = bank_command(lat_window, config.log_per_beat, red.gravity)
-                    yaw_cmd = yaw_rate = 0.0
+                    yaw_cmd = 0.0
                 else:  # turning: banked about the heading (birdsim.flight.bank)
                     turn_cmd, lat_accel, (roll_ref, roll_rate_ref) = turn_command(
                         track,
@@ -321,10 +307,8 @@ def fly(
                         sp = cmd.params[sp_index] + p_table - jac_pitch
                         jac_params[sp_index] = clip_float(sp, *sp_bounds)
                 if turn_cmd is None:
-                    rate_cmd = body_rates(pitch_ref, roll_cmd, pitch_rate_ref, yaw_rate)
-                    rate_cmd = rate_cmd + np.array([roll_rate_ref, 0.0, 0.0])
-                    acc_cmd = np.array([roll_acc_ref, pitch_acc_ref, 0.0])
-                    turn_rates = body_rates(pitch_ref, roll_cmd, 0.0, yaw_rate)
+                    rates3 = (roll_rate_ref, pitch_rate_ref), (roll_acc_ref, pitch_acc_ref)
+                    rate_cmd, acc_cmd, turn_rates = straight_commands(pitch_ref, roll_cmd, *rates3)
                 else:
                     rate_cmd, acc_cmd = turn_cmd.rate, turn_cmd.acc
                     turn_rates = turn_cmd.rate  # the damping of the commanded rates in M_0

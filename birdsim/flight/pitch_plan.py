@@ -24,12 +24,17 @@ from typing import Any
 
 import numpy as np
 
+from birdsim.flight import fast_smooth
 from birdsim.flight.attitude_commands import command_filter
 
 
 def _smooth(values: np.ndarray, tau: float, dt: float) -> np.ndarray:
     """The critically damped filter of time constant ``tau`` run over ``values`` (a grid
-    ``dt`` apart) forward from the first value, then backward from the last: no lag."""
+    ``dt`` apart) forward from the first value, then backward from the last: no lag
+    (compiled where :func:`birdsim.flight.fast_smooth.smooth` applies: the same numbers)."""
+    out = fast_smooth.smooth(values, tau, dt)
+    if out is not None:
+        return out
     out = np.empty_like(values)
     for order in (1, -1):
         seq = values if order == 1 else out[::-1].copy()

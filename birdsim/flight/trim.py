@@ -10,6 +10,7 @@ from typing import Any
 import numpy as np
 
 from birdsim.flight.body_attitude import euler_zyx
+from birdsim.flight.flight_arrays import new_samples
 from birdsim.flight.simulate import FreeBird, SimConfig
 
 
@@ -64,9 +65,8 @@ def trim_start(
     p_start = fb.P.copy()
     fb.step_many(pres, np.zeros(3), rec, every)
     a_flown = (fb.P - p_start) / (fb.total_mass * n * h)
-    t = np.array([r[0] for r in rec])
-    pos = np.array([r[1][:3] for r in rec])
-    vel = np.array([r[2][:3] for r in rec])
+    t, qpos, qvel, moment = _probe_samples(fb, rec)
+    pos, vel = np.array(qpos[:, :3]), np.array(qvel[:, :3])
     ref = sample_reference(reference, t)
     zero = np.zeros_like(t)
     ref_pos = np.stack([ref["x"], zero, ref["z"]], axis=1)
@@ -79,20 +79,19 @@ def trim_start(
     fb.projection_max = 0.0
     e_pos = ref_pos - (pos - dx[None, :] - dv[None, :] * t[:, None])
     e_vel = ref_vel - (vel - dv[None, :])
-    history = [
-        (e_pos[k, [0, 2]], e_vel[k, [0, 2]], float(vel[k, 0] - dv[0])) for k in range(len(t))
-    ]
+    # per sample (x, z) of each error and the airspeed: (e_pos[k, [0, 2]], ...) by rows
+    history = list(zip(e_pos[:, [0, 2]], e_vel[:, [0, 2]], (vel[:, 0] - dv[0]).tolist()))
     a_ref = np.array([ref["ax"].mean(), ref["az"].mean()])
     # the same for the free body's rotation: started at the table's pitch with no rate,
     # the within-beat rocking would leave a mean rate and pitch offset (MuJoCo body axes)
-    omega = np.array([r[2][3:6] for r in rec]).mean(axis=0)
-    pitch = euler_zyx(np.array([r[1][3:7] for r in rec]))[:, 1]
+    omega = np.array(qvel[:, 3:6]).mean(axis=0)
+    pitch = euler_zyx(np.array(qpos[:, 3:7]))[:, 1]
     pitch_rate = -omega[1]  # nose up is about MuJoCo -y
     d_pitch = float((pitch - pres.pitch[0] - pitch_rate * t).mean())
     fb.start_rocking = float(np.ptp(pitch - pitch_rate * t))  # the within-beat pitch swing
     # the wingbeat-mean aerodynamic moment about the centre of mass with every attitude
     # input at zero (seed body axes): what the attitude loop's integral starts from
-    fb.start_moment = np.array([r[3] for r in rec]).mean(axis=0)
+    fb.start_moment = moment.mean(axis=0)
     old_omega, old_pitch = getattr(fb, "start_rotation", (np.zeros(3), 0.0))
     fb.start_rotation = (
         (np.zeros(3) if old_omega is None else old_omega) - omega,
@@ -101,9 +100,20 @@ def trim_start(
     return pos0 - dx, vel0 - dv, history, a_ref - a_flown[[0, 2]]
 
 
+def _probe_samples(fb: FreeBird, rec: list) -> tuple[np.ndarray, ...]:
+    """(t, qpos, qvel, moment) of a probe's step records ``rec`` (one ``step_many``): the
+    compiled step loop's own arrays where it left them (the records' rows are views of
+    them: the same numbers), else made of the records."""
+    blocks: list = []
+    t, qpos, qvel = new_samples(fb, rec, 0, blocks)
+    if blocks[0] is not None:
+        return t, qpos, qvel, np.array(blocks[0][3][:, 0:3])
+    return t, qpos, qvel, np.array([r[3] for r in rec])
+
+
 #: The free body's trim: probes until the bias they measure changes by less than this
 #: fraction of gravity (a twentieth of the path integral's bound,
-#: :data:`birdsim.flight.freeflight.INTEGRAL_LIMIT`), at most ROTATION_PROBES probes.
+#: :data:`birdsim.flight.path_integral.INTEGRAL_LIMIT`), at most ROTATION_PROBES probes.
 BIAS_TOL = 0.005
 ROTATION_PROBES = 6
 

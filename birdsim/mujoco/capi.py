@@ -55,6 +55,8 @@ if numba is not None:  # pragma: no branch
             mj_objectVelocity = _t.ExternalFunction(
                 "mj_objectVelocity", _t.void(_p, _p, _i, _i, _p, _i)
             )
+            #: mj_mulM(m, d, res, vec): res = M vec
+            mj_mulM = _t.ExternalFunction("mj_mulM", _t.void(_p, _p, _p, _p))
             #: mj_applyFT(m, d, force[3], torque[3], point[3], body, qfrc_target)
             mj_applyFT = _t.ExternalFunction("mj_applyFT", _t.void(_p, _p, _p, _p, _p, _i, _p))
             AVAILABLE = True
