@@ -41,6 +41,7 @@ import numpy as np
 
 from birdsim.flight import fast_attitude
 from birdsim.flight.attitude_gains import AttitudeGains, damped_gains
+from birdsim.flight.attitude_input_bounds import bounds_plan, plan_bounds
 from birdsim.flight.attitude_jacobians import (
     INPUTS,
     JAC_SAMPLES,
@@ -254,25 +255,9 @@ class AttitudeLoop:
     def bounds(self, params: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(lo, hi) of :data:`INPUTS` at ``params`` (per input: parameter index, bounds)."""
         plan = self.__dict__.get("_bounds_plan")
-        if plan is None:  # per input: (parameter index or -1, lower, upper, bound)
-            kin = self.fb.kin
-            names, spec = kin.param_names, {p.name: p for p in kin.params}
-            plan = []
-            for name, kind, bound in INPUTS:
-                if kind == "diff" and name in names and name.endswith("_amp"):
-                    # an amplitude stays within its bounds on both wings (>= 0)
-                    plan.append((names.index(name), spec[name].lower, spec[name].upper, bound))
-                else:  # an angle (the stroke plane): the table's bounds bound the search only
-                    b = 0.0 if kind == "diff" and name not in names else bound
-                    plan.append((-1, 0.0, 0.0, b))
-            self._bounds_plan = plan
-        hi = []
-        for i, lower, upper, bound in plan:
-            if i >= 0:
-                p = float(params[i])
-                bound = min(bound, max(0.0, 2.0 * min(p - lower, upper - p)))
-            hi.append(bound)
-        return np.array([-b for b in hi]), np.array(hi)
+        if plan is None:  # fast_attitude reads it too
+            plan = self._bounds_plan = bounds_plan(self.fb.kin, INPUTS)
+        return plan_bounds(plan, params)
 
     def update(
         self,
