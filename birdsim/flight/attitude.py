@@ -58,6 +58,7 @@ from birdsim.flight.attitude_reserve import RESERVE_MISS, reserve_bounds
 from birdsim.flight.attitude_stiffness import measured_pitch_stiffness
 from birdsim.flight.body_attitude import FIT_BEATS, euler_zyx, wingbeat_fit_matrix
 from birdsim.flight.bounded_lsq import bounded_lsq, vector_norm
+from birdsim.flight.rocking_share import RockingShare
 from birdsim.mujoco.tail import TailControls
 
 #: Wingbeats per time constant of the attitude loop.  Measured (seed bird): without the
@@ -191,6 +192,8 @@ class AttitudeLoop:
         self.check = StalenessCheck(fb.red.period)
         #: a turn's reserve (:mod:`birdsim.flight.attitude_reserve`; 1: none)
         self.reserve = 1.0
+        #: the rocking's moment in M_0 after the slow loop handed back (pitch_section)
+        self.rocking: RockingShare | None = None
 
     def preset_integral(
         self, moment: np.ndarray, params: np.ndarray, pitch: float, speed: float
@@ -233,6 +236,10 @@ class AttitudeLoop:
             m0, jac = measured_jacobian(self.fb, params, pitch, v, turn)
             rate = measured_rate_derivatives(self.fb, params, pitch, v, turn)
         self.rate_jac = rate if RATE_CANCEL else np.zeros((3, 3))
+        if self.rocking is not None:
+            self.rocking.measure(
+                self.fb, params, pitch, v, float(self.inertia[1]), self._flap(params)
+            )
         if self.straight:
             k = measured_pitch_stiffness(self.fb, params, pitch, v, m0)
             self.stiffness = np.array([0.0, max(-k, 0.0), 0.0])
@@ -251,6 +258,11 @@ class AttitudeLoop:
         out = (d_used, damping, g, d_used + np.diag(damping))
         self._plant_for = (key, out)
         return out
+
+    def _flap(self, params: np.ndarray) -> float | None:
+        """The flap amplitude of the wingbeat ``params`` (None: the bird has none)."""
+        names = self.fb.kin.param_names
+        return float(params[names.index("flap_amp")]) if "flap_amp" in names else None
 
     def bounds(self, params: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(lo, hi) of :data:`INPUTS` at ``params`` (per input: parameter index, bounds)."""
@@ -293,6 +305,7 @@ class AttitudeLoop:
             or abs(self._jac[0] - speed) > JAC_DV
             or abs(self._jac[3] - jp) > JAC_DPITCH
             or np.abs(self._turn - turn).max() > JAC_DRATE
+            or (self.rocking is not None and self.rocking.stale(self._flap(at)))
         ):
             m0, jac = self._measure(at, jp, speed, turn if turn.any() else None)
             self._jac = (speed, m0, jac, jp)
@@ -301,6 +314,8 @@ class AttitudeLoop:
         elif REFRESH and self.straight:  # a new J only (attitude_refresh: M_0 stays)
             self._jac = self.check.refreshed(self.fb, self._jac, at, jp, speed, self.u, turn)
         _, m0, jac, _ = self._jac
+        if self.rocking is not None:  # the rocking's moment, lagged (rocking_share)
+            m0 = m0 + self.rocking.step(dt, self.fb.red.period)
         # the flapping's own damping (each axis, >= 0) is part of the plant the gains are
         # placed for; what is left of the rate derivatives (cross terms, any negative
         # damping) is cancelled with the estimated rates
