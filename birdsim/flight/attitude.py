@@ -41,6 +41,7 @@ import numpy as np
 
 from birdsim.flight import fast_attitude
 from birdsim.flight.attitude_gains import AttitudeGains, damped_gains
+from birdsim.flight.attitude_input_bounds import bounds_plan, plan_bounds
 from birdsim.flight.attitude_jacobians import (
     INPUTS,
     JAC_SAMPLES,
@@ -57,6 +58,7 @@ from birdsim.flight.attitude_reserve import RESERVE_MISS, reserve_bounds
 from birdsim.flight.attitude_stiffness import measured_pitch_stiffness
 from birdsim.flight.body_attitude import FIT_BEATS, euler_zyx, wingbeat_fit_matrix
 from birdsim.flight.bounded_lsq import bounded_lsq, vector_norm
+from birdsim.flight.rocking_share import RockingShare
 from birdsim.mujoco.tail import TailControls
 
 #: Wingbeats per time constant of the attitude loop.  Measured (seed bird): without the
@@ -190,6 +192,8 @@ class AttitudeLoop:
         self.check = StalenessCheck(fb.red.period)
         #: a turn's reserve (:mod:`birdsim.flight.attitude_reserve`; 1: none)
         self.reserve = 1.0
+        #: the rocking's moment in M_0 after the slow loop handed back (pitch_section)
+        self.rocking: RockingShare | None = None
 
     def preset_integral(
         self, moment: np.ndarray, params: np.ndarray, pitch: float, speed: float
@@ -232,6 +236,10 @@ class AttitudeLoop:
             m0, jac = measured_jacobian(self.fb, params, pitch, v, turn)
             rate = measured_rate_derivatives(self.fb, params, pitch, v, turn)
         self.rate_jac = rate if RATE_CANCEL else np.zeros((3, 3))
+        if self.rocking is not None:
+            self.rocking.measure(
+                self.fb, params, pitch, v, float(self.inertia[1]), self._flap(params)
+            )
         if self.straight:
             k = measured_pitch_stiffness(self.fb, params, pitch, v, m0)
             self.stiffness = np.array([0.0, max(-k, 0.0), 0.0])
@@ -251,28 +259,17 @@ class AttitudeLoop:
         self._plant_for = (key, out)
         return out
 
+    def _flap(self, params: np.ndarray) -> float | None:
+        """The flap amplitude of the wingbeat ``params`` (None: the bird has none)."""
+        names = self.fb.kin.param_names
+        return float(params[names.index("flap_amp")]) if "flap_amp" in names else None
+
     def bounds(self, params: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(lo, hi) of :data:`INPUTS` at ``params`` (per input: parameter index, bounds)."""
         plan = self.__dict__.get("_bounds_plan")
-        if plan is None:  # per input: (parameter index or -1, lower, upper, bound)
-            kin = self.fb.kin
-            names, spec = kin.param_names, {p.name: p for p in kin.params}
-            plan = []
-            for name, kind, bound in INPUTS:
-                if kind == "diff" and name in names and name.endswith("_amp"):
-                    # an amplitude stays within its bounds on both wings (>= 0)
-                    plan.append((names.index(name), spec[name].lower, spec[name].upper, bound))
-                else:  # an angle (the stroke plane): the table's bounds bound the search only
-                    b = 0.0 if kind == "diff" and name not in names else bound
-                    plan.append((-1, 0.0, 0.0, b))
-            self._bounds_plan = plan
-        hi = []
-        for i, lower, upper, bound in plan:
-            if i >= 0:
-                p = float(params[i])
-                bound = min(bound, max(0.0, 2.0 * min(p - lower, upper - p)))
-            hi.append(bound)
-        return np.array([-b for b in hi]), np.array(hi)
+        if plan is None:  # fast_attitude reads it too
+            plan = self._bounds_plan = bounds_plan(self.fb.kin, INPUTS)
+        return plan_bounds(plan, params)
 
     def update(
         self,
@@ -308,6 +305,7 @@ class AttitudeLoop:
             or abs(self._jac[0] - speed) > JAC_DV
             or abs(self._jac[3] - jp) > JAC_DPITCH
             or any(abs(a - b) > JAC_DRATE for a, b in zip(self._turn.tolist(), turn.tolist()))
+            or (self.rocking is not None and self.rocking.stale(self._flap(at)))
         ):
             m0, jac = self._measure(at, jp, speed, turn if turn.any() else None)
             self._jac = (speed, m0, jac, jp)
@@ -316,6 +314,8 @@ class AttitudeLoop:
         elif REFRESH and self.straight:  # a new J only (attitude_refresh: M_0 stays)
             self._jac = self.check.refreshed(self.fb, self._jac, at, jp, speed, self.u, turn)
         _, m0, jac, _ = self._jac
+        if self.rocking is not None:  # the rocking's moment, lagged (rocking_share)
+            m0 = m0 + self.rocking.step(dt, self.fb.red.period)
         # the flapping's own damping (each axis, >= 0) is part of the plant the gains are
         # placed for; what is left of the rate derivatives (cross terms, any negative
         # damping) is cancelled with the estimated rates

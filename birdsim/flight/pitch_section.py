@@ -43,6 +43,7 @@ from birdsim.flight.attitude_jacobians import INPUTS
 from birdsim.flight.flight_arrays import error_rotvec
 from birdsim.flight.pitch_observer import SLOW_SPEED, PitchObserver, loop_model
 from birdsim.flight.pitch_rocking import rocking_pitch_moment
+from birdsim.flight.rocking_share import RockingShare
 from birdsim.flight.wingbeat import INPUT_SMOOTHING_BEATS
 
 TWO_PI = 2.0 * math.pi  # one wingbeat in reduced time units
@@ -74,6 +75,12 @@ ROCKING_MOMENT = True
 #: units in the take-off's climb-out (the pigeon's take-off pitch 6.09 degrees RMS; at
 #: 0.04 and 0.02 rad 4.43 and 4.52: converged; tenth stage).
 SECTION_JAC_DPITCH = 0.04
+#: At the hand-back the rocking's moment stays a measured, lagged part of the attitude
+#: loop's ``M_0`` (:mod:`birdsim.flight.rocking_share`); else the attitude loop's pitch
+#: integral takes it over (the tenth stage: it stayed there while the take-off's wingbeat
+#: turned into the cruise's; the pigeon's take-off pitch 4.43 -> 3.81 degrees RMS, eleventh
+#: stage, docs/free-body.md).
+ROCKING_HANDBACK = True
 
 
 def section_map(
@@ -168,7 +175,11 @@ class SectionPitch:
         # entered below SLOW_SPEED, kept on while the tail has no pitch stiffness
         slow = (airspeed < SLOW_SPEED or self.on) and att.stiffness[1] <= 1e-9  # (round-off)
         if not (slow and att.enabled and att.straight and att._jac is not None):
-            if self.on:  # the attitude loop's pitch integral holds the rocking's moment now
+            if (
+                self.on and ROCKING_HANDBACK and self.with_rocking
+            ):  # the loop's M_0 counts the moment from now on
+                att.rocking = RockingShare(self._rock, att._flap(att.check.at))
+            elif self.on:  # the attitude loop's pitch integral holds the rocking's moment
                 att.integral[1] -= self._rock / float(att.inertia[1])
             self.on = False
             return None
@@ -186,7 +197,9 @@ class SectionPitch:
             # integral where it holds the attitude loop's integral's acceleration (which
             # held the rocking's moment too)
             obs.start(theta + q * lag_t, q, 0.0, att.u)
-            share = float(att.integral[1]) + rock / model.inertia
+            kept = getattr(att, "rocking", None)  # a share in the loop's M_0 (rocking_share)
+            held, att.rocking = (0.0 if kept is None else kept.used), None
+            share = float(att.integral[1]) + (rock - held) / model.inertia
             self.f = np.array([0.0, 0.0, -share / k[4]])
             self.on = True
         else:  # predict over the step just flown, then move onto the measured means
@@ -230,6 +243,7 @@ def section_source(att: Any, per_beat: int, dt_ctl: float, straight: bool) -> Ca
 
 __all__ = [
     "QUAD_OFFSET_BEATS",
+    "ROCKING_HANDBACK",
     "ROCKING_MOMENT",
     "SECTION_BEATS",
     "SECTION_JAC_DPITCH",
