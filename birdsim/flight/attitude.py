@@ -40,6 +40,7 @@ import mujoco
 import numpy as np
 
 from birdsim.flight import fast_attitude
+from birdsim.flight.air_angle import held, held_air
 from birdsim.flight.attitude_gains import AttitudeGains, damped_gains
 from birdsim.flight.attitude_input_bounds import bounds_plan, plan_bounds
 from birdsim.flight.attitude_jacobians import (
@@ -78,8 +79,7 @@ AXIS_BEATS = (ROLL_BEATS, ATTITUDE_BEATS, 2.0)
 #: (sweep, tail elevation), roll and yaw by the differential ones.
 SYM_ROWS, SYM_INPUTS = [1], [2, 3, 6]
 LAT_ROWS, LAT_INPUTS = [0, 2], [0, 1, 4, 5]
-#: Airspeed change (semispan omega) and pitch command change (rad) that trigger a new
-#: Jacobian.
+#: Airspeed (semispan omega) and pitch command (rad) changes that trigger a new Jacobian.
 JAC_DV = 0.05
 JAC_DPITCH = 0.1
 #: ... and the change of a turn's body rates (rad per time unit) that does.
@@ -179,8 +179,7 @@ class AttitudeLoop:
         self.u = np.zeros(len(INPUTS))
         self.saturated = False
         self._jac: tuple[float, np.ndarray, np.ndarray, float] | None = None
-        #: the moment's rate derivatives (3, 3) measured with the Jacobians
-        self.rate_jac = np.zeros((3, 3))
+        self.rate_jac = np.zeros((3, 3))  # the moment's rate derivatives, measured with J
         self._turn = np.zeros(3)  # the turning rates the Jacobians were measured at
         self.kinds = INPUTS
         #: straight path: docs/free-body.md's fourth-stage pitch loop (the tail's stiffness
@@ -188,12 +187,11 @@ class AttitudeLoop:
         #: slow to fast); turns keep the second stage's (with it: circle 0.083 -> 0.096)
         self.straight = False
         self.stiffness = np.zeros(3)  # restoring stiffness per axis (>= 0, table units)
-        #: straight path: re-measure J when it under-predicts the inputs' moment
-        self.check = StalenessCheck(fb.red.period)
-        #: a turn's reserve (:mod:`birdsim.flight.attitude_reserve`; 1: none)
-        self.reserve = 1.0
-        #: the rocking's moment in M_0 after the slow loop handed back (pitch_section)
-        self.rocking: RockingShare | None = None
+        self.check = StalenessCheck(fb.red.period)  # straight: J re-measured (attitude_refresh)
+        self.reserve = 1.0  # a turn's reserve (:mod:`birdsim.flight.attitude_reserve`; 1: none)
+        self.rocking: RockingShare | None = None  # the rocking's moment in M_0 (rocking_share)
+        self.air_angle, self.held_at = 0.0, (0.0, 0.0)  # the held body's air (air_angle)
+        self.gate_stiffness: float | None = None  # the slow loop's gate (air_angle)
 
     def preset_integral(
         self, moment: np.ndarray, params: np.ndarray, pitch: float, speed: float
@@ -230,6 +228,7 @@ class AttitudeLoop:
         :data:`ROCKING`, what the body's rocking within the wingbeat does to them included
         (:func:`measured_with_rocking`)."""
         v = max(speed, 0.0)
+        pitch = held_air(self, params, pitch, v)  # the slow loop's: turned by the air path
         if ROCKING:
             m0, jac, rate = measured_with_rocking(self.fb, params, pitch, v, self.inertia, turn)
         else:
@@ -312,7 +311,9 @@ class AttitudeLoop:
             self._turn = turn
             self.check.measured(self.fb.time, at)
         elif REFRESH and self.straight:  # a new J only (attitude_refresh: M_0 stays)
-            self._jac = self.check.refreshed(self.fb, self._jac, at, jp, speed, self.u, turn)
+            self._jac = self.check.refreshed(
+                self.fb, self._jac, at, held(self, jp), speed, self.u, turn
+            )
         _, m0, jac, _ = self._jac
         if self.rocking is not None:  # the rocking's moment, lagged (rocking_share)
             m0 = m0 + self.rocking.step(dt, self.fb.red.period)

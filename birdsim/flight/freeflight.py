@@ -19,6 +19,7 @@ import numpy as np
 from birdsim.errors import BirdsimError, limits_text, magnitude_ok
 from birdsim.flight import flight_arrays as step_records
 from birdsim.flight import turning
+from birdsim.flight.air_angle import straight_air_angle
 from birdsim.flight.attitude import FIT_BEATS
 from birdsim.flight.attitude_commands import bank_command, command_filter, straight_commands
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
@@ -289,8 +290,12 @@ def fly(
                 )
                 # the airspeed along the heading, as the path loop's (straight: along x)
                 v_air = v_est - (float(wind[0]) if track is None else track.wind_along(t, wind))
+                air = (v_air, 0.0)  # and the angle of the path loop's air path (air_angle)
+                if track is None:
+                    w_xz, est_air = (float(wind[0]), float(wind[2])), None if ctl.open_loop else est
+                    air = (v_air, straight_air_angle(path.state(t), est_air, w_xz))
                 ref3 = (pitch_ref, pitch_rate_ref, pitch_acc_ref)  # wingbeat-mean pitch:
-                body_pitch, err, rates, p_demand = comp_pitch(att_window, ref3, err, rates, v_air)
+                body_pitch, err, rates, p_demand = comp_pitch(att_window, ref3, err, rates, *air)
                 at_cmd = att.straight  # the Jacobians measured at the command (else the body's)
                 jac_pitch, jac_params = (pitch_ref if at_cmd else body_pitch), None
                 if compensate:

@@ -39,6 +39,7 @@ from typing import Any
 import numpy as np
 from scipy.linalg import expm
 
+from birdsim.flight.air_angle import gate_stiffness
 from birdsim.flight.attitude_jacobians import INPUTS
 from birdsim.flight.flight_arrays import error_rotvec
 from birdsim.flight.pitch_observer import SLOW_SPEED, PitchObserver, loop_model
@@ -152,28 +153,33 @@ class SectionPitch:
         att = self.att
         if not self.with_rocking:
             return 0.0
-        speed, m0, _, pitch = att._jac
+        m0 = att._jac[1]
         if self._rock_for is not m0:  # once per measurement of M_0
             inertia = float(att.inertia[1])
-            self._rock = rocking_pitch_moment(
-                att.fb, att.check.at, pitch, max(speed, 0.0), inertia
-            )[0]
+            theta, v = att.held_at  # the measurement's held body (air_angle), as M_0's
+            self._rock = rocking_pitch_moment(att.fb, att.check.at, theta, max(v, 0.0), inertia)[0]
             self._rock_for = m0
         return self._rock
 
     def step(
-        self, window: tuple, ref: tuple[float, float, float], airspeed: float
+        self,
+        window: tuple,
+        ref: tuple[float, float, float],
+        airspeed: float,
+        air: float = 0.0,
     ) -> tuple[float, float, float] | None:
         """Every control step: ``window`` the last wingbeat's (quaternions, seed body
         rates) per log sample, the newest now; ``ref`` the planned pitch, rate and
-        acceleration now.  Returns (wingbeat-mean pitch, its rate, the pitch moment
+        acceleration now; ``air`` the air path's angle (rad), at which this loop's model
+        is measured (:mod:`birdsim.flight.air_angle`; the other loops' in horizontal
+        air).  Returns (wingbeat-mean pitch, its rate, the pitch moment
         demanded, table units), or None outside slow straight flight (entered below
         ``SLOW_SPEED``, left when the tail's pitch stiffness appears) or before a wingbeat
         of samples: the fit's estimate and the loop's own demand then."""
         att, obs = self.att, self.obs
         quat, omega = window
         # entered below SLOW_SPEED, kept on while the tail has no pitch stiffness
-        slow = (airspeed < SLOW_SPEED or self.on) and att.stiffness[1] <= 1e-9  # (round-off)
+        slow = (airspeed < SLOW_SPEED or self.on) and gate_stiffness(att) <= 1e-9  # (round-off)
         if not (slow and att.enabled and att.straight and att._jac is not None):
             if (
                 self.on and ROCKING_HANDBACK and self.with_rocking
@@ -181,8 +187,9 @@ class SectionPitch:
                 att.rocking = RockingShare(self._rock, att._flap(att.check.at))
             elif self.on:  # the attitude loop's pitch integral holds the rocking's moment
                 att.integral[1] -= self._rock / float(att.inertia[1])
-            self.on = False
+            self.on, att.air_angle = False, 0.0
             return None
+        att.air_angle = air
         if len(quat) <= self.offset + 3 * self.quarter:
             return None
         idx = -1 - self.offset - self.quarter * np.arange(4)
@@ -223,15 +230,17 @@ class SectionPitch:
 def section_source(att: Any, per_beat: int, dt_ctl: float, straight: bool) -> Callable[..., tuple]:
     """The wingbeat-mean pitch, the attitude error and rates, and the pitch moment demanded
     as a function of (``window``, ``ref`` (planned pitch, rate, acceleration), ``err``,
-    ``rates``, ``airspeed``) called every control step: in slow straight flight
+    ``rates``, ``airspeed``, the air path's angle) called every control step: in slow straight flight
     (:data:`SECTION_LOOP`, ``straight``) the section's (:class:`SectionPitch`; ``err`` and
     ``rates`` copied with their pitch entries replaced), else the fit's pitch (``ref[0]
     - err[1]``), ``err``, ``rates`` and None."""
     on = SECTION_LOOP and straight
     sec = SectionPitch(att, per_beat, dt_ctl, rocking=ROCKING_MOMENT) if on else None
 
-    def source(window: tuple, ref: tuple, err: Any, rates: Any, airspeed: float) -> tuple:
-        out = None if sec is None else sec.step(window, ref, airspeed)
+    def source(
+        window: tuple, ref: tuple, err: Any, rates: Any, airspeed: float, air: float = 0.0
+    ) -> tuple:
+        out = None if sec is None else sec.step(window, ref, airspeed, air)
         if out is None:
             return ref[0] - float(err[1]), err, rates, None
         err, rates = np.array(err, dtype=float), np.array(rates, dtype=float)
