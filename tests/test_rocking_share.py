@@ -51,7 +51,11 @@ def test_pigeon_take_off_end_with_the_rocking_moment_kept_in_m0():
     back at wingbeat 19.  With the rocking's moment in the integral (the tenth stage) the
     body fell 10.9 degrees below the command there (wingbeat 24) and the whole flight's
     pitch was 4.43 degrees RMS off; kept in M_0, lagged: 6.4 and 3.81 (this fails on the
-    tenth stage's code).  No saturated sample, the path within 1.5 x the posed."""
+    tenth stage's code).  The climb (air path up to 10.8 degrees, wingbeats 11-16) left
+    the body 5.0, 8.6 and 6.2 degrees low in wingbeats 12-14 with the slow loop's model
+    measured in horizontal air; at the air path's angle (birdsim.flight.air_angle) 2.5,
+    3.1, 0.3 and the flight 2.81 RMS, the issue's 3 (this fails on the eleventh stage's
+    code).  No saturated sample, the path within 1.5 x the posed."""
     from birdsim.commands.fly import load_table_for
     from birdsim.flight.attitude_summary import attitude_figures
     from birdsim.flight.flightlog import log_arrays, summary
@@ -65,9 +69,11 @@ def test_pigeon_take_off_end_with_the_rocking_moment_kept_in_m0():
     r = fly(PATH_PRESETS["take-off"], table, bird, "m3", config=SimConfig(attitude="free"))
     att = attitude_figures(r.arrays)
     s = summary(log_arrays(r, "take-off"))
-    end = _per_beat_pitch_error_deg(r.arrays)[-3:]
-    assert np.abs(end).max() < 8.0, end  # measured -1.9, -6.4, +1.4 (before -5.4, -10.9, +4.6)
-    assert att["wingbeat_mean_pitch_rms_error_deg"] < 4.1  # 3.81 (before 4.43)
+    per_beat = _per_beat_pitch_error_deg(r.arrays)
+    end, climb = per_beat[-3:], per_beat[12:15]
+    assert np.abs(end).max() < 8.0, end  # measured -0.5, -4.7, -0.2 (tenth stage -5.4, -10.9, +4.6)
+    assert np.abs(climb).max() < 4.0, climb  # measured -2.5, -3.1, -0.3 (before -5.0, -8.6, -6.2)
+    assert att["wingbeat_mean_pitch_rms_error_deg"] < 3.0  # 2.81 (before 3.81, 4.43)
     assert att["attitude_saturated_samples"] == 0 and s["wingbeats_saturated"] == 0
     assert s["rms_error_after_start"] < 0.0228
     assert r.meta["root_applied_max"] == 0.0
