@@ -6,23 +6,22 @@ inclined by ``gamma`` is level flight turned by ``gamma``, and the table's pitch
 ``gamma`` is the body's commanded pitch (:meth:`birdsim.flight.controller.Controller.lookup`).
 The attitude loop measures its model (``M_0``, the Jacobians, the rate derivatives, the
 pitch stiffness, the rocking's rectified moment) on the body held at the command, and it
-held it in horizontal air: in a climb, the table's body turned nose up by
-``gamma`` against its air.  Here the slow straight flight's loop
-(:mod:`birdsim.flight.pitch_section`) holds it turned back by the air path's angle, so
-that the wings and the tail meet the air at the angle they meet it in flight (the
-wingbeat's parameters are the body's and stay; the airspeed stays the loop's forward
-one); the other loops keep horizontal air (in every loop, the pigeon's landing diverged:
-docs/free-body.md).  The pigeon's take-off climbs at up to 10.8 degrees
-in wingbeats 11-16, where the model measured in horizontal air missed 0.002-0.003 table
-units of nose-down moment (the rocking's rectified moment alone changes by about +0.02
-table units per radian of air angle there).
+held it in horizontal air: in a climb, the table's body turned nose up by ``gamma``
+against its air.  While the slow straight flight's loop (:mod:`birdsim.flight.pitch_section`)
+is on, the body is held turned back by the air path's angle, so that the wings and the
+tail meet the air at the angle they meet it in flight (the wingbeat's parameters are the
+body's and stay; the airspeed stays the loop's forward one); the other loops keep
+horizontal air (in every loop the pigeon's landing diverged).  The pigeon's take-off
+climbs at up to 10.8 degrees in wingbeats 11-16, where the model measured in horizontal
+air missed 0.0016-0.0033 table units of nose-down moment a wingbeat (at wingbeat 14.5 the
+held body's moment with the rocking's is 0.0017 more nose-down at the 10.3 degree path).
 
-The slow loop's gate (:mod:`birdsim.flight.pitch_section`, on while the tail has no
-pitch stiffness) keeps reading the stiffness at the command in horizontal air, as
-before (:func:`gate_stiffness`): at the air angle the tail restores from wingbeat 15 of
-the take-off, mid-climb (flap amplitude 1.24 rad), and the fourth-stage loop then swung
-the climb's rocking body by -7.8 degrees (wingbeat 17; docs/free-body.md).  Reduced units,
-radians, pitch nose up, ``gamma`` > 0 climbing.
+The slow loop's gate (on while the tail has no pitch stiffness) keeps reading the
+stiffness at the command in horizontal air, as before (:func:`gate_stiffness`): at the
+air angle the tail restores from wingbeat 15 of the take-off, mid-climb (flap amplitude
+1.24 rad), and the fourth-stage loop then swung the climb's rocking body by -5.8, +6.8
+and -10.5 degrees (wingbeats 17, 21, 24).  Reduced units, radians, pitch nose up,
+``gamma`` > 0 climbing.
 """
 
 from __future__ import annotations
