@@ -40,6 +40,7 @@ from birdsim.physics.kernel_means import (  # _polar_force, _rot: re-exported
     _polar_force,  # noqa: F401
     _rot,  # noqa: F401
 )
+from birdsim.physics.kernel_shaft import NO_MASS, NO_MATRIX, shaft_arrays
 from birdsim.physics.kinematics import Joint, KinematicModel, Offset, strip_positions
 from birdsim.physics.m5 import fold_bird_error
 
@@ -252,10 +253,13 @@ def means(
     phases: np.ndarray,
     *,
     body_rate: np.ndarray | None = None,
+    positive: np.ndarray | None = None,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
     """Cycle means per panel for flat (B,) parameter arrays, or None where the kernel
     cannot run (the caller then uses numpy).  ``body_rate`` (B x 3, body axes, or None
-    for none) adds ``omega x r`` to every element's air velocity.
+    for none) adds ``omega x r`` to every element's air velocity.  ``positive`` (B, or
+    None) receives each row's positive shaft power (the bird's wing mass; the periodic
+    grid: :mod:`birdsim.physics.kernel_shaft`).
 
     Returns:
         ``(force_earth B x K x 3, power B x K, joint_power B x G)`` (groups in
@@ -268,6 +272,9 @@ def means(
     c = np.ascontiguousarray
     B, K = len(speed), len(st.length)
     F, P, JP = np.zeros((B, K, 3)), np.zeros((B, K)), np.zeros((B, 2))
+    shaft = (NO_MASS, NO_MASS, NO_MATRIX, False)
+    if positive is not None:
+        shaft = (positive, *shaft_arrays(m, bird, len(phases)), True)
     args = (
         c(flat["pitch"], dtype=float),
         c(speed, dtype=float),
@@ -295,6 +302,7 @@ def means(
         F,
         P,
         JP,
+        *shaft,
     )
     if body_rate is not None:  # the rotating body: same kernel, omega x r added
         args, fn = args + (c(body_rate, dtype=float), True), _means_rate_kernel
@@ -312,9 +320,12 @@ def means_and_gradients(
     climb: np.ndarray,
     bird: Bird,
     phases: np.ndarray,
+    *,
+    positive: bool = False,
 ) -> tuple[np.ndarray, np.ndarray] | None:
     """Right-wing mean force and power with their exact parameter gradients (no induced
-    velocity, no body drag), or None where the kernel cannot run.
+    velocity, no body drag), or None where the kernel cannot run.  ``positive``: the
+    power row is the positive shaft power instead (:mod:`birdsim.physics.kernel_shaft`).
 
     Returns:
         ``(values B x 4, gradients B x 4 x d)``: rows Fx, Fy, Fz, P of the right wing
@@ -358,6 +369,8 @@ def means_and_gradients(
         st.polar,
         st.coeffs,
         out,
+        *(shaft_arrays(m, bird, len(phases)) if positive else (NO_MASS, NO_MATRIX)),
+        positive,
     )
     if not _run(_grad_kernel, B, args):
         return None

@@ -17,6 +17,7 @@ import numpy as np
 
 from birdsim.physics.jit import jit as _jit
 from birdsim.physics.jit import jit_inline as _jit_inline
+from birdsim.physics.kernel_shaft import _positive_part
 
 # ---- forward-mode dual numbers: value in [0], d/d(param i) in [1 + i] ----------------
 
@@ -105,6 +106,20 @@ def _scale_by_area(gx, gz, cq, half_loss):
         gz[i] = f0 * gz[i] + fi * gz[0]
     gx[0] *= f0
     gz[0] *= f0
+
+
+@_jit_inline
+def _kinetic(hk, vf, mass):
+    """Add ``1/2 mass |vf|^2`` (value, then its derivatives) to the dual ``hk`` (D)."""
+    ke = 0.0
+    for cc in range(3):
+        ke += vf[cc, 0] * vf[cc, 0]
+    hk[0] += 0.5 * mass * ke
+    for i in range(1, hk.shape[0]):
+        ke = 0.0
+        for cc in range(3):
+            ke += vf[cc, 0] * vf[cc, i]
+        hk[i] += mass * ke
 
 
 @_jit_inline
@@ -234,9 +249,16 @@ def _grad_kernel(
     polar,
     coeffs,
     out,
+    wmass,
+    dmat,
+    positive,
 ):
+    """Rows [lo, hi): out[b, r] = (value, gradient) of the mean Fx, Fy, Fz, P; with
+    ``positive`` row 3 is the positive shaft power (:mod:`birdsim.physics.kernel_shaft`)."""
     J, N, K = amp.shape[1], phases.shape[0], kind.shape[0]
     D = damp.shape[1] + 1
+    hp, hk = np.zeros((N if positive else 0, D)), np.zeros((N if positive else 0, D))
+    res = np.zeros(D)
     ct, stt = np.cos(phases), np.sin(phases)
     for b in range(lo, hi):
         cph = np.cos(phase[b])
@@ -252,6 +274,8 @@ def _grad_kernel(
         gx = np.zeros(D)
         gz = np.zeros(D)
         acc = np.zeros((4, D))
+        hp[:, :] = 0.0
+        hk[:, :] = 0.0
         for t in range(N):
             _dual_joints(
                 ct[t],
@@ -340,6 +364,9 @@ def _grad_kernel(
                     for cc in range(3):
                         pw += g[cc, 0] * vf[cc, 0]
                     acc[3, 0] -= pw
+                    if positive:
+                        hp[t, 0] -= pw
+                        _kinetic(hk[t], vf, wmass[k])
                     for i in range(1, D):
                         acc[0, i] += c0 * g[0, i] + CP[i] * g0x + s0 * g[2, i] + SP[i] * g0z
                         acc[1, i] += g[1, i]
@@ -348,6 +375,12 @@ def _grad_kernel(
                         for cc in range(3):
                             pw += g[cc, 0] * vf[cc, i] + g[cc, i] * vf[cc, 0]
                         acc[3, i] -= pw
+                        if positive:
+                            hp[t, i] -= pw
         for r in range(4):
             for i in range(D):
                 out[b, r, i] = acc[r, i] / N
+        if positive:
+            _positive_part(hp, hk, dmat, res)
+            for i in range(D):
+                out[b, 3, i] = res[i]

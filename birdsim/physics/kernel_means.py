@@ -5,6 +5,9 @@ encoding is :class:`birdsim.physics.kernel.Setup`'s.  An element's area is scale
 ``1 - lambda (1 - cos q) / 2`` where its panel carries an area-fold column (code 3 at
 index ``length[k]``: the joint in ``joint``, ``lambda`` in ``span``; m5's folding hand,
 :func:`birdsim.physics.m5.area_factor`); models without one never reach that line.
+With ``positive`` the kernel also keeps the per-sample power and kinetic energy of the
+wing for the positive shaft power (:mod:`birdsim.physics.kernel_shaft`); without it
+those lines are skipped and the means are unchanged bit for bit.
 """
 
 from __future__ import annotations
@@ -14,6 +17,7 @@ import math
 import numpy as np
 
 from birdsim.physics.jit import jit as _jit
+from birdsim.physics.kernel_shaft import _positive_part
 
 # ---- compiled code --------------------------------------------------------------------
 # Conventions as in frames.rotate: the passive Table 2 rotation about `axis` with (c, s);
@@ -83,6 +87,10 @@ def _means_rate_kernel(
     F,
     P,
     JP,
+    PP,
+    wmass,
+    dmat,
+    positive,
     rate,
     rotating,
 ):
@@ -97,7 +105,12 @@ def _means_rate_kernel(
     fxs, fys, fzs = np.empty(K), np.empty(K), np.empty(K)
     ps = np.empty(K)
     TQ, TD, TC, TS = np.empty((N, J)), np.empty((N, J)), np.empty((N, J)), np.empty((N, J))
+    # per-sample power and kinetic energy of the right wing (the positive power only)
+    hp, hk = np.zeros((N if positive else 0, 1)), np.zeros((N if positive else 0, 1))
+    res = np.zeros(1)
     for b in range(lo, hi):
+        hp[:, :] = 0.0
+        hk[:, :] = 0.0
         for j in range(J):
             cph[j], sph[j] = math.cos(phase[b, j]), math.sin(phase[b, j])
         cp, sp = math.cos(pitch[b]), math.sin(pitch[b])
@@ -220,6 +233,9 @@ def _means_rate_kernel(
                     fys[k] += gy
                     fzs[k] += -sp * gx + cp * gz
                     ps[k] -= gx * fx_ + gy * fy_ + gz * fz_
+                    if positive:
+                        hp[t, 0] -= gx * fx_ + gy * fy_ + gz * fz_
+                        hk[t, 0] += 0.5 * wmass[k] * (fx_ * fx_ + fy_ * fy_ + fz_ * fz_)
                     j0 -= gx * sx + gy * sy + gz * sz
                     j1 -= gx * wx + gy * wy + gz * wz
         for k in range(K):
@@ -229,6 +245,9 @@ def _means_rate_kernel(
             P[b, k] = ps[k] / N
         JP[b, 0] = j0 / N
         JP[b, 1] = j1 / N
+        if positive:
+            _positive_part(hp, hk, dmat, res)
+            PP[b] = res[0]
 
 
 @_jit
@@ -261,8 +280,14 @@ def _means_kernel(
     F,
     P,
     JP,
+    PP,
+    wmass,
+    dmat,
+    positive,
 ):
-    """Cycle means of rows [lo, hi) into F, P, JP (a body that does not rotate)."""
+    """Cycle means of rows [lo, hi) into F, P, JP (a body that does not rotate), and
+    when ``positive`` each row's positive shaft power into PP (panel masses ``wmass``,
+    spectral d/dt ``dmat``: :mod:`birdsim.physics.kernel_shaft`)."""
     _means_rate_kernel(
         lo,
         hi,
@@ -292,6 +317,10 @@ def _means_kernel(
         F,
         P,
         JP,
+        PP,
+        wmass,
+        dmat,
+        positive,
         np.zeros((1, 3)),
         False,
     )

@@ -75,6 +75,11 @@ def _check_grid(cycle: Cycle, bird: Bird) -> None:
             "endpoint=True is invalid for the positive power; allowed: the periodic grid "
             "(endpoint=False)"
         )
+    check_wing_mass(bird)
+
+
+def check_wing_mass(bird: Bird) -> None:
+    """A massive wing needs one element per panel (its mass at the control point)."""
     if bird.strips != 1 and bird.wing_mass_fraction > 0.0:
         raise BirdsimError(
             f"bird.strips={bird.strips!r} is invalid with wing_mass_fraction > 0; allowed: 1 "
@@ -82,4 +87,11 @@ def _check_grid(cycle: Cycle, bird: Bird) -> None:
         )
 
 
-__all__ = ["inertial_power", "panel_masses", "periodic_derivative", "positive_power", "shaft_power"]
+__all__ = [
+    "check_wing_mass",
+    "inertial_power",
+    "panel_masses",
+    "periodic_derivative",
+    "positive_power",
+    "shaft_power",
+]

@@ -10,8 +10,9 @@
 Fx, Fz and P are the dissertation's force (right wing + body drag, seed earth axes,
 Fz < 0 is up) and the cycle-mean mechanical power of that wing; for a bird with
 ``power_cost = "positive"`` P is instead the mean positive part of that wing's
-aerodynamic plus inertial power (:mod:`birdsim.physics.shaft_power`; numpy histories,
-gradients by central differences).  Every function here
+aerodynamic plus inertial power (:mod:`birdsim.physics.shaft_power`; the fused kernel
+with its exact gradients, :mod:`birdsim.physics.kernel_shaft`, where it runs).  Every
+function here
 is vectorised: parameter sets are rows of ``X`` (shape ``B x d``, columns in
 ``model.param_names`` order) and demands broadcast against the batch.
 
@@ -126,7 +127,7 @@ def forces(
     """
     X = np.asarray(X, dtype=float)
     net = bird.power_cost == "net"
-    if X.ndim == 2 and not bird.induced_velocity and net:
+    if X.ndim == 2 and not bird.induced_velocity:
         out = _kernel_forces(model, X, speed, bird, n, climb)
         if out is not None:
             return out
@@ -181,10 +182,8 @@ def forces_and_gradients(
     v = np.ascontiguousarray(np.broadcast_to(np.asarray(speed, dtype=float), (B,)))
     vc = np.ascontiguousarray(np.broadcast_to(np.asarray(climb, dtype=float), (B,)))
     flat = {name: np.ascontiguousarray(X[:, i]) for i, name in enumerate(model.param_names)}
-    out = (
-        kernel.means_and_gradients(model, flat, v, vc, bird, sample_phases(n, False))
-        if bird.power_cost == "net"
-        else None
+    out = kernel.means_and_gradients(
+        model, flat, v, vc, bird, sample_phases(n, False), positive=bird.power_cost == "positive"
     )
     if out is None:
         steps = FD_STEP * np.eye(d)
@@ -261,10 +260,12 @@ def _kernel_forces(
     except ValueError:
         return None  # let evaluate_cycle name the shapes
     flat = {name: np.ascontiguousarray(X[:, i]) for i, name in enumerate(model.param_names)}
-    out = kernel.means(model, flat, v, vc, np.zeros((B, 3)), bird, sample_phases(n, False))
+    pos = np.zeros(B) if bird.power_cost == "positive" else None
+    phases = sample_phases(n, False)
+    out = kernel.means(model, flat, v, vc, np.zeros((B, 3)), bird, phases, positive=pos)
     if out is None:
         return None
-    f, p = out[0].sum(axis=-2), out[1].sum(axis=-1)
+    f, p = out[0].sum(axis=-2), (out[1].sum(axis=-1) if pos is None else pos)
     if not vc.any():  # level flight: eq. 7, the same operations as aero.body_drag
         dx = -0.5 * bird.rho * np.square(v) * np.sin(flat["pitch"]) * bird.body_drag_area
         return f[:, 0] + dx, f[:, 2] + np.zeros_like(dx), p

@@ -26,6 +26,7 @@ from birdsim.physics import kernel
 from birdsim.physics.bird import Bird
 from birdsim.physics.cycle import sample_phases
 from birdsim.physics.kernel_dual import _grad_kernel
+from birdsim.physics.kernel_shaft import NO_MASS, NO_MATRIX, shaft_arrays
 from birdsim.physics.kinematics import KinematicModel
 
 _COMPILED = {"ok": False}  # both kernels ran once in this process
@@ -64,7 +65,8 @@ def _affine(model: KinematicModel, bird: Bird) -> bool:
 class PointForces:
     """Mean (Fx, Fz, P) of ONE parameter row, and their exact gradients, at a fixed
     speed V and climb (the dissertation's force: right wing + body drag, seed earth
-    axes; P the right wing's mean power).  Make one with :meth:`create`."""
+    axes; P the right wing's mean power, or its positive shaft power for a bird with
+    ``power_cost = "positive"``).  Make one with :meth:`create`."""
 
     def __init__(
         self, model: KinematicModel, bird: Bird, speed: float, climb: float, n: int
@@ -86,6 +88,11 @@ class PointForces:
         K = len(st.length)
         self.F, self.P, self.JP = np.zeros((1, K, 3)), np.zeros((1, K)), np.zeros((1, 2))
         self.out = np.zeros((1, 4, d + 1))
+        # the positive shaft power (bird.power_cost): P+ into PP, and the gradient kernel's
+        # power row (birdsim.physics.kernel_shaft)
+        self.positive = bird.power_cost == "positive"
+        self.PP = np.zeros(1)
+        masses, dmat = shaft_arrays(model, bird, n) if self.positive else (NO_MASS, NO_MATRIX)
         geometry = (
             st.kind,
             st.joint,
@@ -117,6 +124,10 @@ class PointForces:
             self.F,
             self.P,
             self.JP,
+            self.PP,
+            masses,
+            dmat,
+            self.positive,
         )
         self._grad_args = (
             self.pitch,
@@ -135,6 +146,9 @@ class PointForces:
             rho,
             *geometry,
             self.out,
+            masses,
+            dmat,
+            self.positive,
         )
         # body drag (aero.body_drag) as a function of pitch alone: level flight
         # D = (k sin(pitch), 0); climbing D = |sin(pitch - gamma)| (kx, kz)
@@ -152,13 +166,11 @@ class PointForces:
         cls, model: KinematicModel, bird: Bird, speed: float, climb: float, n: int
     ) -> PointForces | None:
         """A :class:`PointForces`, or None where the kernel cannot serve it (no JIT, a
-        polar it does not know, induced velocity on, a power cost other than the net
-        power, or joint motions not affine)."""
+        polar it does not know, induced velocity on, or joint motions not affine)."""
         if (
             not kernel.available()
             or not kernel.supported(bird)
             or bird.induced_velocity
-            or bird.power_cost != "net"
             or not _affine(model, bird)
         ):
             return None
@@ -187,7 +199,8 @@ class PointForces:
         return self.kx * s, self.kz * s
 
     def values(self, x: np.ndarray) -> tuple[float, float, float]:
-        """Mean (Fx, Fz, P) of the row ``x`` (d,), columns in ``model.param_names`` order."""
+        """Mean (Fx, Fz, P) of the row ``x`` (d,), columns in ``model.param_names`` order
+        (P the positive shaft power for a bird with ``power_cost = "positive"``)."""
         self._load(x)
         kernel._means_kernel(0, 1, *self._means_args)
         dx, dz = self._drag(float(x[self.ip]))
@@ -195,7 +208,7 @@ class PointForces:
         return (
             sum(f[0] for f in panels) + dx,
             sum(f[2] for f in panels) + dz,
-            sum(self.P[0].tolist()),
+            float(self.PP[0]) if self.positive else sum(self.P[0].tolist()),
         )
 
     def gradients(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
