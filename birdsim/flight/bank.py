@@ -155,19 +155,6 @@ __all__ = [
 ]
 
 
-def lateral_slope(window: list, per_beat: int) -> float:
-    """The wingbeat-mean sideways acceleration (to the left): the slope of the trend of
-    the side offset's rate over the last wingbeat (the fit of :func:`lateral_fit`)."""
-    from birdsim.flight.body_attitude import FIT_BEATS
-    from birdsim.flight.flight_arrays import fit_matrix
-
-    n = FIT_BEATS * per_beat
-    if len(window) < n:
-        return 0.0
-    yv = np.array(window[-n:], dtype=float)
-    return float(fit_matrix(n, 2.0 * math.pi)[1] @ yv[:, 1])
-
-
 def lateral_fit(window: list, per_beat: int) -> tuple[float, float]:
     """The wingbeat-mean side offset from the path and its rate (to the left), the
     trend's value now, from the last wingbeat of samples ``(y, vy)`` (the attitude

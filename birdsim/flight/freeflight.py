@@ -21,7 +21,6 @@ from birdsim.flight import flight_arrays as step_records
 from birdsim.flight import turning
 from birdsim.flight.attitude import FIT_BEATS
 from birdsim.flight.attitude_commands import bank_command, command_filter, straight_commands
-from birdsim.flight.bank import bank_of
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.demand_schedule import DemandSchedule, RefState
 from birdsim.flight.fast_errors import air_speeds, straight_samples
@@ -30,7 +29,6 @@ from birdsim.flight.flight_arrays import attitude_estimate, extend_rows, flight_
 from birdsim.flight.flight_result import FlightResult
 from birdsim.flight.float_ops import clip_float
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
-from birdsim.flight.lateral_recovery import LateralRecovery
 from birdsim.flight.path_integral import (
     FREE_BIAS_MARGIN,
     INTEGRAL_LIMIT,
@@ -48,7 +46,6 @@ from birdsim.physics.bird import Bird
 from birdsim.physics.units import reduced_bird, scales
 
 TWO_PI = 2.0 * math.pi
-RECOVERY_MAGNITUDE_FILTERED = True
 #: Time constant (wingbeats) of the body's pitch command (attitude free, with a
 #: stroke plane): the table's pitch smoothed; the stroke plane turns by the difference.
 PITCH_COMMAND_BEATS = 3.0
@@ -224,7 +221,7 @@ def fly(
                 float(fb.schedule.output[names.index("pitch")]),
                 stride=max(1, per_beat_ctl // PLAN_PER_BEAT),
             )
-        lat_int, turn_cmd, recovery = [0.0], None, LateralRecovery()  # turning's lateral loop
+        lat_int, turn_cmd = [0.0], None
         roll_ref = roll_rate_ref = roll_acc_ref = 0.0  # turning's bank command (filtered)
         att_window = (np.empty((0, 4)), np.empty((0, 3)))  # quat, C_SEED omega (FIT_BEATS)
         lat_window: Any = np.empty((0, 2)) if track is None else []  # (y, vy); turning: pairs
@@ -271,11 +268,6 @@ def fly(
                     roll_cmd = bank_command(lat_window, config.log_per_beat, red.gravity)
                     yaw_cmd = 0.0
                 else:  # turning: banked about the heading (birdsim.flight.bank)
-                    bq = att_window[0]
-                    if len(bq) and len(rows["bank_command"]) >= len(bq):
-                        recovery.bank_excess = float(
-                            np.mean(bank_of(bq)) - np.mean(rows["bank_command"][-len(bq) :])
-                        )
                     turn_cmd, lat_accel, (roll_ref, roll_rate_ref) = turn_command(
                         track,
                         t,
@@ -287,13 +279,9 @@ def fly(
                         (pitch_ref, pitch_rate_ref, pitch_acc_ref),
                         lat_int,
                         att.inertia,
-                        recovery,
                     )
                     roll_cmd, yaw_cmd = turn_cmd.roll, turn_cmd.yaw
                     lateral_corr[0] = lat_accel - track.state(t).a_lat
-                    if recovery.active and RECOVERY_MAGNITUDE_FILTERED:  # the bank's own
-                        up = red.gravity + track.state(t).az_up
-                        lateral_corr[0] = -up * math.tan(turn_cmd.bank) - track.state(t).a_lat
                     turning.straight_parts(att, track, t)  # the straight parts' loop
                 zyx_pitch = pitch_ref if turn_cmd is None else turn_cmd.pitch
                 err, rates = attitude_estimate(
@@ -379,7 +367,6 @@ def fly(
     result.meta["root_applied_max"] = root_applied
     result.meta["attitude"] = config.attitude
     result.meta["attitude_loop"] = bool(free and attitude_loop)
-    result.meta["lateral_recovery_steps"] = recovery.engaged_steps  # a turn's large errors
     return result
 
 

@@ -30,17 +30,9 @@ import numpy as np
 from birdsim.flight.attitude import AXIS_BEATS, LATERAL_INTEGRAL_RAD, AttitudeLoop, attitude_gains
 from birdsim.flight.attitude_commands import command_filter
 from birdsim.flight.attitude_reserve import TURN_RESERVE
-from birdsim.flight.bank import (
-    TurnAttitude,
-    lateral_acceleration,
-    lateral_fit,
-    lateral_slope,
-    turn_attitude,
-)
-from birdsim.flight.lateral_recovery import LateralRecovery, bank_range
+from birdsim.flight.bank import TurnAttitude, lateral_acceleration, lateral_fit, turn_attitude
 
 TWO_PI = 2.0 * math.pi
-RECORD_FILTERED = False
 #: Time constant (wingbeats) of the filter on the lateral loop's bank correction.
 BANK_BEATS = 0.5
 #: Largest bank correction (rad, 14 degrees) of the lateral loop about the path's planned
@@ -250,7 +242,6 @@ def turn_command(
     pitch: tuple[float, float, float],
     lat_integral: list[float],
     inertia: np.ndarray | None = None,
-    recovery: LateralRecovery | None = None,
 ) -> tuple[TurnAttitude, float, tuple[float, float]]:
     """The turning attitude command at reduced time ``t``: ``lat_window`` the last
     wingbeat's (side offset, its rate) samples (to the left of the path), ``pitch`` the
@@ -263,35 +254,14 @@ def turn_command(
     heading, bank_ff = track.bank_plan(t)
     st = track.state(t)
     y, vy = lateral_fit(lat_window, per_beat)
+    lat_integral[0] += dt * y
+    a_left = st.a_lat + lateral_acceleration(y, vy, lat_integral[0])
     up = gravity + st.az_up
-    phi0 = math.atan2(-st.a_lat, up)
-    a_meas = lateral_slope(lat_window, per_beat)
-    a_rec = (
-        None
-        if recovery is None
-        else recovery.step(y, vy, phi0, up, BANK_CORRECTION_MAX, dt, a_meas)
-    )
-    if a_rec is None:  # the linear loop
-        lat_integral[0] += dt * y
-    trim = lateral_acceleration(0.0, 0.0, lat_integral[0])  # the flown bank's bias, trimmed
-    if a_rec is None:
-        a_left = st.a_lat + lateral_acceleration(y, vy, lat_integral[0])
-    else:  # a large error: the recovery (the integral held, its bias trim kept)
-        a_left = st.a_lat + a_rec + trim
-    target = math.atan2(-a_left, up) - phi0
-    if a_rec is not None:  # the recovery's range
-        target = min(
-            max(target, bank_range(phi0, BANK_CORRECTION_MAX)[0]),
-            bank_range(phi0, BANK_CORRECTION_MAX)[1],
-        )
-    elif abs(target) > BANK_CORRECTION_MAX:  # a bank the roll loop can reach (anti-windup)
+    target = math.atan2(-a_left, up) - math.atan2(-st.a_lat, up)
+    if abs(target) > BANK_CORRECTION_MAX:  # a bank the roll loop can reach (anti-windup)
         target = math.copysign(BANK_CORRECTION_MAX, target)
-        if a_rec is None:
-            lat_integral[0] -= dt * y
+        lat_integral[0] -= dt * y
     value, rate, _ = command_filter(*filter_state, target, BANK_BEATS * TWO_PI, dt)
-    if recovery is not None:  # what reaches the flown acceleration DELAY_BEATS later
-        rec_b = value if RECORD_FILTERED else target
-        recovery.record(-up * (math.tan(phi0 + rec_b) - math.tan(phi0)) - trim, dt)
     cmd = turn_attitude(heading, (bank_ff[0] + value, bank_ff[1] + rate, bank_ff[2]), pitch)
     if FF_LEAD > 0.0:
         h2, b2 = track.bank_plan(t + FF_LEAD * TWO_PI)
