@@ -9,6 +9,7 @@ import math
 
 import numpy as np
 import pytest
+from vacuum_wing import OMEGA, PHI, vacuum_bird, wing_inertia
 
 from birdsim.errors import BirdsimError
 from birdsim.physics import kernel
@@ -103,16 +104,9 @@ def test_inertial_gradient_in_vacuum_is_twice_the_power_over_the_amplitude() -> 
     """A massive m1 wing flapping Phi sin(wt) in (nearly) no air: P+ is the sampled mean
     of the positive half of dK/dt = -1/2 I Phi^2 w^3 sin 2wt, so P+ ~ Phi^2 and
     dP+/dPhi = 2 P+ / Phi (the air's share is ~1e-10 of it)."""
-    phi, omega, span, n = 0.7, 3.0, 2.0, 64
-    bird = Bird(
-        rho=1e-6,
-        mass=2.0e4,
-        wing_mass_fraction=0.25,
-        omega=omega,
-        semispan=span,
-        power_cost="positive",
-    )
-    inertia = 0.25 * 2.0e4 * (span / 2.0) ** 2
+    phi, omega, n = PHI, OMEGA, 64
+    bird = vacuum_bird()
+    inertia = wing_inertia()
     amp = 0.5 * inertia * phi**2 * omega**3
     per_period = n // 2
     exact = amp / math.tan(math.pi / per_period) / per_period

@@ -7,6 +7,7 @@ import math
 
 import numpy as np
 import pytest
+from vacuum_wing import OMEGA, PHI, vacuum_bird, wing_inertia
 
 from birdsim.errors import BirdConfigError, BirdsimError
 from birdsim.physics.bird import Bird
@@ -15,20 +16,11 @@ from birdsim.physics.kinematics import get_model
 from birdsim.physics.shaft_power import inertial_power, positive_power
 from birdsim.tables.cost import forces, forces_and_gradients
 
-PHI, OMEGA, SPAN = 0.7, 3.0, 2.0
-
 
 def _vacuum_flap(n: int) -> tuple[Bird, object, float]:
     """An m1 wing flapping Phi sin(wt) in (nearly) no air, the mass a point at half span:
     kinetic energy 1/2 I (Phi w cos wt)^2, I = m (s/2)^2, so dK/dt = -1/2 I Phi^2 w^3 sin 2wt."""
-    bird = Bird(
-        rho=1e-6,
-        mass=2.0e4,
-        wing_mass_fraction=0.25,
-        omega=OMEGA,
-        semispan=SPAN,
-        power_cost="positive",
-    )
+    bird = vacuum_bird()
     cyc = evaluate_cycle(
         "m1",
         {"pitch": 0.0, "flap_amp": PHI, "twist_amp": 0.0},
@@ -37,8 +29,7 @@ def _vacuum_flap(n: int) -> tuple[Bird, object, float]:
         n=n,
         backend="numpy",
     )
-    inertia = 0.25 * 2.0e4 * (SPAN / 2.0) ** 2
-    return bird, cyc, inertia
+    return bird, cyc, wing_inertia()
 
 
 def test_sinusoidal_flap_in_vacuum_has_zero_net_and_the_half_cycle_positive_power() -> None:
