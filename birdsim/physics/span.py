@@ -14,13 +14,8 @@ from collections.abc import Mapping
 import numpy as np
 
 from birdsim.physics.bird import Bird
-from birdsim.physics.kinematics import (
-    KinematicModel,
-    get_model,
-    joint_states,
-    points_in_body,
-    validate_params,
-)
+from birdsim.physics.kinematics import KinematicModel
+from birdsim.physics.tip_path import tip_positions
 
 
 def tip_span(
@@ -33,16 +28,8 @@ def tip_span(
 ) -> np.ndarray:
     """Tip-to-tip span [bird length units] at ``phases`` (omega t, shape N), with the
     parameters' batch shape B in front: shape (*B, N)."""
-    m = model if isinstance(model, KinematicModel) else get_model(model)
-    bird = Bird() if bird is None else bird
-    p = validate_params(m, params, check_bounds=check_bounds)
-    batch = np.broadcast_shapes(*(a.shape for a in p.values()))
-    flat = {k: np.broadcast_to(a, batch).reshape(-1) for k, a in p.items()}
-    states = joint_states(m, flat, bird, np.asarray(phases, dtype=float), trailing=1)
-    chain, span, _ = m.chain_with_geometry(bird)[-1]  # the outermost panel carries the tip
-    pos, _ = points_in_body(chain, states, np.array([span]))
-    y = np.broadcast_to(pos[1], (len(flat["pitch"]), len(phases), 1))[..., 0]
-    return 2.0 * y.reshape(batch + (len(phases),))
+    _, y, _ = tip_positions(model, params, phases, bird=bird, check_bounds=check_bounds)
+    return 2.0 * y
 
 
 def span_ratio(

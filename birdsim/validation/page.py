@@ -170,7 +170,7 @@ def _kinematics_figure(sweep: TrimSweep, rows: Sequence[Row], title: str):  # no
         series("stroke_plane_deg"),
         "-s",
         ms=3,
-        label="birdsim: tip path to horizontal, 90 - (pitch + stroke plane)",
+        label="birdsim: wingtip path to horizontal (side view, highest to lowest point)",
     )
     notes: dict[int, list[str]] = {0: [], 1: []}
     for r in rows:

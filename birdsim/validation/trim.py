@@ -38,6 +38,7 @@ from birdsim.physics.kinematics import (
     joint_states,
     points_in_body,
 )
+from birdsim.physics.tip_path import tip_stroke_plane_deg
 from birdsim.physics.units import Scales, scales, weight_in_table_units
 from birdsim.tables.cost import forces
 from birdsim.tables.optimize import ForceProblem, Solution, box_corners, random_starts, slsqp
@@ -54,7 +55,9 @@ class TrimPoint:
 
     ``speed`` [m/s for an SI bird]; ``power`` the whole bird's mechanical power [W];
     ``params`` by table name [rad]; ``residual_x``, ``residual_z`` the whole bird's net
-    force / weight (0 when trimmed); ``wing_lift_fraction`` = -2 Fz_wing / weight.
+    force / weight (0 when trimmed); ``wing_lift_fraction`` = -2 Fz_wing / weight;
+    ``tip_stroke_plane`` the wingtip's stroke-plane angle [deg]
+    (:func:`birdsim.physics.tip_path.tip_stroke_plane_deg`), set by :func:`trim_sweep`.
     """
 
     speed: float
@@ -65,6 +68,7 @@ class TrimPoint:
     residual_z: float
     cost: float
     wing_lift_fraction: float
+    tip_stroke_plane: float | None = None
 
     @property
     def amplitude_deg(self) -> float:
@@ -77,10 +81,19 @@ class TrimPoint:
         return math.degrees(self.params["pitch"])
 
     @property
-    def stroke_plane_deg(self) -> float:
-        """Angle of the wingtip path (side view) to the horizontal [deg]: the flap swings
-        the tip along body z tilted by pitch + stroke plane, so 90 - (theta + theta_sp)."""
+    def flap_plane_deg(self) -> float:
+        """Angle of the shoulder's flap plane (side view) to the horizontal [deg]: the flap
+        swings the arm along body z tilted by pitch + stroke plane, so 90 - (theta +
+        theta_sp).  The wingtip's path for a rigid wing (base-m3), not once a wrist or a
+        fold moves the tip off that plane (m4, m5)."""
         return 90.0 - math.degrees(self.params["pitch"] + self.params.get("stroke_plane", 0.0))
+
+    @property
+    def stroke_plane_deg(self) -> float:
+        """The wingtip's stroke-plane angle to the horizontal [deg] (Tobalske & Dial 1996
+        measure it at the wingtip): ``tip_stroke_plane``; for a point built without one,
+        the flap plane (exact for a rigid wing)."""
+        return self.flap_plane_deg if self.tip_stroke_plane is None else self.tip_stroke_plane
 
     def to_dict(self) -> dict[str, object]:
         return {
@@ -201,17 +214,19 @@ def _point(problem: TrimProblem, sol: Solution) -> TrimPoint:
         bird = replace(bird, power_cost="net")
     check = TrimProblem(problem.model, bird, problem.speed_si, n=N_CHECK)
     fx, fz, p = check.achieved(sol.x)
+    params = sol.params(problem.model.param_names)
     w = problem.weight
     rx, rz = 2.0 * fx / w, (2.0 * fz + w) / w
     return TrimPoint(
         speed=problem.speed_si,
         power=2.0 * p * problem.sc.power,
-        params=sol.params(problem.model.param_names),
+        params=params,
         trimmed=bool(max(abs(rx), abs(rz)) <= TRIM_TOL),
         residual_x=rx,
         residual_z=rz,
         cost=sol.cost,
         wing_lift_fraction=-2.0 * fz / w,
+        tip_stroke_plane=tip_stroke_plane_deg(problem.model, params, bird=bird, check_bounds=False),
     )
 
 

@@ -1,0 +1,60 @@
+"""The scorecard's stroke-plane and mid-upstroke rows of the pigeon, per speed (issue 24).
+
+Runs the scorecard's sweep (``validation.trim.trim_sweep`` over the card's speeds, the
+shipped table's lookup one more start, as ``birdsim validate`` does, without the
+other-physics variants and the flights) and prints per speed: body pitch and stroke plane
+(deg), the shoulder's flap plane ``90 - (pitch + stroke_plane)`` and the wingtip's own
+stroke-plane angle (``physics/tip_path.py``, the row's reading), the mid-upstroke angle of
+attack at the row's station and its ratio to Crandell & Tobalske's 66 deg, the fold and
+the supination (rad); then the slopes over 6-20 m/s.  About 90 CPU s for m5.
+
+    python scripts/slow_rows_study.py [--model m5]
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+
+import numpy as np
+
+from birdsim.validation.measurements import load_measurements
+from birdsim.validation.run import load_flying_bird
+from birdsim.validation.scorecard import sweep_speeds
+from birdsim.validation.tablecheck import find_table, level_flight_from_table
+from birdsim.validation.trim import angle_of_attack_deg, trim_sweep
+
+MEASURED_AOA_UP = 66.0  # deg, Crandell & Tobalske 2011 (the data file's CT11_aoa_up)
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--model", default="m5")
+    args = ap.parse_args()
+    bird = load_flying_bird(None)
+    speeds = sweep_speeds(load_measurements())
+    table = find_table(bird, args.model)
+    tab = level_flight_from_table(table, bird, speeds) if table is not None else None
+    sweep = trim_sweep(args.model, bird, speeds, extra_starts=tab.starts if tab else None)
+    print(f"{args.model}: {sweep.seconds:.0f} s")
+    print(" V m/s  pitch  sp   flap_plane  wingtip  |AoA_up| ratio  fold  sup  trimmed")
+    for p in sweep.points:
+        aoa = abs(angle_of_attack_deg(sweep.model, bird, p, math.pi))
+        print(
+            f"{p.speed:6.2f} {p.body_angle_deg:6.2f} {math.degrees(p.params.get('stroke_plane', 0.0)):6.2f}"
+            f" {p.flap_plane_deg:8.2f} {p.stroke_plane_deg:8.2f} {aoa:8.2f} {aoa / MEASURED_AOA_UP:5.2f}"
+            f" {p.params.get('fold_amp', 0.0):5.2f} {p.params.get('supination_amp', 0.0):5.2f}  {p.trimmed}"
+        )
+    pts = [p for p in sweep.points if p.trimmed and 6.0 - 1e-9 <= p.speed <= 20.0 + 1e-9]
+    v = np.array([p.speed for p in pts])
+    for name, attr in (
+        ("flap plane", "flap_plane_deg"),
+        ("wingtip (the row)", "stroke_plane_deg"),
+        ("body angle", "body_angle_deg"),
+    ):
+        slope = np.polyfit(v, [getattr(p, attr) for p in pts], 1)[0]
+        print(f"slope 6-20 m/s, {name}: {slope:+.3f} deg per m/s")
+
+
+if __name__ == "__main__":
+    main()
