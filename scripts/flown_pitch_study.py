@@ -18,11 +18,14 @@ next interval has them), and put back bit for bit (:func:`restored`).  Modes:
   this step and the least change from them (weight ``--mu``, the inputs scaled by their
   bounds); ``--gate`` limits it (``stiff0``: where the tail has no pitch stiffness;
   ``deadzone``: only a predicted miss beyond ``--deadzone`` degrees is corrected, and
-  only while the loop's estimated error is beyond it).
+  only while the loop's estimated error is beyond it; ``tailrange``: entered where the
+  loop counts on the tail's stiffness, the tail has air (above ``SLOW_SPEED``) and the
+  body's estimated pitch less the air path's angle puts the tail beyond ``ALPHA_MAX``,
+  left after ``--calm`` control steps with the stiffness back and the body in range).
 
     PYTHONPATH=$PWD python scripts/flown_pitch_study.py --preset landing
         [--bird models/pigeon.toml | --bird ""] [--mode mpc] [--every 2] [--anchor held]
-        [--tail] [--mu 0] [--alpha 0.3] [--gate all] [--deadzone 3]
+        [--tail] [--mu 0] [--alpha 0.3] [--gate all] [--deadzone 3] [--calm 1]
         [--window 0.25 1] [--clip -10 10] [--inertia-scale 1] [--off] [--identity 16]
 """
 
@@ -44,9 +47,10 @@ from birdsim.flight.attitude_summary import attitude_figures, unfolded_euler
 from birdsim.flight.bounded_lsq import bounded_lsq
 from birdsim.flight.flightlog import log_arrays, summary
 from birdsim.flight.flown_prediction import SAMPLES, nose_up, predict
+from birdsim.flight.pitch_section import SLOW_SPEED
 from birdsim.flight.presets import DEMO_MODEL, PATH_PRESETS, demo_bird
 from birdsim.flight.simulate import SimConfig
-from birdsim.mujoco.tail import TailControls
+from birdsim.mujoco.tail import ALPHA_MAX, TailControls
 from birdsim.physics.bird import Bird
 
 #: The prediction's length and the part of it the mean pitch is taken over (wingbeats).
@@ -65,6 +69,8 @@ class Study:
         self.count = 0
         self.ratio = np.ones(len(INPUTS))
         self.held: np.ndarray | None = None
+        self.engaged = False
+        self.calm = 0
         self.log: list = []
 
     def _times(self, fb, n: int) -> tuple[np.ndarray, np.ndarray]:
@@ -95,6 +101,20 @@ class Study:
         on = att.straight and att._jac is not None
         if on and o.gate == "stiff0":
             on = att.stiffness[1] <= 0.0
+        if on and o.gate == "tailrange":  # in: the body left the tail's range the loop
+            v = fb.d.qvel  # counts on; out: the command's stiffness back, body within it
+            air = (float(v[0] - fb.m.opt.wind[0]), float(v[2] - fb.m.opt.wind[2]))
+            alpha = ref3[0] - err_pitch - math.atan2(air[1], air[0])
+            out_of_range = alpha > ALPHA_MAX
+            if not self.engaged:  # the tail has air (above slow flight's gate)
+                fast = math.hypot(*air) > SLOW_SPEED
+                self.engaged = att.stiffness[1] > 0.0 and out_of_range and fast
+                self.calm = 0
+            else:  # left after --calm control steps with the model holding again
+                held = out_of_range or att.stiffness[1] <= 0.0
+                self.calm = 0 if held else self.calm + 1
+                self.engaged = self.calm < self.o.calm
+            on = self.engaged
         dz = math.radians(o.deadzone) if o.gate == "deadzone" else 0.0
         if on and o.gate == "deadzone" and self.held is None:
             on = abs(err_pitch) > dz
@@ -216,7 +236,7 @@ def main() -> None:
     ap.add_argument("--tail", action="store_true")
     ap.add_argument("--mu", type=float, default=0.0)
     ap.add_argument("--alpha", type=float, default=0.3)
-    ap.add_argument("--gate", default="all", choices=["all", "stiff0", "deadzone"])
+    ap.add_argument("--gate", default="all", choices=["all", "stiff0", "deadzone", "tailrange"])
     ap.add_argument("--deadzone", type=float, default=3.0)
     ap.add_argument("--clip", type=float, nargs=2, default=(-10.0, 10.0))
     ap.add_argument("--inertia-scale", type=float, default=1.0)
@@ -224,6 +244,7 @@ def main() -> None:
     ap.add_argument("--identity", type=float, default=0.0,
                     help="fly this many wingbeats measuring ratios (applied as 1) and say "
                          "whether the flight is bit for bit the one without")  # fmt: skip
+    ap.add_argument("--calm", type=int, default=1, help="tailrange: steps within to leave")
     ap.add_argument("--window", type=float, nargs=2, default=WINDOW)
     ap.add_argument("--print-log", action="store_true")
     o = ap.parse_args()
