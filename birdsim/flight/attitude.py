@@ -189,6 +189,7 @@ class AttitudeLoop:
         self.stiffness = np.zeros(3)  # restoring stiffness per axis (>= 0, table units)
         self.check = StalenessCheck(fb.red.period)  # straight: J re-measured (attitude_refresh)
         self.reserve = 1.0  # a turn's reserve (:mod:`birdsim.flight.attitude_reserve`; 1: none)
+        self.per_inertia = False  # a cruise turn's: roll and yaw per unit inertia (same module)
         self.rocking: RockingShare | None = None  # the rocking's moment in M_0 (rocking_share)
         self.air_angle, self.held_at = 0.0, (0.0, 0.0)  # the held body's air (air_angle)
         self.gate_stiffness: float | None = None  # the slow loop's gate (air_angle)
