@@ -8,7 +8,8 @@ wingbeats (semispans), saturated samples and steady bank miss (degrees, ``turn_f
 and per gust the distance from the calm flight (semispans, 3-D): its peak, its largest
 value from 8 wingbeats after the gust on (the target: below 0.05), the wingbeats after the
 gust until it stays within 0.05 (the flight's end if never), its mean, and the largest
-height difference.
+height difference; and that distance's parts from 8 wingbeats after the gust on (the
+largest of each: along the calm flight's horizontal heading, to its left, and height).
 
 ``--step DA`` measures the lateral loop's plant instead: two calm circles with the lateral
 loop opened at wingbeat 20 (its correction held at 0), one of them with DA (reduced
@@ -80,6 +81,14 @@ def gust_figures(calm: dict, gusted: dict, start: float) -> dict[str, float]:
     tb = calm["t"][:n] / TWO_PI
     after = tb >= start
     out = np.flatnonzero(after & (d > WITHIN))
+    along, left = left_of(calm, n)
+    dxy = np.stack([gusted["x"][:n] - calm["x"][:n], gusted["y"][:n] - calm["y"][:n]], 1)
+    late = tb >= start + BACK_BEATS
+    parts = {
+        "after_8_along": (dxy * along).sum(1),
+        "after_8_lateral": (dxy * left).sum(1),
+        "after_8_height": gusted["z"][:n] - calm["z"][:n],
+    }
     return {
         "peak": round(float(d[after].max()), 4),
         "after_8": round(float(d[tb >= start + BACK_BEATS].max()), 4),
@@ -87,6 +96,7 @@ def gust_figures(calm: dict, gusted: dict, start: float) -> dict[str, float]:
         "mean": round(float(d[after].mean()), 4),
         "height_max": round(float(np.abs(gusted["z"][:n] - calm["z"][:n])[after].max()), 4),
         "saturated": int(np.sum(np.asarray(gusted["saturated"], dtype=bool))),
+        **{k: round(float(np.abs(v[late]).max()), 4) for k, v in parts.items()},
     }
 
 

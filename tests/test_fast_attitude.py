@@ -2,7 +2,9 @@
 allocation) compiled (``fast_attitude``) flies bit for bit as the reference's numpy and
 Python: straight flight (the pitch row's split) with a gust that drives inputs to their
 bounds (the reference then runs the update: its ``lsq_linear``), and a turn (the
-symmetric inputs by least squares, the (1, n) pitch row's dot product)."""
+symmetric inputs by least squares, the (1, n) pitch row's dot product): a slow one, since a
+cruise turn's roll and yaw are allocated per unit inertia by the reference every control
+step (``attitude_reserve.per_inertia``; that case checks it does)."""
 
 from __future__ import annotations
 
@@ -29,7 +31,7 @@ def _cruise(v: float) -> FlightPath:
 CASES = {
     "m4 cruise, gust": ("m4", _cruise(0.9), (Gust(2.0, 1.0, 0.1, -0.05, wy=0.05),), None),
     "m3 cruise, strong gust": ("m3", _cruise(0.5), (Gust(2.0, 1.0, -0.3, 0.2, wy=0.2),), None),
-    "m3 circle": ("m3", TURN_PRESETS["circle"], (), 6.0),
+    "m3 turn-90": ("m3", TURN_PRESETS["turn-90"], (), 6.0),
 }
 
 
@@ -60,3 +62,18 @@ def test_compiled_update_flies_as_the_reference(monkeypatch, case):
     for k in a:
         assert np.array_equal(a[k], b[k], equal_nan=True), k  # bitwise
     assert np.max(np.abs(b["y"])) > 1e-4  # the lateral loop acted
+
+
+def test_a_cruise_turn_takes_the_reference_update_per_unit_inertia(monkeypatch):
+    calls = {True: 0, False: 0}
+    allocate = fast_attitude.allocate
+
+    def counted(*a, **k):
+        done = allocate(*a, **k)
+        calls[done] += 1
+        return done
+
+    monkeypatch.setattr(fast_attitude, "allocate", counted)
+    table = load_table("tables/m3.npz")
+    fly(TURN_PRESETS["circle"], table, BIRD, "m3", config=SimConfig(attitude="free"), beats=12.0)
+    assert calls[True] == 0 and calls[False] == 0  # never offered to the compiled update

@@ -55,7 +55,7 @@ from birdsim.flight.attitude_jacobians import (
 )
 from birdsim.flight.attitude_pitch import WING_PITCH_BEATS, pitch_allocation
 from birdsim.flight.attitude_refresh import StalenessCheck
-from birdsim.flight.attitude_reserve import RESERVE_MISS, reserve_bounds
+from birdsim.flight.attitude_reserve import RESERVE_MISS, per_inertia, turn_reserve_bounds, weighs
 from birdsim.flight.attitude_stiffness import measured_pitch_stiffness
 from birdsim.flight.body_attitude import FIT_BEATS, euler_zyx, wingbeat_fit_matrix
 from birdsim.flight.bounded_lsq import bounded_lsq, vector_norm
@@ -189,6 +189,7 @@ class AttitudeLoop:
         self.stiffness = np.zeros(3)  # restoring stiffness per axis (>= 0, table units)
         self.check = StalenessCheck(fb.red.period)  # straight: J re-measured (attitude_refresh)
         self.reserve = 1.0  # a turn's reserve (:mod:`birdsim.flight.attitude_reserve`; 1: none)
+        self.per_inertia = False  # a cruise turn's: roll and yaw per unit inertia (same module)
         self.rocking: RockingShare | None = None  # the rocking's moment in M_0 (rocking_share)
         self.air_angle, self.held_at = 0.0, (0.0, 0.0)  # the held body's air (air_angle)
         self.gate_stiffness: float | None = None  # the slow loop's gate (air_angle)
@@ -323,7 +324,7 @@ class AttitudeLoop:
         d_used, damping, g, residual = self._plant()
         split = PITCH_SPLIT and self.straight
         a_lp = 1.0 - math.exp(-dt / (WING_PITCH_BEATS * self.fb.red.period)) if split else 0.0
-        if pitch_demand is None and fast_attitude.allocate(  # compiled, the same numbers
+        if pitch_demand is None and not weighs(self) and fast_attitude.allocate(  # compiled
             self, ((SYM_ROWS, SYM_INPUTS), (LAT_ROWS, LAT_INPUTS)), params, g, m0, jac,
             residual, damping, err, rates, dt, rate_cmd, acc_cmd, turn, INTEGRAL_LIMIT_RAD,
             _AXES[self.straight], split, a_lp, LAMBDA,
@@ -361,12 +362,12 @@ class AttitudeLoop:
             reg = math.sqrt(LAMBDA) * max(float(np.abs(a).max()), 1e-12)
             a_aug = np.vstack([a, reg * np.eye(len(cols))])
             b_aug = np.concatenate([demand[rows], np.zeros(len(cols))])
+            if rows is LAT_ROWS and weighs(self):  # a cruise turn's: per unit inertia
+                a_aug, b_aug = per_inertia(a_aug, b_aug, self.inertia[rows])
             x, mask = bounded_lsq(a_aug, b_aug, lo[cols] / scale, hi[cols] / scale)
             short = vector_norm(a @ x - demand[rows]) > RESERVE_MISS * vector_norm(demand[rows])
             if rows is LAT_ROWS and self.reserve > 1.0 and np.any(mask != 0) and short:
-                kin = self.fb.kin  # a turn's reserve: wider bounds where these leave it short
-                lim = {p.name: (p.lower, p.upper) for p in kin.params}
-                b2 = reserve_bounds(INPUTS, kin.param_names, lim, params, lo, hi, self.reserve)
+                b2 = turn_reserve_bounds(self, INPUTS, params, lo, hi)  # wider where short
                 x, mask = bounded_lsq(a_aug, b_aug, b2[0][cols] / scale, b2[1][cols] / scale)
             u[cols] = x * scale
             active = active or bool(np.any(mask != 0))

@@ -155,6 +155,7 @@ def attitude_loop_for(fb: Any, enabled: bool, track: Any, at_command: bool) -> A
     att.straight = at_command and fourth_stage_pitch(track, fb)
     if track is not None:  # wider lateral bounds where the loop's own leave it short
         att.reserve = TURN_RESERVE
+        att.per_inertia = not track.slow_turn  # roll and yaw weighed per unit inertia
     return att
 
 
