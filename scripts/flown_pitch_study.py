@@ -41,24 +41,19 @@ from pitch_input_probe import model_response
 import birdsim.flight.freeflight as freeflight_mod
 from birdsim.commands.fly import load_table_for
 from birdsim.flight import attitude as attitude_mod
+from birdsim.flight import flown_pitch
 from birdsim.flight.attitude_jacobians import INPUTS
 from birdsim.flight.attitude_pitch import _lsq
 from birdsim.flight.attitude_summary import attitude_figures, unfolded_euler
 from birdsim.flight.bounded_lsq import bounded_lsq
 from birdsim.flight.flightlog import log_arrays, summary
+from birdsim.flight.flown_pitch import DIHEDRAL, STEP, SWEEP, TAIL, WINDOW
 from birdsim.flight.flown_prediction import SAMPLES, nose_up, predict
 from birdsim.flight.pitch_section import SLOW_SPEED
 from birdsim.flight.presets import DEMO_MODEL, PATH_PRESETS, demo_bird
 from birdsim.flight.simulate import SimConfig
 from birdsim.mujoco.tail import ALPHA_MAX, TailControls
 from birdsim.physics.bird import Bird
-
-#: The prediction's length and the part of it the mean pitch is taken over (wingbeats).
-WINDOW = (0.25, 1.0)
-#: The inputs' step (rad) of a sensitivity.
-STEP = 0.01
-NAMES = [name for name, _, _ in INPUTS]
-SWEEP, DIHEDRAL, TAIL = (NAMES.index(n) for n in ("sweep", "dihedral", "tail_elevation"))
 
 
 class Study:
@@ -212,6 +207,8 @@ def fly_study(preset: str, bird, opts, beats: float | None = None):
             fb.schedule.shoulder_target, fb.cb.tail_controls = sh, tail
         return step(fb, right, times, t, dt, left, offset, wind, record, every)
 
+    shipped = flown_pitch.ENABLED  # the study's variants replace the shipped one (C)
+    flown_pitch.ENABLED = False
     if not opts.off:
         freeflight_mod.attitude_loop_for, freeflight_mod.interval = loop_for, hooked
         attitude_mod.AttitudeLoop.update = upd
@@ -222,6 +219,7 @@ def fly_study(preset: str, bird, opts, beats: float | None = None):
     finally:
         freeflight_mod.attitude_loop_for, freeflight_mod.interval = make, step
         attitude_mod.AttitudeLoop.update = update
+        flown_pitch.ENABLED = shipped
     return r, study
 
 
@@ -240,7 +238,7 @@ def main() -> None:
     ap.add_argument("--deadzone", type=float, default=3.0)
     ap.add_argument("--clip", type=float, nargs=2, default=(-10.0, 10.0))
     ap.add_argument("--inertia-scale", type=float, default=1.0)
-    ap.add_argument("--off", action="store_true", help="the flight as main flies it")
+    ap.add_argument("--off", action="store_true", help="the attitude loop alone (flown_pitch off)")
     ap.add_argument("--identity", type=float, default=0.0,
                     help="fly this many wingbeats measuring ratios (applied as 1) and say "
                          "whether the flight is bit for bit the one without")  # fmt: skip

@@ -271,13 +271,14 @@ def test_vertical_and_horizontal_gusts_are_flown_back(wind):
     """A one-wingbeat gust of 30 % of cruise speed (WX:WY:WZ, here along x or z) from
     wingbeat 3 in free cruise: every sample within 0.05 semispan of the path from wingbeat
     12 on (8 wingbeats after the gust's end, issue 22's bound for the side gust; measured
-    back in 4 wingbeats for +-z and +x, in 2 for -x, peak 0.094-0.103), and the gust does
-    move the bird (largest error above 0.08).  The -x gust needs the Jacobians' staleness
+    back in 5 wingbeats for +-z, 4 for +x, 2 for -x, peak 0.073-0.130; the +x gust's
+    peak 0.103 before the predictive pitch of birdsim.flight.flown_pitch engaged in its
+    recovery), and the gust does move the bird (largest error above 0.06).  The -x gust needs the Jacobians' staleness
     check (birdsim.flight.attitude_refresh): without it the set measured in the gust's
     transient stayed and the error swung 0.04-0.07 semispan in a period-two limit cycle."""
     from birdsim.flight.gust import parse_gust
 
     a, _ = _free("cruise", beats=16, gusts=[parse_gust(f"3:1:{wind}")])
     err = np.sqrt((a["x_ref"] - a["x"]) ** 2 + a["y"] ** 2 + (a["z_ref"] - a["z"]) ** 2)
-    assert err.max() > 0.08
+    assert err.max() > 0.06
     assert err[12 * 64 :].max() <= 0.05, err[12 * 64 :].max()

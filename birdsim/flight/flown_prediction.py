@@ -2,8 +2,8 @@
 MjData, momenta, wingbeat schedule and tail copied, flown on with the inputs held, and
 put back bit for bit.  The pitch plant of the flying, rocking body as the flight has it
 (the held-body Jacobians see the periodic rocking only): used by
-``scripts/flown_pitch_study.py`` (docs/free-body.md, "the landing: a pitch plant from
-the flown state"); no flight runs it."""
+:mod:`birdsim.flight.flown_pitch` (the flare's gate) and ``scripts/flown_pitch_study.py``
+(docs/free-body.md, "the landing: a pitch plant from the flown state")."""
 
 from __future__ import annotations
 
