@@ -2,6 +2,7 @@
 
 # first, before numpy loads OpenBLAS: its kernels pinned (birdsim/blas_kernel.py)
 import birdsim.blas_kernel  # noqa: F401  isort: skip
+
 # then, before any kernel compiles or loads: numba's cache keyed by the sources
 import birdsim.numba_cache  # noqa: F401  isort: skip
 from birdsim.errors import BirdsimError, ParameterError, UnknownModelError

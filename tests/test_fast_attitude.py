@@ -35,10 +35,9 @@ CASES = {
 }
 
 
-@pytest.mark.parametrize("case", list(CASES))
-def test_compiled_update_flies_as_the_reference(monkeypatch, case):
-    model, path, gusts, beats = CASES[case]
-    table = load_table(f"tables/{model}.npz")
+@pytest.fixture
+def allocations(monkeypatch) -> dict[bool, int]:
+    """How often the compiled allocation was taken (True) or declined (False)."""
     calls = {True: 0, False: 0}
     allocate = fast_attitude.allocate
 
@@ -48,6 +47,14 @@ def test_compiled_update_flies_as_the_reference(monkeypatch, case):
         return done
 
     monkeypatch.setattr(fast_attitude, "allocate", counted)
+    return calls
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_compiled_update_flies_as_the_reference(monkeypatch, allocations, case):
+    model, path, gusts, beats = CASES[case]
+    table = load_table(f"tables/{model}.npz")
+    calls = allocations
     logs = {}
     for compiled in (True, False):
         monkeypatch.setattr(fast_attitude, "ENABLED", compiled)
@@ -64,16 +71,8 @@ def test_compiled_update_flies_as_the_reference(monkeypatch, case):
     assert np.max(np.abs(b["y"])) > 1e-4  # the lateral loop acted
 
 
-def test_a_cruise_turn_takes_the_reference_update_per_unit_inertia(monkeypatch):
-    calls = {True: 0, False: 0}
-    allocate = fast_attitude.allocate
-
-    def counted(*a, **k):
-        done = allocate(*a, **k)
-        calls[done] += 1
-        return done
-
-    monkeypatch.setattr(fast_attitude, "allocate", counted)
+def test_a_cruise_turn_takes_the_reference_update_per_unit_inertia(allocations):
+    calls = allocations
     table = load_table("tables/m3.npz")
     fly(TURN_PRESETS["circle"], table, BIRD, "m3", config=SimConfig(attitude="free"), beats=12.0)
     assert calls[True] == 0 and calls[False] == 0  # never offered to the compiled update
