@@ -16,6 +16,7 @@ import birdsim.flight.flown_pitch as fp
 from birdsim.commands.fly import load_table_for
 from birdsim.flight import freeflight
 from birdsim.flight.attitude_summary import attitude_figures
+from birdsim.flight.flightlog import log_arrays, summary
 from birdsim.flight.presets import DEMO_MODEL, PATH_PRESETS, demo_bird
 from birdsim.flight.simulate import SimConfig
 from birdsim.mujoco.tail import ALPHA_MAX
@@ -50,6 +51,24 @@ def test_pigeon_landing_pitch_within_three_degrees(monkeypatch, enabled):
     else:  # the held-body loop alone: 16.09 degrees (the flare's overshoot)
         assert flown is None
         assert f["wingbeat_mean_pitch_rms_error_deg"] > 10.0
+
+
+@pytest.mark.parametrize("previous", [False, True])
+def test_pigeon_landing_path_within_the_issue_target(monkeypatch, previous):
+    """The path RMS after two wingbeats within 1.5 x the posed landing's (0.01568 m): with
+    the height row measured 0.02090 m; the previous stage (no height row, ALPHA 0.5)
+    0.02549, the flight sinking below its path over the perch."""
+    bird = Bird.from_toml("models/pigeon.toml")
+    table = load_table_for(bird, DEMO_MODEL, None)
+    posed = freeflight.fly(PATH_PRESETS["landing"], table, bird, DEMO_MODEL,
+                           config=SimConfig(attitude="posed"))  # fmt: skip
+    target = 1.5 * summary(log_arrays(posed, "landing"))["rms_error_after_start"]
+    if previous:
+        monkeypatch.setattr(fp, "PATH_WEIGHT", 0.0)
+        monkeypatch.setattr(fp, "ALPHA", 0.5)
+    r, _ = _fly("landing", bird, monkeypatch)
+    path = summary(log_arrays(r, "landing"))["rms_error_after_start"]
+    assert (path > target) if previous else (path <= target)
 
 
 def test_seed_cruise_never_engages_and_is_unchanged(monkeypatch):

@@ -8,12 +8,14 @@ pitch less the air path's angle puts the tail beyond ``ALPHA_MAX`` (its lift cap
 the loop counts on that stiffness and the tail has air (above ``SLOW_SPEED``), the
 model no longer holds (the pigeon's flare).  There, every control step, the flight is
 predicted :data:`WINDOW` ``[1]`` wingbeats ahead from its state
-(:func:`birdsim.flight.flown_prediction.predict`: the table's wingbeat, the stroke plane's
+(:func:`birdsim.flight.flown_prediction.predict_root`: the table's wingbeat, the stroke plane's
 compensation and the wind the bird has now held) with the loop's shoulders and tail and
 once more per input stepped by :data:`STEP`; the shoulders (sweep, dihedral) and the
 tail's elevation are set to the least change (weight :data:`MU`, inputs scaled by their
 bounds) that makes the predicted mean pitch over wingbeats ``WINDOW`` meet the command's
-(its rate and acceleration carried) up to :data:`ALPHA` of the miss.  The gate is left
+(its rate and acceleration carried) up to :data:`ALPHA` of the miss while the predicted
+wingbeat-mean height stays the one the loop's own inputs fly (weight :data:`PATH_WEIGHT`
+against the pitch's; the same predictions, no extra cost).  The gate is left
 after :data:`CALM_STEPS` control steps with the stiffness back and the body in range.
 Only the wing and tail targets change; no force or torque on the body.
 """
@@ -26,7 +28,7 @@ import numpy as np
 
 from birdsim.flight.attitude_jacobians import INPUTS
 from birdsim.flight.bounded_lsq import bounded_lsq
-from birdsim.flight.flown_prediction import SAMPLES, nose_up, predict
+from birdsim.flight.flown_prediction import SAMPLES, nose_up, predict_root
 from birdsim.flight.pitch_section import SLOW_SPEED
 from birdsim.mujoco.tail import ALPHA_MAX, TailControls
 
@@ -38,13 +40,23 @@ WINDOW = (0.25, 1.0)
 #: The inputs' step (rad) of a measured sensitivity.
 STEP = 0.01
 #: The fraction of the predicted miss left to the next step (0: dead-beat, marginal on a
-#: double integrator; measured 0.3 / 0.5 in the study, docs/free-body.md).
-ALPHA = 0.5
+#: double integrator; measured 0.3 / 0.5 in the study, docs/free-body.md; 0.5 without
+#: the path row below).
+ALPHA = 0.3
 #: The weight of the least change from the loop's own inputs (scaled by their bounds).
 MU = 1e-3
 #: Control steps (one wingbeat: the prediction's horizon) with the loop's model holding
 #: again before the gate is left.
 CALM_STEPS = 8
+#: The root's world axes (here z) whose predicted wingbeat-mean position the choice keeps
+#: as the loop's own inputs fly it: the path loop's demand is the table's force, and a
+#: pitch input that moves the body off it is a path error that loop sees only after the
+#: wingbeat (the pigeon's landing sank 3-5 cm below its path over the perch, the path
+#: integral at its bound; docs/free-body.md, "the flare's path").
+PATH_AXES = (2,)
+#: That row's weight against the pitch row's (semispans against radians; measured 0.5 /
+#: 1 / 2 / 10: a trade of path against pitch, 10 losing both).
+PATH_WEIGHT = 2.0
 NAMES = [name for name, _, _ in INPUTS]
 SWEEP, DIHEDRAL, TAIL = (NAMES.index(n) for n in ("sweep", "dihedral", "tail_elevation"))
 
@@ -90,24 +102,27 @@ class FlownPitch:
         idx = [SWEEP, DIHEDRAL, TAIL]
         x0 = np.array([*fb.schedule.shoulder_target, tail.elevation], dtype=float)
 
-        def flown(x: np.ndarray) -> np.ndarray:  # the quaternions predicted with inputs x
+        def flown(x: np.ndarray) -> np.ndarray:  # the root's coordinates with inputs x
             tl = TailControls(float(x[2]), tail.spread, tail.roll)
-            return predict(fb, args, x[:2], tl, WINDOW[1])[1]
+            return predict_root(fb, args, x[:2], tl, WINDOW[1])[1]
 
         base = flown(x0)
         t = np.arange(len(base)) * (fb.red.period / SAMPLES)
         last = t >= WINDOW[0] * fb.red.period - 1e-9
-        th0 = float(nose_up(base)[last].mean())
+        th0 = float(nose_up(base[:, 3:7])[last].mean())
         ref = ref3[0] + ref3[1] * t[last] + 0.5 * ref3[2] * t[last] ** 2
         miss = float(np.mean(ref)) - th0
-        sens = np.zeros(len(x0))
+        sens = np.zeros((1 + len(PATH_AXES), len(x0)))
         for j in range(len(x0)):
             moved = x0.copy()
             moved[j] += STEP
-            sens[j] = float(nose_up(flown(moved), base)[last].mean()) / STEP
+            q = flown(moved)
+            sens[0, j] = float(nose_up(q[:, 3:7], base[:, 3:7])[last].mean()) / STEP
+            for i, ax in enumerate(PATH_AXES):  # the path's change (semispans, window mean)
+                sens[1 + i, j] = PATH_WEIGHT * float((q[last, ax] - base[last, ax]).mean()) / STEP
         s = (hi[idx] - lo[idx]) / 2
         a = np.vstack([sens * s, math.sqrt(MU) * np.eye(len(x0))])
-        b = np.concatenate([[(1.0 - ALPHA) * miss], np.zeros(len(x0))])
+        b = np.concatenate([[(1.0 - ALPHA) * miss], np.zeros(len(PATH_AXES) + len(x0))])
         dx, _ = bounded_lsq(a, b, (lo[idx] - x0) / s, (hi[idx] - x0) / s)
         x = x0 + dx * s
         fb.schedule.shoulder_target = x[:2]
@@ -119,4 +134,14 @@ def flown_pitch_for(free: bool, straight: bool) -> FlownPitch | None:
     return FlownPitch() if ENABLED and free and straight else None
 
 
-__all__ = ["ALPHA", "CALM_STEPS", "MU", "STEP", "WINDOW", "FlownPitch", "flown_pitch_for"]
+__all__ = [
+    "ALPHA",
+    "CALM_STEPS",
+    "MU",
+    "PATH_AXES",
+    "PATH_WEIGHT",
+    "STEP",
+    "WINDOW",
+    "FlownPitch",
+    "flown_pitch_for",
+]

@@ -51,10 +51,19 @@ def predict(
     fb, args: tuple, shoulder: np.ndarray, tail: TailControls, beats: float
 ) -> tuple[np.ndarray, np.ndarray]:
     """(times (n,), the body's quaternions (n, 4), w x y z) of ``fb``'s flight continued
-    for ``beats`` wingbeats from now, :data:`SAMPLES` a wingbeat, with ``args`` (the
-    flight's next interval's right and left wingbeat targets, stroke-plane offset and
-    wind), the shoulder target ``shoulder`` (sweep, dihedral) and ``tail`` held; ``fb``
-    is left as it was (:func:`restored`)."""
+    for ``beats`` wingbeats from now (:func:`predict_root`)."""
+    t, qpos = predict_root(fb, args, shoulder, tail, beats)
+    return t, qpos[:, 3:7]
+
+
+def predict_root(
+    fb, args: tuple, shoulder: np.ndarray, tail: TailControls, beats: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """(times (n,), the root's coordinates (n, 7): world position in semispans, then the
+    quaternion w x y z) of ``fb``'s flight continued for ``beats`` wingbeats from now,
+    :data:`SAMPLES` a wingbeat, with ``args`` (the flight's next interval's right and left
+    wingbeat targets, stroke-plane offset and wind), the shoulder target ``shoulder``
+    (sweep, dihedral) and ``tail`` held; ``fb`` is left as it was (:func:`restored`)."""
     right, left, offset, wind = args
     n = int(round(beats * fb.config.steps_per_beat))
     rec: list = []
@@ -64,7 +73,7 @@ def predict(
         t = fb.time
         every = fb.config.steps_per_beat // SAMPLES
         interval(fb, right, t + np.arange(n) * fb.h, t, n * fb.h, left, offset, wind, rec, every)
-    return np.array([r[0] for r in rec]), np.array([r[1][3:7] for r in rec])
+    return np.array([r[0] for r in rec]), np.array([r[1][0:7] for r in rec])
 
 
 def nose_up(quat: np.ndarray, base: np.ndarray | None = None) -> np.ndarray:
@@ -81,4 +90,4 @@ def nose_up(quat: np.ndarray, base: np.ndarray | None = None) -> np.ndarray:
     return -2.0 * np.arctan2(s * v[:, 1], s * w)
 
 
-__all__ = ["SAMPLES", "nose_up", "predict", "restored"]
+__all__ = ["SAMPLES", "nose_up", "predict", "predict_root", "restored"]
