@@ -74,9 +74,12 @@ def gust_figures(
     bird, model: str, wind: tuple[float, float, float], beats: float = 16.0, attitude: str = "free"
 ) -> dict[str, float]:
     """Cruise with a one-wingbeat gust ``wind`` (x fwd, y left, z up; bird velocity units)
-    from wingbeat 3: the largest path error, wingbeat-mean roll and yaw, and the
-    wingbeat after the gust's end by which the path is within 0.05 semispan and roll and
-    yaw within 2 degrees for good (nan: never)."""
+    from wingbeat 3: the largest path error (semispans), wingbeat-mean roll and yaw, and
+    the wingbeat after the gust's end by which the path is within 0.05 semispan and roll
+    and yaw within 2 degrees for good (nan: never). Wingbeats are ``bird.period`` long and
+    errors divided by ``bird.semispan`` (the seed bird's reduced units: 2 pi and 1; the
+    pigeon's seconds and metres)."""
+    from birdsim.flight.attitude_summary import unfolded_euler
     from birdsim.flight.gust import parse_gust
 
     table = load_table_for(bird, model, None)
@@ -91,12 +94,14 @@ def gust_figures(
         config=SimConfig(attitude=attitude),
     )
     a = r.arrays
-    n = int(round(len(a["t"]) / (a["t"][-1] / (2 * math.pi))))
+    n = int(round(len(a["t"]) / (a["t"][-1] / bird.period)))
     nb = len(a["t"]) // n
     mean = lambda v: np.array([v[b * n : (b + 1) * n].mean() for b in range(nb)])  # noqa: E731
     err = np.sqrt((a["x_ref"] - a["x"]) ** 2 + a["y"] ** 2 + (a["z_ref"] - a["z"]) ** 2)
+    err = err / bird.semispan
     e_beat = np.array([err[b * n : (b + 1) * n].max() for b in range(nb)])
-    roll, yaw = np.degrees(mean(a["roll"])), np.degrees(mean(a["yaw"]))
+    yaw_u, _, roll_u = unfolded_euler(a["yaw"], a["pitch"], a["roll"])  # past the vertical
+    roll, yaw = np.degrees(mean(roll_u)), np.degrees(mean(yaw_u))
     ok = (e_beat <= 0.05) & (np.abs(roll) <= 2) & (np.abs(yaw) <= 2)
     back = float("nan")
     for b in range(4, nb):
