@@ -74,11 +74,10 @@ def gust_figures(
     bird, model: str, wind: tuple[float, float, float], beats: float = 16.0, attitude: str = "free"
 ) -> dict[str, float]:
     """Cruise with a one-wingbeat gust ``wind`` (x fwd, y left, z up; bird velocity units)
-    from wingbeat 3: the largest path error (semispans), wingbeat-mean roll and yaw, and
-    the wingbeat after the gust's end by which the path is within 0.05 semispan and roll
-    and yaw within 2 degrees for good (nan: never). Wingbeats are ``bird.period`` long and
-    errors divided by ``bird.semispan`` (the seed bird's reduced units: 2 pi and 1; the
-    pigeon's seconds and metres)."""
+    from wingbeat 3: the largest path error, wingbeat-mean roll and yaw (unfolded past the
+    vertical), and the wingbeat after the gust's end by which the path is within 0.05
+    semispan and roll and yaw within 2 degrees for good (nan: never). The flight log is in
+    reduced units for every bird (time 2 pi per wingbeat, lengths in semispans)."""
     from birdsim.flight.attitude_summary import unfolded_euler
     from birdsim.flight.gust import parse_gust
 
@@ -94,11 +93,10 @@ def gust_figures(
         config=SimConfig(attitude=attitude),
     )
     a = r.arrays
-    n = int(round(len(a["t"]) / (a["t"][-1] / bird.period)))
+    n = int(round(len(a["t"]) / (a["t"][-1] / (2 * math.pi))))
     nb = len(a["t"]) // n
     mean = lambda v: np.array([v[b * n : (b + 1) * n].mean() for b in range(nb)])  # noqa: E731
     err = np.sqrt((a["x_ref"] - a["x"]) ** 2 + a["y"] ** 2 + (a["z_ref"] - a["z"]) ** 2)
-    err = err / bird.semispan
     e_beat = np.array([err[b * n : (b + 1) * n].max() for b in range(nb)])
     yaw_u, _, roll_u = unfolded_euler(a["yaw"], a["pitch"], a["roll"])  # past the vertical
     roll, yaw = np.degrees(mean(roll_u)), np.degrees(mean(yaw_u))
