@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import json
 import math
+from dataclasses import replace
 from pathlib import Path
 
 import pytest
@@ -383,6 +384,12 @@ def test_slow_flight_rows_are_the_mean_below_three_metres_per_second(pigeon: Pat
         assert row.birdsim == pytest.approx(sum(each) / 3, abs=1e-12)  # 3 m/s left out
         assert row.birdsim != pytest.approx(each[0], abs=0.1)  # not the hover point alone
     assert rows[0].birdsim == pytest.approx(44.38, rel=0.005)
+    # a window row that is off gets its other-physics values over the whole window too
+    far = replace(ms["CT11_aoa_up"], value=200.0)
+    rows, vsweeps = score((far,), sweep, bird)
+    assert rows[0].verdict.startswith("off") and set(rows[0].variants) == set(vsweeps)
+    for vs in vsweeps.values():
+        assert [p.speed for p in vs.points] == [0.0, 1.0, 2.0]
 
 
 # ---- command line -------------------------------------------------------------------
