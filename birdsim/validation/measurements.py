@@ -5,6 +5,8 @@ columns :data:`COLUMNS`.  Each row names what birdsim quantity it is compared wi
 (``compare``, one of :data:`COMPARE_KEYS`) and how (``kind``, one of :data:`KINDS`):
 
 ``value``     a number with an optional uncertainty; scored by the ratio birdsim / measured
+              (at ``speed_m_s``, or with ``speed_to_m_s`` too birdsim's mean over the
+              sweep's speeds of that window, upper end excluded: :attr:`Measurement.window`)
 ``at_least``  a lower bound (e.g. the fastest speed flown); met, or scored by the ratio
 ``at_most``   an upper bound (e.g. the sprint power); met, or scored by the ratio
 ``trend``     the sign of d(quantity)/d(speed) between ``speed_m_s`` and ``speed_to_m_s``
@@ -142,6 +144,18 @@ class Measurement:
         return f"{self.author} {self.year}, {self.journal} {self.volume}:{self.pages}, {self.where}"
 
     @property
+    def window(self) -> tuple[float, float] | None:
+        """A value's window of speeds [speed_m_s, speed_to_m_s) [m/s], or None (one speed).
+
+        A row measured over a range of speeds ("slow flight (<3 m/s)") is compared with
+        birdsim's mean over the sweep's speeds from ``speed_m_s`` up to, not including,
+        ``speed_to_m_s``; trends use their window for the slope instead.
+        """
+        if self.kind == "trend" or self.speed_to_m_s is None:
+            return None
+        return (self.speed_m_s or 0.0, self.speed_to_m_s)
+
+    @property
     def scored(self) -> bool:
         """Whether the row gets a ratio verdict (values and bounds)."""
         return self.kind in ("value", "at_least", "at_most")
@@ -155,7 +169,12 @@ class Measurement:
             return "yes" if self.value else "no"
         bound = {"at_least": ">= ", "at_most": "<= "}.get(self.kind, "")
         unc = f" ± {_fmt(self.uncertainty)}" if self.uncertainty is not None else ""
-        return f"{bound}{_fmt(self.value)}{unc} {self.unit}"
+        at = (
+            ""
+            if self.window is None
+            else f" ({_fmt(self.window[0])} to <{_fmt(self.window[1])} m/s)"
+        )
+        return f"{bound}{_fmt(self.value)}{unc} {self.unit}{at}"
 
     def to_dict(self) -> dict[str, object]:
         return {
@@ -271,6 +290,12 @@ def _parse_row(name: str, line: int, raw: dict[str, str | None], seen: set[str])
             raise bad(
                 "speed_to_m_s", f["speed_to_m_s"], "a speed above speed_m_s (the trend's window)"
             )
+    elif speed_to is not None and (speed is None or speed_to <= speed):
+        raise bad(
+            "speed_to_m_s",
+            f["speed_to_m_s"],
+            "empty, or a speed above speed_m_s (a value over a window of speeds)",
+        )
     if f["kind"] == "yesno" and value not in (0.0, 1.0):
         raise bad("value", f["value"], "1 (yes) or 0 (no)")
     try:

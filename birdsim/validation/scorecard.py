@@ -29,7 +29,7 @@ from birdsim.errors import BirdsimError
 from birdsim.physics.aero import RoboflyPolar, SeedPolar
 from birdsim.physics.bird import Bird
 from birdsim.validation.measurements import FLIGHT_KEYS, Measurement
-from birdsim.validation.trim import TrimSweep, angle_of_attack_deg, trim_sweep
+from birdsim.validation.trim import TrimPoint, TrimSweep, angle_of_attack_deg, trim_sweep
 
 AGREE, ROUGH = 1.5, 2.0
 #: Speeds of the power curve [m/s]: 0 to 22 every 1 m/s (plus every speed a row names).
@@ -168,6 +168,12 @@ def model_value(m: Measurement, sweep: TrimSweep, bird: Bird) -> float | None:
         }[key]
         y = np.array([getattr(p, attr) for p in pts])
         return float(np.polyfit(x, y, 1)[0])
+    if m.window is not None:  # the mean over the sweep's speeds of the window
+        pts = window_points(m, sweep)
+        if not pts or not all(p.trimmed for p in pts):
+            return None
+        vals = [_point_value(key, sweep, p, bird) for p in pts]
+        return None if any(v is None for v in vals) else float(np.mean(vals))
     speed = (
         0.0
         if key in ("hover_power", "hover_feasible", "folds_in_hover", "fct_frequency_scaling")
@@ -178,6 +184,18 @@ def model_value(m: Measurement, sweep: TrimSweep, bird: Bird) -> float | None:
         return 1.0 if p.trimmed else 0.0
     if not p.trimmed:
         return None
+    return _point_value(key, sweep, p, bird)
+
+
+def window_points(m: Measurement, sweep: TrimSweep) -> list[TrimPoint]:
+    """The sweep's points in ``m.window`` (its low end included, its high end not)."""
+    lo, hi = m.window or (0.0, 0.0)
+    return [p for p in sweep.points if lo - 1e-9 <= p.speed < hi - 1e-9]
+
+
+def _point_value(key: str, sweep: TrimSweep, p: TrimPoint, bird: Bird) -> float | None:
+    """birdsim's value of ``key`` at one trimmed point ``p`` of ``sweep``."""
+    speed = p.speed
     if key in ("folds_in_cruise", "folds_in_hover"):
         return 1.0 if _span_ratio(sweep, p, bird) < FOLDED_SPAN_RATIO else 0.0
     if key in ("power", "hover_power"):
@@ -280,6 +298,11 @@ def score(
             0.0 if r.measurement.compare.startswith("hover") else (r.measurement.speed_m_s or 0.0)
             for r in off
             if r.measurement.compare not in CURVE_KEYS
+        } | {
+            p.speed
+            for r in off
+            if r.measurement.window
+            for p in window_points(r.measurement, sweep)
         }
         speeds = sorted(point_speeds | (set(sweep.speeds[::2].tolist()) if need_curve else set()))
         for label, vb in variant_birds(bird).items():
@@ -326,4 +349,5 @@ __all__ = [
     "sweep_speeds",
     "variant_birds",
     "verdict_for",
+    "window_points",
 ]
