@@ -29,6 +29,7 @@ from birdsim.flight.fast_interval import interval
 from birdsim.flight.flight_arrays import attitude_estimate, extend_rows, flight_arrays, keep_last
 from birdsim.flight.flight_result import FlightResult
 from birdsim.flight.float_ops import clip_float
+from birdsim.flight.flown_lateral import flown_lateral_for
 from birdsim.flight.flown_pitch import flown_pitch_for
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
 from birdsim.flight.path_integral import (
@@ -203,6 +204,7 @@ def fly(
         fb.start(pos0, vel0, pres, pitch=float(pres.pitch[0]) - d_pitch0, omega_body=omega0)
         att = attitude_loop_for(fb, free and attitude_loop, track, JAC_AT_COMMAND)
         flown = flown_pitch_for(free, track is None)  # the flare's predictive pitch
+        flown_lat = flown_lateral_for(free, track is None)  # a side gust's (flown_lateral)
         if free and trim and hasattr(fb, "start_moment"):
             att.preset_integral(fb.start_moment, cmd.params, float(pres.pitch[0]), float(ref0.vx))
         compensate = free and stroke_compensation and "stroke_plane" in names
@@ -335,9 +337,13 @@ def fly(
                 )
                 fb.schedule.shoulder_target = shoulder
                 fb.cb.tail_controls = tail
+                args4 = (right, left, offset, wind)  # the interval's (flown_pitch, flown_lateral)
                 if flown is not None:  # where the loop's model stops holding (flown_pitch)
                     ref3 = (pitch_ref, float(rate_cmd[1]), float(acc_cmd[1]))
-                    flown.step(att, fb, (right, left, offset, wind), ref3, cmd.params, err[1])
+                    flown.step(att, fb, args4, ref3, cmd.params, err[1])
+                if flown_lat is not None:  # the lateral inputs likewise (flown_lateral)
+                    cmd3 = (zyx_pitch, roll_cmd, yaw_cmd)
+                    right, left = flown_lat.step(att, fb, args4, cmd.params, cmd3, err)
             else:
                 right = cmd.params
             start, times = len(record), t + step_offsets  # advance and steps: fast_interval
