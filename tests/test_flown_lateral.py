@@ -56,7 +56,11 @@ def _side_gust(bird, monkeypatch, enabled: bool = True, beats: float = 16.0):
 @pytest.mark.parametrize("enabled", [True, False])
 def test_pigeon_side_gust_comes_back(monkeypatch, enabled):
     bird = Bird.from_toml("models/pigeon.toml")
-    err, roll, yaw, flown, _ = _side_gust(bird, monkeypatch, enabled)
+    err, roll, yaw, flown, a = _side_gust(bird, monkeypatch, enabled)
+    # the log's inputs are the flown ones: its tail roll is the callback's (before, the
+    # loop's own choice was logged where the gate chose another)
+    np.testing.assert_array_equal(a["u_tail_roll"], a["tail_roll"])
+    np.testing.assert_array_equal(a["u_tail_elevation"], a["tail_elevation"])
     if enabled:  # measured: peak 0.361, within 0.05 and 2 degrees from wingbeat 14 on
         assert flown.steps > 0
         assert err.max() < 0.5 and roll.max() < 20.0 and yaw.max() < 20.0

@@ -44,6 +44,9 @@ def _fly(preset: str, bird, monkeypatch, enabled: bool = True):
 def test_pigeon_landing_pitch_within_three_degrees(monkeypatch, enabled):
     r, flown = _fly("landing", Bird.from_toml("models/pigeon.toml"), monkeypatch, enabled)
     f = attitude_figures(r.arrays)
+    # the log's inputs are the flown ones (the gate's shoulders and tail, not the loop's)
+    a = r.arrays
+    np.testing.assert_array_equal(a["u_tail_elevation"], a["tail_elevation"])
     if enabled:  # measured 2.93 degrees, no saturated sample; engaged from wingbeat 6.4
         assert f["wingbeat_mean_pitch_rms_error_deg"] < 3.0
         assert f["attitude_saturated_samples"] == 0

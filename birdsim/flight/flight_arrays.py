@@ -140,10 +140,20 @@ def fit_matrix(n: int, period: float) -> np.ndarray:
 
 
 def extend_rows(
-    rows: dict, refs: dict, y_ref: Any, cmd: Any, tail: Any, att: Any, turn_cmd: Any
+    rows: dict,
+    refs: dict,
+    y_ref: Any,
+    cmd: Any,
+    tail: Any,
+    att: Any,
+    turn_cmd: Any,
+    gates: tuple = (),
 ) -> None:
     """Append one control interval's references and controls to the flight's ``rows``,
-    one entry per new log sample (``refs["x"]`` has one per sample)."""
+    one entry per new log sample (``refs["x"]`` has one per sample).  The inputs are the
+    ones flown: the loop's ``att.u`` with the entries an engaged gate of ``gates``
+    (:mod:`birdsim.flight.flown_pitch`, :mod:`birdsim.flight.flown_lateral`; None where
+    absent) chose instead (its ``flown_u``)."""
     n_new = len(refs["x"])
     rows["x_ref"].extend(np.asarray(refs["x"]).tolist())
     rows["z_ref"].extend(np.asarray(refs["z"]).tolist())
@@ -153,7 +163,11 @@ def extend_rows(
     rows["climb_demand"].extend([cmd.climb] * n_new)
     rows["saturated"].extend([cmd.saturated] * n_new)
     rows["tail"].extend([(tail.elevation, tail.spread, tail.roll)] * n_new)
-    rows["inputs"].extend([att.u.copy()] * n_new)
+    u = att.u.copy()
+    for gate in gates:
+        if gate is not None and gate.flown_u is not None:
+            u[gate.flown_u[0]] = gate.flown_u[1]
+    rows["inputs"].extend([u] * n_new)
     rows["attitude_saturated"].extend([att.saturated] * n_new)
     if turn_cmd is not None:
         rows["bank_command"].extend([turn_cmd.bank] * n_new)

@@ -71,6 +71,8 @@ class FlownLateral:
         self.engaged = False
         self.calm = 0
         self.steps = 0  # control steps engaged (for tests and logs)
+        #: This step's flown lateral inputs (columns of ``INPUTS``, values) or None.
+        self.flown_u: tuple[list[int], np.ndarray] | None = None
 
     def gate(self, att, lo: np.ndarray, hi: np.ndarray, err: np.ndarray) -> bool:
         """Whether the prediction chooses this step's lateral inputs (updates the gate):
@@ -97,8 +99,9 @@ class FlownLateral:
         flown: ``args`` (right, left wingbeat targets, stroke-plane offset, wind now) as
         the loop made them, ``params`` the table's wingbeat, ``cmd3`` the command's (pitch,
         roll, yaw) (rad), ``err`` the loop's error.  Returns the (right, left) targets to
-        fly (the loop's when not engaged) and sets the tail's roll (``att.u``, the logged
-        inputs, stays the loop's own choice, as :mod:`birdsim.flight.flown_pitch` leaves it)."""
+        fly (the loop's when not engaged) and sets the tail's roll; ``att.u`` stays the loop's
+        own choice (it feeds the loop), :attr:`flown_u` has what is flown (the log's)."""
+        self.flown_u = None
         lo, hi = att.bounds(params)
         if not self.gate(att, lo, hi, err):
             return args[0], args[1]
@@ -135,6 +138,7 @@ class FlownLateral:
         x = x0 + dx * s
         right, left, tl = targets(x)
         fb.cb.tail_controls = tl
+        self.flown_u = (cols, x)
         return right, left
 
 

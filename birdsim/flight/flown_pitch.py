@@ -68,6 +68,9 @@ class FlownPitch:
         self.engaged = False
         self.calm = 0
         self.steps = 0  # control steps engaged (for tests and logs)
+        #: This step's flown inputs where they differ from the loop's: (columns of
+        #: ``INPUTS``, values), or None (the log's ``u_*``: :func:`flown_inputs`).
+        self.flown_u: tuple[list[int], np.ndarray] | None = None
 
     def gate(self, att, fb, pitch_cmd: float, err_pitch: float, wind: np.ndarray) -> bool:
         """Whether the prediction chooses this step's inputs (updates the gate): ``att``
@@ -94,6 +97,7 @@ class FlownPitch:
         interval about to be flown: ``args`` (right, left wingbeat targets, stroke-plane
         offset, wind now) as that interval has them, ``ref3`` the command's pitch (rad),
         rate and acceleration (rad per reduced time), ``params`` the table's wingbeat."""
+        self.flown_u = None
         if not self.gate(att, fb, ref3[0], err_pitch, args[3]):
             return
         self.steps += 1
@@ -126,6 +130,7 @@ class FlownPitch:
         dx, _ = bounded_lsq(a, b, (lo[idx] - x0) / s, (hi[idx] - x0) / s)
         x = x0 + dx * s
         fb.schedule.shoulder_target = x[:2]
+        self.flown_u = (idx, x)
         fb.cb.tail_controls = TailControls(float(x[2]), tail.spread, tail.roll)
 
 

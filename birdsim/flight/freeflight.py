@@ -203,8 +203,8 @@ def fly(
         omega0, d_pitch0 = getattr(fb, "start_rotation", (None, 0.0))
         fb.start(pos0, vel0, pres, pitch=float(pres.pitch[0]) - d_pitch0, omega_body=omega0)
         att = attitude_loop_for(fb, free and attitude_loop, track, JAC_AT_COMMAND)
-        flown = flown_pitch_for(free, track is None)  # the flare's predictive pitch
-        flown_lat = flown_lateral_for(free, track is None)  # a side gust's (flown_lateral)
+        gates = flown_pitch_for(free, track is None), flown_lateral_for(free, track is None)
+        flown, flown_lat = gates  # the flown-prediction gates (flare's pitch, side gust's)
         if free and trim and hasattr(fb, "start_moment"):
             att.preset_integral(fb.start_moment, cmd.params, float(pres.pitch[0]), float(ref0.vx))
         compensate = free and stroke_compensation and "stroke_plane" in names
@@ -370,7 +370,7 @@ def fly(
                 if pitch_ref is None
                 else [pitch_ref] * len(t_new)
             )
-            extend_rows(rows, refs, y_ref, cmd, fb.cb.tail_controls, att, turn_cmd)
+            extend_rows(rows, refs, y_ref, cmd, fb.cb.tail_controls, att, turn_cmd, gates)
             if progress is not None:
                 progress((k + 1) / per_beat_ctl)
         projection = fb.projection_max
