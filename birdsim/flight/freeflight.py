@@ -33,7 +33,9 @@ from birdsim.flight.flown_pitch import flown_pitch_for
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
 from birdsim.flight.path_integral import (
     FREE_BIAS_MARGIN,
+    INTEGRAL_BAND,
     INTEGRAL_LIMIT,
+    TURN_INTEGRAL_BAND,
     integral_step,
     within_band,
 )
@@ -242,9 +244,10 @@ def fly(
                 and not cmd.saturated
                 and not ctl.open_loop
                 and gains.ki > 0
-                and within_band(est[0])
+                and within_band(est[0], INTEGRAL_BAND if track is None else TURN_INTEGRAL_BAND)
             ):
-                # anti-windup: frozen while saturated or far off the path (a gust), and
+                # anti-windup: frozen while saturated or far off the path (a gust; in a
+                # turn nearer, path_integral.TURN_INTEGRAL_BAND), and
                 # bounded: the integral only trims the small mismatch between the table's
                 # mean force and the flown one
                 integral = integral_step(integral, dt_ctl, est[0], int_limit)
