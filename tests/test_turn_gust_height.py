@@ -1,20 +1,28 @@
 """The side gust in the circle: the height's recovery (the path loop's integral held
-nearer the path in a turn, ``birdsim.flight.path_integral.TURN_INTEGRAL_BAND``;
+nearer the path in a cruise turn, ``birdsim.flight.turning.integral_band``;
 docs/turning.md, "Gust stage, tenth pass")."""
 
 from __future__ import annotations
+
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
 
 from birdsim.flight.path_integral import INTEGRAL_BAND, TURN_INTEGRAL_BAND, within_band
+from birdsim.flight.turning import integral_band
 
 
-def test_a_turn_holds_its_path_integral_nearer_the_path_than_straight_flight():
+def test_a_cruise_turn_holds_its_path_integral_nearer_the_path_than_straight_flight():
     e = np.array([0.0, 0.05])  # 0.05 semispan below the path
     assert within_band(e, INTEGRAL_BAND)
     assert not within_band(e, TURN_INTEGRAL_BAND)
-    assert 0.0 < TURN_INTEGRAL_BAND < INTEGRAL_BAND
+    cruise, slow = SimpleNamespace(slow_turn=False), SimpleNamespace(slow_turn=True)
+    second, fourth = SimpleNamespace(straight=False), SimpleNamespace(straight=True)
+    assert integral_band(cruise, second) == TURN_INTEGRAL_BAND < INTEGRAL_BAND
+    # straight flight, a slow turn, a rocking bird's turn (the pigeon): straight's band
+    for track, att in ((None, fourth), (None, second), (slow, second), (cruise, fourth)):
+        assert integral_band(track, att) == INTEGRAL_BAND
 
 
 @pytest.mark.slow

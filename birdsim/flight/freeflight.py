@@ -33,9 +33,7 @@ from birdsim.flight.flown_pitch import flown_pitch_for
 from birdsim.flight.gust import Gust, GustError, parse_gust, wind_at
 from birdsim.flight.path_integral import (
     FREE_BIAS_MARGIN,
-    INTEGRAL_BAND,
     INTEGRAL_LIMIT,
-    TURN_INTEGRAL_BAND,
     integral_step,
     within_band,
 )
@@ -204,6 +202,7 @@ def fly(
         omega0, d_pitch0 = getattr(fb, "start_rotation", (None, 0.0))
         fb.start(pos0, vel0, pres, pitch=float(pres.pitch[0]) - d_pitch0, omega_body=omega0)
         att = attitude_loop_for(fb, free and attitude_loop, track, JAC_AT_COMMAND)
+        band = turning.integral_band(track, att)  # the path integral's
         flown = flown_pitch_for(free, track is None)  # the flare's predictive pitch
         if free and trim and hasattr(fb, "start_moment"):
             att.preset_integral(fb.start_moment, cmd.params, float(pres.pitch[0]), float(ref0.vx))
@@ -244,10 +243,10 @@ def fly(
                 and not cmd.saturated
                 and not ctl.open_loop
                 and gains.ki > 0
-                and within_band(est[0], INTEGRAL_BAND if track is None else TURN_INTEGRAL_BAND)
+                and within_band(est[0], band)
             ):
                 # anti-windup: frozen while saturated or far off the path (a gust; in a
-                # turn nearer, path_integral.TURN_INTEGRAL_BAND), and
+                # cruise turn nearer: turning.integral_band), and
                 # bounded: the integral only trims the small mismatch between the table's
                 # mean force and the flown one
                 integral = integral_step(integral, dt_ctl, est[0], int_limit)
