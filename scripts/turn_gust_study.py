@@ -18,6 +18,10 @@ acceleration, to the left) added to the commanded sideways acceleration over win
 the flown sideways acceleration's difference over DA (from the one-wingbeat mean of the
 sideways velocity), the height's difference.
 
+``--phases 16`` flies 16 gusts instead (from wingbeat 25 + k / 8, k = 0-7, both signs, as
+docs/turning.md's ninth pass) and prints the mean, median and largest over them of the
+distance 8 wingbeats after the gust and of its three parts.
+
 ``--set MODULE.NAME=VALUE`` (repeatable) sets a module constant first, e.g. ``--set
 birdsim.flight.bank.LATERAL_BEATS=5``, ``--set
 birdsim.flight.turning.TURN_AXIS_BEATS=(1.0,3.0,2.0)``.
@@ -122,6 +126,27 @@ def gust_study() -> dict[str, Any]:
     return out
 
 
+def phases_study(count: int) -> dict[str, Any]:
+    """``count`` gusts (half from each side) spread over a wingbeat from wingbeat 25."""
+    calm = fly_circle()
+    half = max(1, count // 2)
+    rows = []
+    for sign in (1.0, -1.0):
+        for k in range(half):
+            start = 25.0 + k / half
+            gusted = fly_circle(gust=f"{start}:1:0:{0.15 * sign}:0")
+            rows.append(gust_figures(calm.arrays, gusted.arrays, start))
+    keys = ("after_8", "after_8_along", "after_8_lateral", "after_8_height", "peak")
+    out: dict[str, Any] = {"circle": calm_figures(calm), "gusts": len(rows)}
+    for k in keys:
+        v = np.array([r[k] for r in rows])
+        out[k] = {"mean": round(float(v.mean()), 4), "median": round(float(np.median(v)), 4),
+                  "max": round(float(v.max()), 4)}  # fmt: skip
+    out["saturated"] = int(sum(r["saturated"] for r in rows))
+    out["after_8_each"] = [r["after_8"] for r in rows]
+    return out
+
+
 def step_study(da: float, beats: float = 34.0) -> list[dict[str, float]]:
     """The lateral plant's step response (see the module)."""
     from birdsim.flight import turning
@@ -188,9 +213,12 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--step", type=float, default=None, help="the plant's step (DA)")
     parser.add_argument("--set", action="append", default=[], help="MODULE.NAME=VALUE")
+    parser.add_argument("--phases", type=int, default=None, help="gusts over a wingbeat")
     args = parser.parse_args()
     apply_settings(args.set)
-    if args.step is not None:
+    if args.phases is not None:
+        print(json.dumps(phases_study(args.phases)))
+    elif args.step is not None:
         for row in step_study(args.step):
             print(json.dumps(row))
     else:

@@ -203,6 +203,7 @@ def fly(
         omega0, d_pitch0 = getattr(fb, "start_rotation", (None, 0.0))
         fb.start(pos0, vel0, pres, pitch=float(pres.pitch[0]) - d_pitch0, omega_body=omega0)
         att = attitude_loop_for(fb, free and attitude_loop, track, JAC_AT_COMMAND)
+        band = turning.integral_band(track, att)  # the path integral's
         gates = flown_pitch_for(free, track is None), flown_lateral_for(free, track is None)
         flown, flown_lat = gates  # the flown-prediction gates (flare's pitch, side gust's)
         if free and trim and hasattr(fb, "start_moment"):
@@ -244,11 +245,11 @@ def fly(
                 and not cmd.saturated
                 and not ctl.open_loop
                 and gains.ki > 0
-                and within_band(est[0])
+                and within_band(est[0], band)
             ):
-                # anti-windup: frozen while saturated or far off the path (a gust), and
-                # bounded: the integral only trims the small mismatch between the table's
-                # mean force and the flown one
+                # anti-windup: frozen while saturated or far off the path (a gust; nearer in a
+                # cruise turn: turning.integral_band), and bounded: the integral only trims
+                # the small mismatch between the table's mean force and the flown one
                 integral = integral_step(integral, dt_ctl, est[0], int_limit)
             wind = wind_at(gusts, t / TWO_PI, speed)
             left = offset = None

@@ -23,6 +23,18 @@ except ImportError:  # pragma: no cover
 INTEGRAL_LIMIT, FREE_BIAS_MARGIN = 0.1, 1.5
 #: The integral only runs while the estimated position error is below this (semispans).
 INTEGRAL_BAND = 0.1
+#: ... and in a turn (a path flown in its track frame) below this: a side gust in the
+#: circle moves the height and the along-track position by 0.05-0.15 through the lateral
+#: transient (the banked force's magnitude and direction, docs/turning.md, "tenth pass"),
+#: and with the straight band the integral wound up during it and overshot the height
+#: afterwards (the path loop's triple pole answering a step where the gust is an impulse).
+#: Measured (``scripts/turn_gust_study.py --phases 16``, the distance 8 wingbeats after
+#: the gust, mean / largest; its height part's mean): band 0.1 0.229 / 0.354, 0.078;
+#: 0.05 0.225 / 0.339, 0.065; 0.04 0.208 / 0.353, 0.060; 0.03 0.210 / 0.358, 0.058;
+#: 0.02 0.214 / 0.356, 0.060; 0.01 0.210 / 0.356, 0.057.  0.03 kept: the study's four
+#: gusts all nearer (0.04: the one from 25.25 0.200 against 0.194) and the calm s-turn
+#: 0.0956 (0.04: 0.0979; band 0.1: 0.0965).
+TURN_INTEGRAL_BAND = 0.03
 
 
 def within_band(e_pos: np.ndarray, band: float = INTEGRAL_BAND) -> bool:
@@ -39,4 +51,11 @@ def integral_step(
     return _clip(integral + dt * e_pos, -limit, limit)
 
 
-__all__ = ["FREE_BIAS_MARGIN", "INTEGRAL_BAND", "INTEGRAL_LIMIT", "integral_step", "within_band"]
+__all__ = [
+    "FREE_BIAS_MARGIN",
+    "INTEGRAL_BAND",
+    "INTEGRAL_LIMIT",
+    "TURN_INTEGRAL_BAND",
+    "integral_step",
+    "within_band",
+]
