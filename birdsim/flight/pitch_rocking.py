@@ -43,6 +43,17 @@ def rocking_pitch_moment(
     rocking's peak to peak (rad)) of the held body at ``pitch`` (rad) and airspeed
     ``speed`` beating ``params`` with every input at zero, ``inertia`` its pitch inertia
     (reduced); :data:`JAC_SAMPLES` phases, steps :data:`RATE_STEP` and :data:`JAC_STEP`."""
+    d_q, d_th, theta_r, rate_r = periodic_rocking(fb, params, pitch, speed, inertia)
+    return float(np.mean(d_q * rate_r + d_th * theta_r)), float(np.ptp(theta_r))
+
+
+def periodic_rocking(
+    fb, params: np.ndarray, pitch: float, speed: float, inertia: float
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """(dM/dq, dM/dth, the rocking's pitch (rad), its pitch rate (rad per reduced time)),
+    each at the :data:`JAC_SAMPLES` phases of the wingbeat ``params`` (phase 0 the
+    wingbeat's start): the periodic solution of the module's equation for the held body
+    as :func:`rocking_pitch_moment` measures it."""
     n, c = JAC_SAMPLES, SEED_AXES
     held = ((pitch, 0.0), (pitch, RATE_STEP), (pitch + JAC_STEP, 0.0))
     mom, h = np.zeros((3, n)), np.zeros(n)
@@ -70,7 +81,7 @@ def rocking_pitch_moment(
     )
     theta_r = np.fft.irfft(spec, n=n)
     rate_r = np.fft.irfft(1j * w * spec, n=n)
-    return float(np.mean(d_q * rate_r + d_th * theta_r)), float(np.ptp(theta_r))
+    return d_q, d_th, theta_r, rate_r
 
 
-__all__ = ["rocking_pitch_moment"]
+__all__ = ["periodic_rocking", "rocking_pitch_moment"]
