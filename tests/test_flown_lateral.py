@@ -24,9 +24,9 @@ from birdsim.flight.simulate import SimConfig
 from birdsim.physics.bird import Bird
 
 
-def _side_gust(bird, monkeypatch, enabled: bool = True, beats: float = 16.0):
-    """Cruise with a one-wingbeat 30 % gust to the left from wingbeat 3 (as
-    ``scripts/free_targets.py --gusts``): (per-wingbeat largest path error in semispans,
+def _side_gust(bird, monkeypatch, enabled: bool = True, beats: float = 16.0, sign: float = 1.0):
+    """Cruise with a one-wingbeat 30 % gust to the left (``sign`` -1: the right) from
+    wingbeat 3 (as ``scripts/free_targets.py --gusts``): (per-wingbeat largest path error in semispans,
     wingbeat-mean |roll|, |yaw| in degrees, the flight's FlownLateral, its arrays)."""
     made: list = []
     make = freeflight.flown_lateral_for
@@ -38,7 +38,7 @@ def _side_gust(bird, monkeypatch, enabled: bool = True, beats: float = 16.0):
     if not enabled:  # else the module as shipped
         monkeypatch.setattr(fl, "ENABLED", False)
     monkeypatch.setattr(freeflight, "flown_lateral_for", capture)
-    v = 0.3 * 0.5 * bird.semispan * 2.0 * math.pi / bird.period
+    v = sign * 0.3 * 0.5 * bird.semispan * 2.0 * math.pi / bird.period
     table = load_table_for(bird, DEMO_MODEL, None)
     r = freeflight.fly(PATH_PRESETS["cruise"], table, bird, DEMO_MODEL, beats=beats,
                        gusts=[parse_gust(f"3:1:0:{v:g}:0")],
@@ -69,6 +69,30 @@ def test_pigeon_side_gust_comes_back(monkeypatch, enabled):
     else:  # the held-body loop alone: 7.52 semispans off, roll 58 degrees
         assert flown is None
         assert err.max() > 5.0 and roll.max() > 40.0
+
+
+def test_pigeon_right_gust_holds_the_lateral_integral(monkeypatch):
+    # anti-windup: while the gate flies the lateral inputs, the loop's roll and yaw
+    # integral stays where the step before left it (before, it summed the errors of
+    # inputs it did not fly, to its bound: the -y gust then 2.03 degrees of roll in
+    # wingbeat 14, back in 11; held: 1.80, back in 10 as the +y gust)
+    seen: list = []
+    step = fl.FlownLateral.step
+
+    def record(self, att, *a):
+        out = step(self, att, *a)
+        seen.append((self.engaged, np.array(att.integral, dtype=float)))
+        return out
+
+    monkeypatch.setattr(fl.FlownLateral, "step", record)
+    bird = Bird.from_toml("models/pigeon.toml")
+    err, roll, yaw, flown, _ = _side_gust(bird, monkeypatch, sign=-1.0)
+    assert flown.steps > 0
+    for (was, a), (now, b) in zip(seen, seen[1:]):
+        if was and now:  # both steps engaged: held to the bit
+            assert b[0] == a[0] and b[2] == a[2]
+    back = (err <= 0.05) & (roll <= 2.0) & (yaw <= 2.0)
+    assert back[14:].all(), (err[14:], roll[14:], yaw[14:])
 
 
 def test_seed_side_gust_never_engages_and_is_unchanged(monkeypatch):

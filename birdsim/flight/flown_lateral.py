@@ -18,9 +18,11 @@ errors within :data:`CALM_RAD`.  Engaged, every control step the flight is predi
 more per lateral input stepped by :data:`STEP`; the lateral inputs are set to the least
 change (weight :data:`MU`, inputs scaled by their bounds) that leaves :data:`ALPHA` of the
 predicted wingbeat-mean roll and yaw errors (the loop's rotation vector onto its command)
-over wingbeats ``WINDOW``.  The symmetric inputs (pitch) are left as the loop (and
-:mod:`birdsim.flight.flown_pitch`) set them.  Only wing and tail targets change; no force
-or torque on the body.
+over wingbeats ``WINDOW``; the loop's roll and yaw integral is held where the step before
+left it (anti-windup: the loop's lateral inputs are not the flown ones, and its integral
+would sum the errors of inputs it does not fly).  The symmetric inputs (pitch) are left
+as the loop (and :mod:`birdsim.flight.flown_pitch`) set them.  Only wing and tail targets
+change; no force or torque on the body.
 """
 
 from __future__ import annotations
@@ -71,6 +73,9 @@ class FlownLateral:
         self.engaged = False
         self.calm = 0
         self.steps = 0  # control steps engaged (for tests and logs)
+        #: The loop's integral (roll, pitch, yaw; per unit inertia, reduced units) as the
+        #: last control step left it: its roll and yaw are held there while engaged.
+        self.held: np.ndarray | None = None
         #: This step's flown lateral inputs (columns of ``INPUTS``, values) or None.
         self.flown_u: tuple[list[int], np.ndarray] | None = None
 
@@ -103,7 +108,11 @@ class FlownLateral:
         own choice (it feeds the loop), :attr:`flown_u` has what is flown (the log's)."""
         self.flown_u = None
         lo, hi = att.bounds(params)
-        if not self.gate(att, lo, hi, err):
+        held, engaged = self.held, self.gate(att, lo, hi, err)
+        if engaged and held is not None:  # anti-windup: the loop's roll and yaw integral
+            att.integral[list(ROWS)] = held[list(ROWS)]
+        self.held = np.array(att.integral, dtype=float)
+        if not engaged:
             return args[0], args[1]
         self.steps += 1
         names = fb.schedule.names
