@@ -83,17 +83,23 @@ def recorded_flight(bird: Bird, model: str, wind: tuple, beats: float) -> tuple[
     return r.arrays, gates, commands
 
 
-def main() -> None:
+def gust_arguments(beats: float) -> tuple[argparse.Namespace, Bird, tuple]:
+    """The gust studies' command line (``--bird --model --wind --frac --beats``, ``beats``
+    the default): (its arguments, the bird, the gust's wind in bird units)."""
     ap = argparse.ArgumentParser()
     ap.add_argument("--bird", default=None)
     ap.add_argument("--model", default=DEMO_MODEL)
     ap.add_argument("--wind", default="+z", choices=sorted(WINDS))
     ap.add_argument("--frac", type=float, default=0.3)
-    ap.add_argument("--beats", type=float, default=16.0)
+    ap.add_argument("--beats", type=float, default=beats)
     args = ap.parse_args()
     bird = Bird.from_toml(args.bird) if args.bird else demo_bird()
     v = 0.5 * bird.semispan * 2.0 * math.pi / bird.period  # cruise speed, bird units
-    wind = tuple(args.frac * v * c for c in WINDS[args.wind])
+    return args, bird, tuple(args.frac * v * c for c in WINDS[args.wind])
+
+
+def main() -> None:
+    args, bird, wind = gust_arguments(16.0)
     a, gates, commands = recorded_flight(bird, args.model, wind, args.beats)
     inertia = pitch_inertia(bird, args.model)
     t, period = np.asarray(a["t"]), 2.0 * math.pi

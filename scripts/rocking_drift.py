@@ -23,7 +23,6 @@ step (the same bits as without the wrapper).
 
 from __future__ import annotations
 
-import argparse
 import math
 
 import numpy as np
@@ -33,10 +32,10 @@ from birdsim.flight import freeflight
 from birdsim.flight.attitude_jacobians import JAC_SAMPLES
 from birdsim.flight.gust import parse_gust
 from birdsim.flight.pitch_rocking import periodic_rocking
-from birdsim.flight.presets import DEMO_MODEL, PATH_PRESETS, demo_bird
+from birdsim.flight.presets import PATH_PRESETS
 from birdsim.flight.simulate import SimConfig
 from birdsim.physics.bird import Bird
-from scripts.gust_wingbeats import WINDS
+from scripts.gust_wingbeats import gust_arguments
 
 TWO_PI = 2.0 * math.pi
 #: The held body's airspeed (reduced: semispan x omega): the cruise preset's.
@@ -89,16 +88,7 @@ def drifts(bird: Bird, model: str, wind: tuple, beats: float) -> dict[int, tuple
 
 
 def main() -> None:
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--bird", default=None)
-    ap.add_argument("--model", default=DEMO_MODEL)
-    ap.add_argument("--wind", default="+z", choices=sorted(WINDS))
-    ap.add_argument("--frac", type=float, default=0.3)
-    ap.add_argument("--beats", type=float, default=8.0)
-    args = ap.parse_args()
-    bird = Bird.from_toml(args.bird) if args.bird else demo_bird()
-    v = 0.5 * bird.semispan * TWO_PI / bird.period  # cruise speed, bird units
-    wind = tuple(args.frac * v * c for c in WINDS[args.wind])
+    args, bird, wind = gust_arguments(8.0)
     print("beat  drift(deg/beat)  r1(held)  flap")
     for b, (drift, r1, flap) in sorted(drifts(bird, args.model, wind, args.beats).items()):
         print(f"{b:4d} {math.degrees(drift * TWO_PI):10.1f} {r1:13.4f} {flap:6.2f}")
