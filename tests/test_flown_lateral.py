@@ -11,6 +11,7 @@ from types import SimpleNamespace
 
 import numpy as np
 import pytest
+from gate_capture import capture_gate
 
 import birdsim.flight.flown_lateral as fl
 from birdsim.commands.fly import load_table_for
@@ -28,16 +29,7 @@ def _side_gust(bird, monkeypatch, enabled: bool = True, beats: float = 16.0, sig
     """Cruise with a one-wingbeat 30 % gust to the left (``sign`` -1: the right) from
     wingbeat 3 (as ``scripts/free_targets.py --gusts``): (per-wingbeat largest path error in semispans,
     wingbeat-mean |roll|, |yaw| in degrees, the flight's FlownLateral, its arrays)."""
-    made: list = []
-    make = freeflight.flown_lateral_for
-
-    def capture(*a):
-        made.append(make(*a))
-        return made[-1]
-
-    if not enabled:  # else the module as shipped
-        monkeypatch.setattr(fl, "ENABLED", False)
-    monkeypatch.setattr(freeflight, "flown_lateral_for", capture)
+    made = capture_gate(monkeypatch, fl, "flown_lateral_for", enabled)
     v = sign * 0.3 * 0.5 * bird.semispan * 2.0 * math.pi / bird.period
     table = load_table_for(bird, DEMO_MODEL, None)
     r = freeflight.fly(PATH_PRESETS["cruise"], table, bird, DEMO_MODEL, beats=beats,

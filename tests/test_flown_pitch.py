@@ -11,6 +11,7 @@ from types import SimpleNamespace
 
 import numpy as np
 import pytest
+from gate_capture import capture_gate
 
 import birdsim.flight.flown_pitch as fp
 from birdsim.commands.fly import load_table_for
@@ -24,16 +25,7 @@ from birdsim.physics.bird import Bird
 
 
 def _fly(preset: str, bird, monkeypatch, enabled: bool = True):
-    made: list = []
-    make = freeflight.flown_pitch_for
-
-    def capture(*a):
-        made.append(make(*a))
-        return made[-1]
-
-    if not enabled:  # else the module as shipped
-        monkeypatch.setattr(fp, "ENABLED", False)
-    monkeypatch.setattr(freeflight, "flown_pitch_for", capture)
+    made = capture_gate(monkeypatch, fp, "flown_pitch_for", enabled)
     table = load_table_for(bird, DEMO_MODEL, None)
     r = freeflight.fly(PATH_PRESETS[preset], table, bird, DEMO_MODEL,
                        config=SimConfig(attitude="free"))  # fmt: skip
