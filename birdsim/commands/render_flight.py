@@ -36,7 +36,7 @@ def add_flight_arguments(p: argparse.ArgumentParser) -> None:
         "--gust",
         action="append",
         default=[],
-        metavar="T0:DURATION:WX:WZ",
+        metavar="T0:DURATION:WX:WY:WZ",
         help="free flight: a gust (see birdsim fly)",
     )
     p.add_argument(

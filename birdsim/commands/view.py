@@ -49,7 +49,7 @@ def register(sub: argparse._SubParsersAction) -> None:
         "--gust",
         action="append",
         default=[],
-        metavar="T0:DURATION:WX:WZ",
+        metavar="T0:DURATION:WX:WY:WZ",
         help="a gust for a manoeuvre (see birdsim fly)",
     )
     p.add_argument("--open-loop", action="store_true", help="a manoeuvre flown feed-forward only")
