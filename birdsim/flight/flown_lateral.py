@@ -20,20 +20,28 @@ change (weight :data:`MU`, inputs scaled by their bounds) that leaves :data:`ALP
 predicted wingbeat-mean roll and yaw errors (the loop's rotation vector onto its command)
 over wingbeats ``WINDOW``; the loop's roll and yaw integral is held where the step before
 left it (anti-windup: the loop's lateral inputs are not the flown ones, and its integral
-would sum the errors of inputs it does not fly).  The symmetric inputs (pitch) are left
-as the loop (and :mod:`birdsim.flight.flown_pitch`) set them.  Only wing and tail targets
-change; no force or torque on the body.
+would sum the errors of inputs it does not fly).  In a turn (docs/turning.md, "Gust stage,
+eleventh pass"; the second-stage loop only) the gate is the roll error from the bank
+command beyond :data:`ENGAGE_ROLL_RAD` with a lateral input on its bound, the command is
+followed over the prediction (the path's heading and bank plan:
+:func:`birdsim.flight.turning.ahead`), and the inputs keep the turn's reserve.  The
+symmetric inputs (pitch) are left as the loop (and :mod:`birdsim.flight.flown_pitch`) set
+them.  Only wing and tail targets change; no force or torque on the body.
 """
 
 from __future__ import annotations
+
+from typing import Any
 
 import numpy as np
 
 from birdsim.flight.attitude import LAT_INPUTS
 from birdsim.flight.attitude_jacobians import INPUTS, split_inputs
+from birdsim.flight.attitude_reserve import turn_reserve_bounds
 from birdsim.flight.bounded_lsq import bounded_lsq
 from birdsim.flight.flight_arrays import error_rotvec
 from birdsim.flight.flown_prediction import SAMPLES, predict_root
+from birdsim.flight.turning import ahead
 from birdsim.mujoco.tail import TailControls
 
 #: Switch for the whole module (freeflight reads it at each flight; tests turn it off).
@@ -55,6 +63,12 @@ AT_BOUND = 1e-6
 #: (the seed bird's side gust: yaw 10 degrees, its delivered roll moment within 0.009 of
 #: the held body's; the pigeon's 15-19 degrees with 0.027 missing; docs/free-body.md).
 ENGAGE_YAW_RAD = 0.2
+#: In a turn (:func:`flown_lateral_for` with a track): the wingbeat-mean roll error (rad,
+#: from the bank command) beyond which a saturated loop hands over.  The seed bird's calm
+#: turns reach 0.047 (circle), 0.077 (s-turn), 0.094 (turn-90), 0.058 (u-turn), with a
+#: lateral input on its bound 0.023 / 0.077 / 0.069 / 0.033; the circle's 30 % side gust
+#: 0.2-0.38 (docs/turning.md, "Gust stage, eleventh pass").
+ENGAGE_ROLL_RAD = 0.15
 #: Control steps (one wingbeat) calm before the gate is left, and the errors (rad,
 #: wingbeat-mean roll and yaw) that count as calm: within a quarter of the issue's 2
 #: degrees (left at 2 degrees, the held-body loop's own lateral oscillation, +-2-5
@@ -69,7 +83,10 @@ TAIL_ROLL = [name for name, _, _ in INPUTS].index("tail_roll")
 class FlownLateral:
     """One flight's gate state (engaged, calm steps) and its predictive lateral choice."""
 
-    def __init__(self) -> None:
+    def __init__(self, track: Any = None) -> None:
+        #: A turning flight's path (its gate: the roll error, any loop), None if straight.
+        self.track = track
+        self.turn = track is not None
         self.engaged = False
         self.calm = 0
         self.steps = 0  # control steps engaged (for tests and logs)
@@ -83,14 +100,16 @@ class FlownLateral:
         """Whether the prediction chooses this step's lateral inputs (updates the gate):
         ``att`` the attitude loop (straight, its inputs ``att.u`` this step's own choice),
         ``lo``, ``hi`` the inputs' bounds, ``err`` the loop's wingbeat-mean error (rad)."""
-        if not (att.enabled and att.straight and att._jac is not None):
+        # straight flight's loop, or a turn's on the second-stage loop (the seed bird; the
+        # pigeon's calm s-turn reaches 0.27 rad of roll error on its bounds: left as it was)
+        if not (att.enabled and att.straight != self.turn and att._jac is not None):
             return False
         cols = [c for c in LAT_INPUTS if hi[c] > lo[c]]
         u, tol = att.u[cols], AT_BOUND * (hi[cols] - lo[cols]) / 2
         on_bound = bool(np.any((u <= lo[cols] + tol) | (u >= hi[cols] - tol)))
         if not self.engaged:
-            yawed = abs(float(err[2])) > ENGAGE_YAW_RAD
-            self.engaged, self.calm = on_bound and yawed, 0
+            row, limit = (0, ENGAGE_ROLL_RAD) if self.turn else (2, ENGAGE_YAW_RAD)
+            self.engaged, self.calm = on_bound and abs(float(err[row])) > limit, 0
         else:
             off = max(abs(float(err[r])) for r in ROWS) > CALM_RAD
             self.calm = 0 if (on_bound or off) else self.calm + 1
@@ -98,14 +117,17 @@ class FlownLateral:
         return self.engaged
 
     def step(
-        self, att, fb, args: tuple, params: np.ndarray, cmd3: tuple, err: np.ndarray
+        self, att, fb, args: tuple, params: np.ndarray, cmd3: Any, err: np.ndarray
     ) -> tuple[np.ndarray, np.ndarray]:
         """Gate and, engaged, choose the lateral inputs for the interval about to be
         flown: ``args`` (right, left wingbeat targets, stroke-plane offset, wind now) as
         the loop made them, ``params`` the table's wingbeat, ``cmd3`` the command's (pitch,
-        roll, yaw) (rad), ``err`` the loop's error.  Returns the (right, left) targets to
-        fly (the loop's when not engaged) and sets the tail's roll; ``att.u`` stays the loop's
-        own choice (it feeds the loop), :attr:`flown_u` has what is flown (the log's)."""
+        roll, yaw) (rad) and, turning, the bank correction's filter (value, rate) and the
+        body's pitch that set it (followed over the prediction by
+        :func:`birdsim.flight.turning.ahead`), ``err`` the loop's error.  Returns the
+        (right, left) targets to fly (the loop's when not engaged) and sets the tail's
+        roll; ``att.u`` stays the loop's own choice (it feeds the loop), :attr:`flown_u`
+        has what is flown (the log's)."""
         self.flown_u = None
         lo, hi = att.bounds(params)
         held, engaged = self.held, self.gate(att, lo, hi, err)
@@ -115,6 +137,8 @@ class FlownLateral:
         if not engaged:
             return args[0], args[1]
         self.steps += 1
+        if self.turn and att.reserve > 1.0:  # the turn's reserve, as the loop may use it
+            lo, hi = turn_reserve_bounds(att, INPUTS, params, lo, hi)
         names = fb.schedule.names
         cols = [c for c in LAT_INPUTS if hi[c] > lo[c]]
         tail, shoulder = fb.cb.tail_controls, np.array(fb.schedule.shoulder_target, dtype=float)
@@ -130,7 +154,12 @@ class FlownLateral:
             right, left, tl = targets(x)
             q = predict_root(fb, (right, left, *args[2:]), shoulder, tl, WINDOW[1])[1]
             t = np.arange(len(q)) / SAMPLES
-            e = error_rotvec(q[t >= WINDOW[0] - 1e-9, 3:7], *cmd3)
+            q, t = q[t >= WINDOW[0] - 1e-9, 3:7], t[t >= WINDOW[0] - 1e-9]
+            if self.track is not None:  # a turn's command moves over the window
+                c = ahead(self.track, fb.time, cmd3[3:5], (cmd3[5], 0.0))(t)
+                e = np.vstack([error_rotvec(q[i : i + 1], *c[i]) for i in range(len(t))])
+            else:
+                e = error_rotvec(q, *cmd3[:3])
             return e[:, list(ROWS)].mean(axis=0)
 
         x0 = u0[cols]
@@ -151,9 +180,10 @@ class FlownLateral:
         return right, left
 
 
-def flown_lateral_for(free: bool, straight: bool) -> FlownLateral | None:
-    """A flight's :class:`FlownLateral`: free, straight flights with :data:`ENABLED`."""
-    return FlownLateral() if ENABLED and free and straight else None
+def flown_lateral_for(free: bool, track: Any) -> FlownLateral | None:
+    """A flight's :class:`FlownLateral`: free flights with :data:`ENABLED`, straight
+    (``track`` None) or turning (the turn's gate)."""
+    return FlownLateral(track) if ENABLED and free else None
 
 
 __all__ = [
@@ -161,6 +191,7 @@ __all__ = [
     "AT_BOUND",
     "CALM_RAD",
     "CALM_STEPS",
+    "ENGAGE_ROLL_RAD",
     "MU",
     "STEP",
     "WINDOW",

@@ -204,7 +204,7 @@ def fly(
         fb.start(pos0, vel0, pres, pitch=float(pres.pitch[0]) - d_pitch0, omega_body=omega0)
         att = attitude_loop_for(fb, free and attitude_loop, track, JAC_AT_COMMAND)
         band = turning.integral_band(track, att)  # the path integral's
-        gates = flown_pitch_for(free, track is None), flown_lateral_for(free, track is None)
+        gates = flown_pitch_for(free, track is None), flown_lateral_for(free, track)
         flown, flown_lat = gates  # the flown-prediction gates (flare's pitch, side gust's)
         if free and trim and hasattr(fb, "start_moment"):
             att.preset_integral(fb.start_moment, cmd.params, float(pres.pitch[0]), float(ref0.vx))
@@ -343,7 +343,7 @@ def fly(
                     ref3 = (pitch_ref, float(rate_cmd[1]), float(acc_cmd[1]))
                     flown.step(att, fb, args4, ref3, cmd.params, err[1])
                 if flown_lat is not None:  # the lateral inputs likewise (flown_lateral)
-                    cmd3 = (zyx_pitch, roll_cmd, yaw_cmd)
+                    cmd3 = (zyx_pitch, roll_cmd, yaw_cmd, roll_ref, roll_rate_ref, pitch_ref)
                     right, left = flown_lat.step(att, fb, args4, cmd.params, cmd3, err)
             else:
                 right = cmd.params

@@ -22,6 +22,7 @@ track frame, :class:`birdsim.flight.track.TrackFrame`; the attitude of
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import replace
 from typing import Any
 
@@ -290,6 +291,27 @@ def turn_command(
     return cmd, a_left, (value, rate)
 
 
+def ahead(
+    track: Any, t: float, bank: tuple[float, float], pitch: tuple[float, float]
+) -> Callable[[np.ndarray], np.ndarray]:
+    """The turning attitude command ahead of reduced time ``t``, for
+    :mod:`birdsim.flight.flown_lateral`'s prediction: a function of the times ahead
+    (wingbeats, (n,)) to the Z-Y-X (pitch, roll, yaw) commands (rad, (n, 3)) of
+    :func:`turn_command`, the path's heading and planned bank followed, the bank
+    correction ``bank`` and the body's pitch ``pitch`` (value, rate) extrapolated."""
+
+    def at(beats: np.ndarray) -> np.ndarray:
+        rows = []
+        for tau in np.asarray(beats, dtype=float) * TWO_PI:
+            heading, bank_ff = track.bank_plan(t + tau)
+            phi = (bank_ff[0] + bank[0] + bank[1] * tau, 0.0, 0.0)
+            c = turn_attitude(heading, phi, (pitch[0] + pitch[1] * tau, 0.0, 0.0))
+            rows.append((c.pitch, c.roll, c.yaw))
+        return np.array(rows)
+
+    return at
+
+
 def gyroscopic_acceleration(rate: np.ndarray, inertia: np.ndarray) -> np.ndarray:
     """The rigid body's gyroscopic term ``(w x (I w)) / I`` (per axis, per unit
     inertia; body rates ``w`` and principal moments ``I`` in the same body axes): Euler's
@@ -315,6 +337,7 @@ __all__ = [
     "STRAIGHT_BANK_TOL",
     "STRAIGHT_PART_BEATS",
     "TURN_PITCH_PLAN",
+    "ahead",
     "attitude_loop_for",
     "axis_beats",
     "fourth_stage_pitch",
