@@ -18,9 +18,10 @@ errors within :data:`CALM_RAD`.  Engaged, every control step the flight is predi
 more per lateral input stepped by :data:`STEP`; the lateral inputs are set to the least
 change (weight :data:`MU`, inputs scaled by their bounds) that leaves :data:`ALPHA` of the
 predicted wingbeat-mean roll and yaw errors (the loop's rotation vector onto its command)
-over wingbeats ``WINDOW``; the loop's roll and yaw integral is held where the step before
-left it (anti-windup: the loop's lateral inputs are not the flown ones, and its integral
-would sum the errors of inputs it does not fly).  In a turn (docs/turning.md, "Gust stage,
+over wingbeats ``WINDOW``; in straight flight the loop's roll and yaw integral is held
+where the step before left it (anti-windup: the loop's lateral inputs are not the flown
+ones, and its integral would sum the errors of inputs it does not fly; in a turn the hold
+made the circle's side gusts worse, 16 phases 0.117 -> 0.130).  In a turn (docs/turning.md, "Gust stage,
 eleventh pass"; the second-stage loop only) the gate is the roll error from the bank
 command beyond :data:`ENGAGE_ROLL_RAD` with a lateral input on its bound, the command is
 followed over the prediction (the path's heading and bank plan:
@@ -131,7 +132,7 @@ class FlownLateral:
         self.flown_u = None
         lo, hi = att.bounds(params)
         held, engaged = self.held, self.gate(att, lo, hi, err)
-        if engaged and held is not None:  # anti-windup: the loop's roll and yaw integral
+        if engaged and held is not None and not self.turn:  # anti-windup (straight): roll, yaw
             att.integral[list(ROWS)] = held[list(ROWS)]
         self.held = np.array(att.integral, dtype=float)
         if not engaged:
