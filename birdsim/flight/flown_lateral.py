@@ -130,6 +130,10 @@ class FlownLateral:
         roll; ``att.u`` stays the loop's own choice (it feeds the loop), :attr:`flown_u`
         has what is flown (the log's)."""
         self.flown_u = None
+        row, limit = (0, ENGAGE_ROLL_RAD) if self.turn else (2, ENGAGE_YAW_RAD)
+        if not self.engaged and abs(float(err[row])) <= limit:  # shut and stays shut
+            self.held = np.array(att.integral, dtype=float)  # (the gate's work skipped)
+            return args[0], args[1]
         lo, hi = att.bounds(params)
         held, engaged = self.held, self.gate(att, lo, hi, err)
         if engaged and held is not None and not self.turn:  # anti-windup (straight): roll, yaw
