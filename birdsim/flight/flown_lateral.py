@@ -97,6 +97,13 @@ class FlownLateral:
         #: This step's flown lateral inputs (columns of ``INPUTS``, values) or None.
         self.flown_u: tuple[list[int], np.ndarray] | None = None
 
+    def _beyond(self, err: np.ndarray) -> bool:
+        """Whether the loop's error is beyond the engage limit: the roll error from the
+        bank command in a turn (:data:`ENGAGE_ROLL_RAD`), else the yaw error
+        (:data:`ENGAGE_YAW_RAD`)."""
+        row, limit = (0, ENGAGE_ROLL_RAD) if self.turn else (2, ENGAGE_YAW_RAD)
+        return abs(float(err[row])) > limit
+
     def gate(self, att, lo: np.ndarray, hi: np.ndarray, err: np.ndarray) -> bool:
         """Whether the prediction chooses this step's lateral inputs (updates the gate):
         ``att`` the attitude loop (straight, its inputs ``att.u`` this step's own choice),
@@ -109,8 +116,7 @@ class FlownLateral:
         u, tol = att.u[cols], AT_BOUND * (hi[cols] - lo[cols]) / 2
         on_bound = bool(np.any((u <= lo[cols] + tol) | (u >= hi[cols] - tol)))
         if not self.engaged:
-            row, limit = (0, ENGAGE_ROLL_RAD) if self.turn else (2, ENGAGE_YAW_RAD)
-            self.engaged, self.calm = on_bound and abs(float(err[row])) > limit, 0
+            self.engaged, self.calm = on_bound and self._beyond(err), 0
         else:
             off = max(abs(float(err[r])) for r in ROWS) > CALM_RAD
             self.calm = 0 if (on_bound or off) else self.calm + 1
@@ -130,8 +136,7 @@ class FlownLateral:
         roll; ``att.u`` stays the loop's own choice (it feeds the loop), :attr:`flown_u`
         has what is flown (the log's)."""
         self.flown_u = None
-        row, limit = (0, ENGAGE_ROLL_RAD) if self.turn else (2, ENGAGE_YAW_RAD)
-        if not self.engaged and abs(float(err[row])) <= limit:  # shut and stays shut
+        if not self.engaged and not self._beyond(err):  # shut and stays shut
             self.held = np.array(att.integral, dtype=float)  # (the gate's work skipped)
             return args[0], args[1]
         lo, hi = att.bounds(params)
