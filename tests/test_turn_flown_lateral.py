@@ -34,8 +34,9 @@ def test_the_turn_gate_needs_a_bound_and_a_roll_error_beyond_the_calm_turns():
     assert not fl.FlownLateral(track).gate(_att(1.0), lo, hi, rolled * 0.5)
     yawed = np.array([0.0, 0.0, 1.0])  # the straight gate's yaw does not open it
     assert not fl.FlownLateral(track).gate(_att(1.0), lo, hi, yawed)
-    # a rocking bird's turn (the pigeon's fourth-stage loop): not the turn's gate
-    assert not fl.FlownLateral(track).gate(_att(1.0, straight=True), lo, hi, rolled)
+    # a rocking bird's turn (the pigeon's fourth-stage loop): the turn's gate too
+    # (turning.FOURTH_STAGE_FLOWN_LATERAL; tests/test_turn_fourth_stage_lateral.py)
+    assert fl.FlownLateral(track).gate(_att(1.0, straight=True), lo, hi, -rolled)
     assert fl.flown_lateral_for(True, track).turn
     assert not fl.flown_lateral_for(True, None).turn
     assert fl.flown_lateral_for(False, track) is None

@@ -18,11 +18,13 @@ errors within :data:`CALM_RAD`.  Engaged, every control step the flight is predi
 more per lateral input stepped by :data:`STEP`; the lateral inputs are set to the least
 change (weight :data:`MU`, inputs scaled by their bounds) that leaves :data:`ALPHA` of the
 predicted wingbeat-mean roll and yaw errors (the loop's rotation vector onto its command)
-over wingbeats ``WINDOW``; in straight flight the loop's roll and yaw integral is held
-where the step before left it (anti-windup: the loop's lateral inputs are not the flown
-ones, and its integral would sum the errors of inputs it does not fly; in a turn the hold
-made the circle's side gusts worse, 16 phases 0.117 -> 0.130).  In a turn (docs/turning.md, "Gust stage,
-eleventh pass"; the second-stage loop only) the gate is the roll error from the bank
+over wingbeats ``WINDOW``; on the fourth-stage loop (straight flight, the pigeon's
+turns) the loop's roll and yaw integral is held where the step before left it
+(anti-windup: the loop's lateral inputs are not the flown ones, and its integral would
+sum the errors of inputs it does not fly; in the seed bird's turns the hold made the
+circle's side gusts worse, 16 phases 0.117 -> 0.130).  In a turn (docs/turning.md, "Gust
+stage, eleventh pass"; the second-stage loop, and the pigeon's fourth-stage one:
+:func:`birdsim.flight.turning.flown_lateral_loop`) the gate is the roll error from the bank
 command beyond :data:`ENGAGE_ROLL_RAD` with a lateral input on its bound, the command is
 followed over the prediction (the path's heading and bank plan:
 :func:`birdsim.flight.turning.ahead`), and the inputs keep the turn's reserve.  The
@@ -42,7 +44,7 @@ from birdsim.flight.attitude_reserve import turn_reserve_bounds
 from birdsim.flight.bounded_lsq import bounded_lsq
 from birdsim.flight.flight_arrays import error_rotvec
 from birdsim.flight.flown_prediction import SAMPLES, predict_root
-from birdsim.flight.turning import ahead
+from birdsim.flight.turning import ahead, flown_lateral_loop
 from birdsim.mujoco.tail import TailControls
 
 #: Switch for the whole module (freeflight reads it at each flight; tests turn it off).
@@ -108,9 +110,8 @@ class FlownLateral:
         """Whether the prediction chooses this step's lateral inputs (updates the gate):
         ``att`` the attitude loop (straight, its inputs ``att.u`` this step's own choice),
         ``lo``, ``hi`` the inputs' bounds, ``err`` the loop's wingbeat-mean error (rad)."""
-        # straight flight's loop, or a turn's on the second-stage loop (the seed bird; the
-        # pigeon's calm s-turn reaches 0.27 rad of roll error on its bounds: left as it was)
-        if not (att.enabled and att.straight != self.turn and att._jac is not None):
+        # straight flight's loop, or a turn's (turning.flown_lateral_loop)
+        if not (att.enabled and flown_lateral_loop(att, self.turn) and att._jac is not None):
             return False
         cols = [c for c in LAT_INPUTS if hi[c] > lo[c]]
         u, tol = att.u[cols], AT_BOUND * (hi[cols] - lo[cols]) / 2
@@ -141,7 +142,7 @@ class FlownLateral:
             return args[0], args[1]
         lo, hi = att.bounds(params)
         held, engaged = self.held, self.gate(att, lo, hi, err)
-        if engaged and held is not None and not self.turn:  # anti-windup (straight): roll, yaw
+        if engaged and held is not None and att.straight:  # anti-windup (fourth stage): roll, yaw
             att.integral[list(ROWS)] = held[list(ROWS)]
         self.held = np.array(att.integral, dtype=float)
         if not engaged:

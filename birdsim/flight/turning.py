@@ -250,6 +250,29 @@ def straight_parts(att: AttitudeLoop, track: Any, t: float) -> None:
             att.axis_beats, att.gains = beats, attitude_gains(att.fb.red.omega, beats)
 
 
+#: The fourth-stage bird (``att.straight`` in a turn: the pigeon) hands its lateral inputs
+#: to :mod:`birdsim.flight.flown_lateral`'s prediction in its cruise turns too, with the
+#: loop's roll and yaw integral held while it does (straight flight's anti-windup).
+#: Measured (pigeon, m3, free; 360 degrees at 0.5 omega s, 6-wingbeat ramps, path RMS
+#: after two wingbeats in m, saturated samples): without it R 25 (the ``circle``) / R -25
+#: / 30 / 35 diverged (38.6 / 38.7 / 39.6 / 7.0: the differential inputs on their bounds
+#: from the roll-in's end, the held-body loop asking on, the roll running away at wingbeat
+#: 12-13); with it 0.064 (8) / 0.047 / 0.061 (32) / 0.024; the s-turn 0.0668 -> 0.0723
+#: (docs/turning.md, "The pigeon's cruise turns on the flown prediction").
+FOURTH_STAGE_FLOWN_LATERAL = True
+
+
+def flown_lateral_loop(att: AttitudeLoop, turn: bool) -> bool:
+    """Whether :mod:`birdsim.flight.flown_lateral`'s gate may engage on the attitude loop
+    ``att`` of a straight (``turn`` False) or turning flight: straight flight's loop (the
+    fourth stage, ``att.straight``); in a turn the second-stage loop (the seed bird, the
+    slow turns) and, with :data:`FOURTH_STAGE_FLOWN_LATERAL`, the fourth-stage one (the
+    pigeon's cruise turns)."""
+    if not turn:
+        return bool(att.straight)
+    return not att.straight or FOURTH_STAGE_FLOWN_LATERAL
+
+
 def turn_command(
     track: Any,
     t: float,
@@ -327,6 +350,7 @@ __all__ = [
     "BANK_BEATS",
     "BANK_CORRECTION_MAX",
     "FF_LEAD",
+    "FOURTH_STAGE_FLOWN_LATERAL",
     "FOURTH_STAGE_TURN_AXIS_BEATS",
     "FOURTH_STAGE_TURN_BEATS",
     "GYRO_FEEDFORWARD",
@@ -339,6 +363,7 @@ __all__ = [
     "TURN_PITCH_PLAN",
     "ahead",
     "attitude_loop_for",
+    "flown_lateral_loop",
     "axis_beats",
     "fourth_stage_pitch",
     "gyroscopic_acceleration",
