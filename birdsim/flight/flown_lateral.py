@@ -27,7 +27,9 @@ stage, eleventh pass"; the second-stage loop, and the pigeon's fourth-stage one:
 :func:`birdsim.flight.turning.flown_lateral_loop`) the gate is the roll error from the bank
 command beyond :data:`ENGAGE_ROLL_RAD` with a lateral input on its bound, the command is
 followed over the prediction (the path's heading and bank plan:
-:func:`birdsim.flight.turning.ahead`), and the inputs keep the turn's reserve.  The
+:func:`birdsim.flight.turning.ahead`), and the inputs keep the turn's reserve; a cruise
+turn's gate also opens on a gust in a steady bank, stays longer and takes back the path
+loop's lateral integral it held (:mod:`birdsim.flight.turn_gust_gate`).  The
 symmetric inputs (pitch) are left as the loop (and :mod:`birdsim.flight.flown_pitch`) set
 them.  Only wing and tail targets change; no force or torque on the body.
 """
@@ -44,6 +46,7 @@ from birdsim.flight.attitude_reserve import turn_reserve_bounds
 from birdsim.flight.bounded_lsq import bounded_lsq
 from birdsim.flight.flight_arrays import error_rotvec
 from birdsim.flight.flown_prediction import SAMPLES, predict_root
+from birdsim.flight.turn_gust_gate import calm_steps, cruise, gust_in_turn
 from birdsim.flight.turning import ahead, flown_lateral_loop
 from birdsim.mujoco.tail import TailControls
 
@@ -98,6 +101,9 @@ class FlownLateral:
         self.held: np.ndarray | None = None
         #: This step's flown lateral inputs (columns of ``INPUTS``, values) or None.
         self.flown_u: tuple[list[int], np.ndarray] | None = None
+        #: A turn's lateral path integral (``turning.turn_command``'s, the flight's one list)
+        #: and its value where the gate engaged (a cruise turn's is taken back on leaving).
+        self.lateral_integral, self.integral_in = [0.0], 0.0
 
     def _beyond(self, err: np.ndarray) -> bool:
         """Whether the loop's error is beyond the engage limit: the roll error from the
@@ -106,10 +112,15 @@ class FlownLateral:
         row, limit = (0, ENGAGE_ROLL_RAD) if self.turn else (2, ENGAGE_YAW_RAD)
         return abs(float(err[row])) > limit
 
-    def gate(self, att, lo: np.ndarray, hi: np.ndarray, err: np.ndarray) -> bool:
+    def _gust(self, att, err: np.ndarray, t: float) -> bool:
+        """Whether a cruise turn's gate opens on a gust (:func:`gust_in_turn`)."""
+        return self.turn and gust_in_turn(self.track, att, err, t)
+
+    def gate(self, att, lo: np.ndarray, hi: np.ndarray, err: np.ndarray, t: float = 0.0) -> bool:
         """Whether the prediction chooses this step's lateral inputs (updates the gate):
         ``att`` the attitude loop (straight, its inputs ``att.u`` this step's own choice),
-        ``lo``, ``hi`` the inputs' bounds, ``err`` the loop's wingbeat-mean error (rad)."""
+        ``lo``, ``hi`` the inputs' bounds, ``err`` the loop's wingbeat-mean error (rad),
+        ``t`` the reduced time (a turn's bank plan)."""
         # straight flight's loop, or a turn's (turning.flown_lateral_loop)
         if not (att.enabled and flown_lateral_loop(att, self.turn) and att._jac is not None):
             return False
@@ -117,11 +128,14 @@ class FlownLateral:
         u, tol = att.u[cols], AT_BOUND * (hi[cols] - lo[cols]) / 2
         on_bound = bool(np.any((u <= lo[cols] + tol) | (u >= hi[cols] - tol)))
         if not self.engaged:
-            self.engaged, self.calm = on_bound and self._beyond(err), 0
+            self.engaged = (on_bound and self._beyond(err)) or self._gust(att, err, t)
+            self.calm, self.integral_in = 0, self.lateral_integral[0]
         else:
             off = max(abs(float(err[r])) for r in ROWS) > CALM_RAD
             self.calm = 0 if (on_bound or off) else self.calm + 1
-            self.engaged = self.calm < CALM_STEPS
+            self.engaged = self.calm < calm_steps(att, CALM_STEPS)
+            if not self.engaged and self.turn and cruise(att):  # the gust's offset summed
+                self.lateral_integral[0] = self.integral_in
         return self.engaged
 
     def step(
@@ -137,11 +151,11 @@ class FlownLateral:
         roll; ``att.u`` stays the loop's own choice (it feeds the loop), :attr:`flown_u`
         has what is flown (the log's)."""
         self.flown_u = None
-        if not self.engaged and not self._beyond(err):  # shut and stays shut
+        if not (self.engaged or self._beyond(err) or self._gust(att, err, fb.time)):  # shut
             self.held = np.array(att.integral, dtype=float)  # (the gate's work skipped)
             return args[0], args[1]
         lo, hi = att.bounds(params)
-        held, engaged = self.held, self.gate(att, lo, hi, err)
+        held, engaged = self.held, self.gate(att, lo, hi, err, fb.time)
         if engaged and held is not None and att.straight:  # anti-windup (fourth stage): roll, yaw
             att.integral[list(ROWS)] = held[list(ROWS)]
         self.held = np.array(att.integral, dtype=float)

@@ -227,7 +227,7 @@ def fly(
                 float(fb.schedule.output[names.index("pitch")]),
                 stride=max(1, per_beat_ctl // PLAN_PER_BEAT),
             )
-        lat_int, turn_cmd = [0.0], None
+        lat_int, turn_cmd = [0.0] if flown_lat is None else flown_lat.lateral_integral, None
         roll_ref = roll_rate_ref = roll_acc_ref = 0.0  # turning's bank command (filtered)
         att_window = (np.empty((0, 4)), np.empty((0, 3)))  # quat, C_SEED omega (FIT_BEATS)
         lat_window: Any = np.empty((0, 2)) if track is None else []  # (y, vy); turning: pairs
