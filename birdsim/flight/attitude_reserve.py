@@ -96,13 +96,19 @@ def per_inertia(
 
 
 def turn_reserve_bounds(
-    loop: Any, inputs: tuple, params: np.ndarray, lo: np.ndarray, hi: np.ndarray
+    loop: Any,
+    inputs: tuple,
+    params: np.ndarray,
+    lo: np.ndarray,
+    hi: np.ndarray,
+    factor: float | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
     """:func:`reserve_bounds` for an ``AttitudeLoop`` ``loop`` (its kinematic model's
-    parameter names and table bounds, its ``reserve`` factor)."""
+    parameter names and table bounds; ``factor`` its ``reserve`` unless given)."""
     kin = loop.fb.kin
     limits = {p.name: (p.lower, p.upper) for p in kin.params}
-    return reserve_bounds(inputs, kin.param_names, limits, params, lo, hi, loop.reserve)
+    f = loop.reserve if factor is None else factor
+    return reserve_bounds(inputs, kin.param_names, limits, params, lo, hi, f)
 
 
 __all__ = [

@@ -5,33 +5,33 @@ prediction"): the lateral counterpart of :mod:`birdsim.flight.flown_pitch`.
 The straight attitude loop allocates roll and yaw to the differential inputs (flap and
 twist amplitude, stroke plane) and the tail's roll through the held body's wingbeat-mean
 Jacobians.  After a side gust the pigeon's loop puts them on their bounds for wingbeats,
-and in that rocking, sideslipping flight the inputs do not do what the held body says
-(the differential flap's yaw a fifteenth of the held value, a roll input instead; half
-the roll gap the inputs' timing within the stroke: docs/free-body.md, "the pigeon's side
-gust and the sideslip").  Gate: engaged when the loop's own choice puts a lateral input
-on its bound (within :data:`AT_BOUND` of its half range) while the wingbeat-mean yaw
-error exceeds :data:`ENGAGE_YAW_RAD`; left after :data:`CALM_STEPS`
-control steps with every lateral input off its bounds and the wingbeat-mean roll and yaw
-errors within :data:`CALM_RAD`.  Engaged, every control step the flight is predicted
-:data:`WINDOW` ``[1]`` wingbeats ahead from its state
-(:func:`birdsim.flight.flown_prediction.predict_root`) with the loop's inputs and once
-more per lateral input stepped by :data:`STEP`; the lateral inputs are set to the least
-change (weight :data:`MU`, inputs scaled by their bounds) that leaves :data:`ALPHA` of the
-predicted wingbeat-mean roll and yaw errors (the loop's rotation vector onto its command)
-over wingbeats ``WINDOW``; on the fourth-stage loop (straight flight, the pigeon's
-turns) the loop's roll and yaw integral is held where the step before left it
-(anti-windup: the loop's lateral inputs are not the flown ones, and its integral would
-sum the errors of inputs it does not fly; in the seed bird's turns the hold made the
-circle's side gusts worse, 16 phases 0.117 -> 0.130).  In a turn (docs/turning.md, "Gust
-stage, eleventh pass"; the second-stage loop, and the pigeon's fourth-stage one:
-:func:`birdsim.flight.turning.flown_lateral_loop`) the gate is the roll error from the bank
-command beyond :data:`ENGAGE_ROLL_RAD` with a lateral input on its bound, the command is
-followed over the prediction (the path's heading and bank plan:
+and in that rocking, sideslipping flight the inputs do not do what the held body says (the
+differential flap's yaw a fifteenth of the held value, a roll input instead; half the roll
+gap the inputs' timing within the stroke: docs/free-body.md, "the pigeon's side gust and
+the sideslip").  Gate: engaged when the loop's own choice puts a lateral input on its bound
+(within :data:`AT_BOUND` of its half range) while the wingbeat-mean yaw error exceeds
+:data:`ENGAGE_YAW_RAD`; left after :data:`CALM_STEPS` control steps with every lateral
+input off its bounds and the wingbeat-mean roll and yaw errors within :data:`CALM_RAD`.
+Engaged, every control step the flight is predicted :data:`WINDOW` ``[1]`` wingbeats ahead
+from its state (:func:`birdsim.flight.flown_prediction.predict_root`) with the loop's
+inputs and once more per lateral input stepped by :data:`STEP`; the lateral inputs are set
+to the least change (weight :data:`MU`, inputs scaled by their bounds) that leaves
+:data:`ALPHA` of the predicted wingbeat-mean roll and yaw errors (the loop's rotation
+vector onto its command) over wingbeats ``WINDOW`` (in straight flight the differential
+flap amplitude and stroke plane within :data:`STRAIGHT_RESERVE` times the loop's bounds);
+on the fourth-stage loop (straight flight, the pigeon's turns) the loop's roll and yaw
+integral is held where the step before left it (anti-windup: the loop's lateral inputs are
+not the flown ones, and its integral would sum the errors of inputs it does not fly; in the
+seed bird's turns the hold made the circle's side gusts worse, 16 phases 0.117 -> 0.130).
+In a turn (docs/turning.md, "Gust stage, eleventh pass"; the second-stage loop, and the
+pigeon's fourth-stage one: :func:`birdsim.flight.turning.flown_lateral_loop`) the gate is
+the roll error from the bank command beyond :data:`ENGAGE_ROLL_RAD` with a lateral input on
+its bound, the command is followed over the prediction (the path's heading and bank plan:
 :func:`birdsim.flight.turning.ahead`), and the inputs keep the turn's reserve; a cruise
 turn's gate also opens on a gust in a steady bank, stays longer and takes back the path
-loop's lateral integral it held (:mod:`birdsim.flight.turn_gust_gate`).  The
-symmetric inputs (pitch) are left as the loop (and :mod:`birdsim.flight.flown_pitch`) set
-them.  Only wing and tail targets change; no force or torque on the body.
+loop's lateral integral it held (:mod:`birdsim.flight.turn_gust_gate`).  The symmetric
+inputs (pitch) are left as the loop (and :mod:`birdsim.flight.flown_pitch`) set them.  Only
+wing and tail targets change; no force or torque on the body.
 """
 
 from __future__ import annotations
@@ -42,7 +42,7 @@ import numpy as np
 
 from birdsim.flight.attitude import LAT_INPUTS
 from birdsim.flight.attitude_jacobians import INPUTS, split_inputs
-from birdsim.flight.attitude_reserve import turn_reserve_bounds
+from birdsim.flight.attitude_reserve import TURN_RESERVE, turn_reserve_bounds
 from birdsim.flight.bounded_lsq import bounded_lsq
 from birdsim.flight.flight_arrays import error_rotvec
 from birdsim.flight.flown_prediction import SAMPLES, predict_root
@@ -81,6 +81,15 @@ ENGAGE_ROLL_RAD = 0.15
 #: degrees on the pigeon even after a 5 % gust, grew back and the gate re-engaged).
 CALM_STEPS = 8
 CALM_RAD = 0.01
+#: Straight flight, engaged: the bounds of the differential flap amplitude and stroke
+#: plane the choice keeps, as a multiple of the loop's own 0.15 rad (amplitudes within the
+#: table's bounds: :func:`birdsim.flight.attitude_reserve.reserve_bounds`).  The turn's
+#: reserve (:data:`~birdsim.flight.attitude_reserve.TURN_RESERVE`): the loop's bounds are
+#: its choice, not a measured limit, and the gate is short of roll authority (on the
+#: loop's bounds the pigeon's 30 % side gust overshoots the path by 0.094 semispan and
+#: swings the yaw back to -12.4 degrees; with 2: -0.023 and -7.4; docs/free-body.md, "the
+#: side gust with the turn's reserve").  Calm flight never engages the gate.
+STRAIGHT_RESERVE = TURN_RESERVE
 #: The rows of the loop's error (rotation vector, seed body axes) the choice meets.
 ROWS = (0, 2)
 TAIL_ROLL = [name for name, _, _ in INPUTS].index("tail_roll")
@@ -164,6 +173,8 @@ class FlownLateral:
         self.steps += 1
         if self.turn and att.reserve > 1.0:  # the turn's reserve, as the loop may use it
             lo, hi = turn_reserve_bounds(att, INPUTS, params, lo, hi)
+        elif not self.turn and STRAIGHT_RESERVE > 1.0:  # straight: the gate's own reserve
+            lo, hi = turn_reserve_bounds(att, INPUTS, params, lo, hi, STRAIGHT_RESERVE)
         names = fb.schedule.names
         cols = [c for c in LAT_INPUTS if hi[c] > lo[c]]
         tail, shoulder = fb.cb.tail_controls, np.array(fb.schedule.shoulder_target, dtype=float)
@@ -219,6 +230,7 @@ __all__ = [
     "ENGAGE_ROLL_RAD",
     "MU",
     "STEP",
+    "STRAIGHT_RESERVE",
     "WINDOW",
     "FlownLateral",
     "flown_lateral_for",
