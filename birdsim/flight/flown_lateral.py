@@ -86,9 +86,10 @@ CALM_RAD = 0.01
 #: table's bounds: :func:`birdsim.flight.attitude_reserve.reserve_bounds`).  The turn's
 #: reserve (:data:`~birdsim.flight.attitude_reserve.TURN_RESERVE`): the loop's bounds are
 #: its choice, not a measured limit, and the gate is short of roll authority (on the
-#: loop's bounds the pigeon's 30 % side gust overshoots the path by 0.094 semispan and
-#: swings the yaw back to -12.4 degrees; with 2: -0.023 and -7.4; docs/free-body.md, "the
-#: side gust with the turn's reserve").  Calm flight never engages the gate.
+#: loop's bounds the pigeon's 30 % side gust, pushed to -0.34 semispan, overshoots to
+#: +0.094 in wingbeat 11 and swings the yaw back to -12.4 degrees; with 2: -0.023, -7.4;
+#: docs/free-body.md, "the side gust with the turn's reserve").  Calm flight never
+#: engages the gate.
 STRAIGHT_RESERVE = TURN_RESERVE
 #: The rows of the loop's error (rotation vector, seed body axes) the choice meets.
 ROWS = (0, 2)
