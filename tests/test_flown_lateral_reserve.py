@@ -33,7 +33,7 @@ def test_pigeon_side_gust_no_overshoot_within_the_reserve(monkeypatch):
     assert flown.steps > 0
     n = int(round(len(a["t"]) / (a["t"][-1] / (2 * math.pi))))
     y = np.array([a["y"][b * n : (b + 1) * n].mean() for b in range(len(a["t"]) // n)])
-    # the gust pushes +y; the loop brings it back from -0.32 (wingbeat 7) without crossing
+    # the +y gust leaves the path at y -0.32 (wingbeat 7); the loop brings it back without crossing
     # by more than 0.01 semispan in wingbeats 8-12 (the loop's bounds: +0.066, +0.094)
     assert y[6] < -0.25 and np.all(y[8:13] < 0.01), y
     # the heading's swing back (wingbeats 7-8): within 9 degrees (bounds: 11.7, 12.4)
