@@ -245,11 +245,11 @@ def fly(
                 and not cmd.saturated
                 and not ctl.open_loop
                 and gains.ki > 0
-                and within_band(est[0], band)
+                and within_band(est[0], band, lat_window if track is None else None)
             ):
-                # anti-windup: frozen while saturated or far off the path (a gust; nearer in a
-                # cruise turn: turning.integral_band), and bounded: the integral only trims
-                # the small mismatch between the table's mean force and the flown one
+                # anti-windup: frozen while saturated or far off the path (a gust; straight:
+                # the side offset too; nearer in a cruise turn: turning.integral_band), and
+                # bounded: it only trims the table's mean force's mismatch with the flown one
                 integral = integral_step(integral, dt_ctl, est[0], int_limit)
             wind = wind_at(gusts, t / TWO_PI, speed)
             left = offset = None
