@@ -172,10 +172,10 @@ class FlownLateral:
         if not engaged:
             return args[0], args[1]
         self.steps += 1
-        if self.turn and att.reserve > 1.0:  # the turn's reserve, as the loop may use it
-            lo, hi = turn_reserve_bounds(att, INPUTS, params, lo, hi)
-        elif not self.turn and STRAIGHT_RESERVE > 1.0:  # straight: the gate's own reserve
-            lo, hi = turn_reserve_bounds(att, INPUTS, params, lo, hi, STRAIGHT_RESERVE)
+        # a turn's reserve as the loop may use it; straight flight's the gate's own
+        reserve = att.reserve if self.turn else STRAIGHT_RESERVE
+        if reserve > 1.0:
+            lo, hi = turn_reserve_bounds(att, INPUTS, params, lo, hi, reserve)
         names = fb.schedule.names
         cols = [c for c in LAT_INPUTS if hi[c] > lo[c]]
         tail, shoulder = fb.cb.tail_controls, np.array(fb.schedule.shoulder_target, dtype=float)
