@@ -97,6 +97,10 @@ def test_switch_once_on_wind_only_where_resonant():
     # bumpless: the integral term's acceleration ki * integral unchanged, its bound too
     assert np.allclose(new.ki * integral, old.ki * np.array([0.3, -0.2]), rtol=1e-12)
     assert np.allclose(new.ki * limit, old.ki * np.ones(2), rtol=1e-12)
+    # a caller's own gains are kept
+    red_ctl = SimpleNamespace(gains=gains_for(red, 1.5), bird=red)
+    dg.DisturbedGains(red_ctl, resonant, True).step(np.zeros(2), np.ones(2), np.array(gust))
+    assert red_ctl.gains == gains_for(red, 1.5)
     # decided once, at the first windy step: a plant that turns resonant later keeps it
     att = _loop(0.5 * 0.08**2)
     red_ctl = SimpleNamespace(gains=gains_for(red), bird=red)

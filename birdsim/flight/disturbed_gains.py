@@ -63,7 +63,8 @@ def pitch_damping_ratio(att: Any) -> float:
 class DisturbedGains:
     """One flight's switch of the path loop's gains: ``ctl`` the
     :class:`birdsim.flight.controller.Controller` whose gains change, ``att`` the attitude
-    loop, ``active`` whether the flight may switch (straight and free)."""
+    loop, ``active`` whether the flight may switch (straight and free; gains a caller gave
+    :func:`birdsim.flight.freeflight.fly` are kept)."""
 
     def __init__(self, ctl: Any, att: Any, active: bool) -> None:
         self.ctl, self.att, self.active = ctl, att, active
@@ -82,8 +83,8 @@ class DisturbedGains:
             return integral, limit
         old = self.ctl.gains
         new = gains_for(self.ctl.bird, CASCADE_RATIO * ATTITUDE_BEATS)
-        if old.ki <= 0.0 or new.omega_n >= old.omega_n:  # no integral, or not slower
-            return integral, limit
+        if old != gains_for(self.ctl.bird) or new.omega_n >= old.omega_n:  # a caller's own
+            return integral, limit  # gains (or none slower) are kept
         self.ctl.gains, self.switched = new, True
         ratio = old.ki / new.ki
         return integral * ratio, limit * ratio
