@@ -24,6 +24,7 @@ from birdsim.flight.attitude import FIT_BEATS
 from birdsim.flight.attitude_commands import bank_command, command_filter, straight_commands
 from birdsim.flight.controller import Controller, ErrorWindow, Gains, gains_for
 from birdsim.flight.demand_schedule import DemandSchedule, RefState
+from birdsim.flight.disturbed_gains import DisturbedGains
 from birdsim.flight.fast_errors import air_speeds, straight_samples
 from birdsim.flight.fast_interval import interval
 from birdsim.flight.flight_arrays import attitude_estimate, extend_rows, flight_arrays, keep_last
@@ -58,12 +59,9 @@ SP_MARGIN = 0.8
 #: Wingbeats ahead the stroke plane's compensation predicts the body's pitch (the estimated
 #: pitch rate times this): the lag of its two cascaded smoothing filters (docs/free-body.md).
 SP_LEAD = 2.0 * INPUT_SMOOTHING_BEATS
-#: Measure the attitude loop's Jacobians and M_0 at the commanded pitch on a straight path
-#: (at the estimated pitch the pigeon's rocking made M_0 jump with the estimate's swings
-#: through the tail's stiffness; turns keep it; docs/free-body.md, "The pigeon's attitude").
+#: The attitude loop's Jacobians and M_0 at the commanded pitch on a straight path (free-body.md).
 JAC_AT_COMMAND = True
-#: Plan the free body's pitch command along the known path (birdsim.flight.pitch_plan),
-#: from the feed-forward's table pitch PLAN_PER_BEAT times a wingbeat.
+#: Plan the free body's pitch command along the known path (birdsim.flight.pitch_plan).
 PITCH_PLAN = True
 PLAN_PER_BEAT = 2
 MAG_LEAD = 0.0  # (measured 0.5, 0.75 wingbeats: circle RMS 0.29, 0.32; kept 0)
@@ -206,6 +204,7 @@ def fly(
         band = turning.integral_band(track, att)  # the path integral's
         gates = flown_pitch_for(free, track is None), flown_lateral_for(free, track)
         flown, flown_lat = gates  # the flown-prediction gates (flare's pitch, side gust's)
+        slowed = DisturbedGains(ctl, att, free and track is None)  # (disturbed_gains)
         if free and trim and hasattr(fb, "start_moment"):
             att.preset_integral(fb.start_moment, cmd.params, float(pres.pitch[0]), float(ref0.vx))
         compensate = free and stroke_compensation and "stroke_plane" in names
@@ -252,6 +251,7 @@ def fly(
                 # bounded: it only trims the table's mean force's mismatch with the flown one
                 integral = integral_step(integral, dt_ctl, est[0], int_limit)
             wind = wind_at(gusts, t / TWO_PI, speed)
+            integral, int_limit = slowed.step(integral, int_limit, wind)  # next step's gains
             left = offset = None
             if free:
                 v_est = float(est[2]) if est is not None else float(ref0.vx)
