@@ -1,5 +1,5 @@
 """The pigeon's long turns (issue 23): a bird on the fourth-stage pitch loop (the pigeon)
-takes :data:`turning.FOURTH_STAGE_TURN_AXIS_BEATS` (roll 1, pitch 2.25, yaw 2 wingbeats)
+takes :data:`turning.FOURTH_STAGE_TURN_AXIS_BEATS` (roll 1, pitch 2.5, yaw 2 wingbeats)
 in a turn and straight flight's ``attitude.AXIS_BEATS`` on the straight parts; the seed
 bird keeps the turn's.
 

@@ -232,8 +232,14 @@ STRAIGHT_PART_BEATS = True
 #: 45 / 50 / 70 0.0122 / 0.0107 / 0.0094 / 0.0064 m, none saturated, the flock preset's
 #: worst 0.0256 semispan (docs/turning.md, "The pigeon's long turns").
 FOURTH_STAGE_TURN_BEATS = True
-#: The fourth-stage bird's time constants in a turn (roll, pitch, yaw; wingbeats).
-FOURTH_STAGE_TURN_AXIS_BEATS = (1.0, 2.25, 2.0)
+#: The fourth-stage bird's time constants in a turn (roll, pitch, yaw; wingbeats).  The
+#: pitch's 2.25 was chosen before the flown-lateral gate (:data:`FOURTH_STAGE_FLOWN_LATERAL`)
+#: made the pigeon's circle fly; with the gate, pitch 2.25 / 2.4 / 2.5 / 2.6 / 3 gave the
+#: ``circle`` 0.0636 (8 saturated samples) / 0.0332 / 0.0351 / 0.0373 / 0.088 m, the
+#: ``s-turn`` 0.0723 / 0.0749 / 0.0664 / 0.0707 / 0.0945 m, R -25 / 30 / 35 0.047 / 0.061
+#: (32) -> 0.039 / 0.060 / 0.032 m (2.25 -> 2.5; docs/turning.md, "The pigeon's cruise
+#: turns: the pitch loop's time constant").
+FOURTH_STAGE_TURN_AXIS_BEATS = (1.0, 2.5, 2.0)
 
 
 def straight_parts(att: AttitudeLoop, track: Any, t: float) -> None:
