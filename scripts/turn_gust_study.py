@@ -9,7 +9,12 @@ and per gust the distance from the calm flight (semispans, 3-D): its peak, its l
 value from 8 wingbeats after the gust on (the target: below 0.05), the wingbeats after the
 gust until it stays within 0.05 (the flight's end if never), its mean, and the largest
 height difference; and that distance's parts from 8 wingbeats after the gust on (the
-largest of each: along the calm flight's horizontal heading, to its left, and height).
+largest of each: along the calm flight's horizontal heading, to its left, and height);
+and, from 8 wingbeats after the gust on, the largest distance from the calm flight's
+*track* (``after_8_track``: the nearest point of the calm flight's 3-D trajectory within
+:data:`TRACK_BEATS` wingbeats either side, not the calm flight at the same time: an
+along-track lag alone does not count there; docs/turning.md, "Gust stage, fourteenth
+pass").
 
 ``--step DA`` measures the lateral loop's plant instead: two calm circles with the lateral
 loop opened at wingbeat 20 (its correction held at 0), one of them with DA (reduced
@@ -20,7 +25,10 @@ sideways velocity), the height's difference.
 
 ``--phases 16`` flies 16 gusts instead (from wingbeat 25 + k / 8, k = 0-7, both signs, as
 docs/turning.md's ninth pass) and prints the mean, median and largest over them of the
-distance 8 wingbeats after the gust and of its three parts.
+distance 8 wingbeats after the gust, of its three parts and of the distance from the calm
+flight's track, and how many gusts each measure has within 0.05; ``--per-beat`` adds, per
+gust, the one-wingbeat means of the along-track, lateral and height offsets from the calm
+flight over wingbeats 0-16 after the gust.
 
 ``--set MODULE.NAME=VALUE`` (repeatable) sets a module constant first, e.g. ``--set
 birdsim.flight.bank.LATERAL_BEATS=5``, ``--set
@@ -47,6 +55,11 @@ GUSTS = {
 }
 WITHIN = 0.05  # semispans
 BACK_BEATS = 8.0
+#: The calm flight's trajectory searched this many wingbeats either side of the same time
+#: for the nearest point (:func:`track_distance`).
+TRACK_BEATS = 4.0
+#: Wingbeats after the gust whose one-wingbeat mean offsets ``--per-beat`` prints.
+PER_BEAT = 17
 
 
 def fly_circle(beats: float | None = None, gust: str | None = None, hook: Any = None) -> Any:
@@ -78,7 +91,35 @@ def left_of(calm: dict, n: int) -> tuple[np.ndarray, np.ndarray]:
     return np.stack([np.cos(psi), np.sin(psi)], 1), np.stack([-np.sin(psi), np.cos(psi)], 1)
 
 
-def gust_figures(calm: dict, gusted: dict, start: float) -> dict[str, float]:
+def track_distance(
+    calm: np.ndarray, flown: np.ndarray, tb: np.ndarray, at: np.ndarray
+) -> np.ndarray:
+    """The 3-D distance of ``flown[i]`` (positions (n, 3), semispans) from the calm
+    flight's trajectory ``calm`` (the same samples' times ``tb``, wingbeats) for each index
+    ``i`` of ``at``: the nearest point of the polyline through the calm positions within
+    :data:`TRACK_BEATS` wingbeats of ``tb[i]``."""
+    out = np.empty(len(at))
+    for j, i in enumerate(at):
+        near = np.flatnonzero(np.abs(tb - tb[i]) <= TRACK_BEATS)
+        a, b = calm[near[:-1]], calm[near[1:]]
+        ab = b - a
+        u = np.clip(((flown[i] - a) * ab).sum(1) / np.maximum((ab * ab).sum(1), 1e-30), 0.0, 1.0)
+        out[j] = float(np.linalg.norm(a + u[:, None] * ab - flown[i], axis=1).min())
+    return out
+
+
+def per_beat_offsets(tb: np.ndarray, parts: dict[str, np.ndarray], start: float) -> list:
+    """One-wingbeat means of the offsets ``parts`` (along, lateral, height) over wingbeats
+    ``k`` to ``k + 1`` after ``start``, k = 0 .. :data:`PER_BEAT` - 1."""
+    rows = []
+    for k in range(PER_BEAT):
+        m = (tb >= start + k) & (tb < start + k + 1)
+        if m.any():
+            rows.append([round(float(v[m].mean()), 3) for v in parts.values()])
+    return rows
+
+
+def gust_figures(calm: dict, gusted: dict, start: float) -> dict[str, Any]:
     """Distance figures of ``gusted`` from ``calm`` (reduced arrays) after ``start`` (wingbeats)."""
     n = min(len(calm["t"]), len(gusted["t"]))
     d = np.sqrt(sum((gusted[k][:n] - calm[k][:n]) ** 2 for k in ("x", "y", "z")))
@@ -93,6 +134,8 @@ def gust_figures(calm: dict, gusted: dict, start: float) -> dict[str, float]:
         "after_8_lateral": (dxy * left).sum(1),
         "after_8_height": gusted["z"][:n] - calm["z"][:n],
     }
+    pos = [np.stack([a[k][:n] for k in ("x", "y", "z")], 1) for a in (calm, gusted)]
+    track = track_distance(pos[0], pos[1], tb, np.flatnonzero(late))
     return {
         "peak": round(float(d[after].max()), 4),
         "after_8": round(float(d[tb >= start + BACK_BEATS].max()), 4),
@@ -101,6 +144,8 @@ def gust_figures(calm: dict, gusted: dict, start: float) -> dict[str, float]:
         "height_max": round(float(np.abs(gusted["z"][:n] - calm["z"][:n])[after].max()), 4),
         "saturated": int(np.sum(np.asarray(gusted["saturated"], dtype=bool))),
         **{k: round(float(np.abs(v[late]).max()), 4) for k, v in parts.items()},
+        "after_8_track": round(float(track.max()), 4),
+        "per_beat": per_beat_offsets(tb, parts, start),
     }
 
 
@@ -123,11 +168,13 @@ def gust_study() -> dict[str, Any]:
     for name, gust in GUSTS.items():
         gusted = fly_circle(gust=gust)
         out[name] = gust_figures(calm.arrays, gusted.arrays, float(gust.split(":")[0]))
+        del out[name]["per_beat"]
     return out
 
 
-def phases_study(count: int) -> dict[str, Any]:
-    """``count`` gusts (half from each side) spread over a wingbeat from wingbeat 25."""
+def phases_study(count: int, per_beat: bool = False) -> dict[str, Any]:
+    """``count`` gusts (half from each side) spread over a wingbeat from wingbeat 25;
+    ``per_beat``: with each gust's one-wingbeat mean offsets (:func:`per_beat_offsets`)."""
     calm = fly_circle()
     half = max(1, count // 2)
     rows = []
@@ -136,7 +183,14 @@ def phases_study(count: int) -> dict[str, Any]:
             start = 25.0 + k / half
             gusted = fly_circle(gust=f"{start}:1:0:{0.15 * sign}:0")
             rows.append(gust_figures(calm.arrays, gusted.arrays, start))
-    keys = ("after_8", "after_8_along", "after_8_lateral", "after_8_height", "peak")
+    keys = (
+        "after_8",
+        "after_8_along",
+        "after_8_lateral",
+        "after_8_height",
+        "after_8_track",
+        "peak",
+    )
     out: dict[str, Any] = {"circle": calm_figures(calm), "gusts": len(rows)}
     for k in keys:
         v = np.array([r[k] for r in rows])
@@ -144,6 +198,11 @@ def phases_study(count: int) -> dict[str, Any]:
                   "max": round(float(v.max()), 4)}  # fmt: skip
     out["saturated"] = int(sum(r["saturated"] for r in rows))
     out["after_8_each"] = [r["after_8"] for r in rows]
+    out["after_8_track_each"] = [r["after_8_track"] for r in rows]
+    out["within_0.05"] = {k: sum(r[k] < WITHIN for r in rows) for k in ("after_8", "after_8_track")}
+    if per_beat:  # (along, lateral, height) per wingbeat after each gust
+        names = [f"{25.0 + k / half}{'+' if s > 0 else '-'}" for s in (1, -1) for k in range(half)]
+        out["per_beat"] = {name: r["per_beat"] for name, r in zip(names, rows, strict=True)}
     return out
 
 
@@ -214,10 +273,13 @@ def main() -> None:
     parser.add_argument("--step", type=float, default=None, help="the plant's step (DA)")
     parser.add_argument("--set", action="append", default=[], help="MODULE.NAME=VALUE")
     parser.add_argument("--phases", type=int, default=None, help="gusts over a wingbeat")
+    parser.add_argument(
+        "--per-beat", action="store_true", help="with --phases: offsets per wingbeat"
+    )
     args = parser.parse_args()
     apply_settings(args.set)
     if args.phases is not None:
-        print(json.dumps(phases_study(args.phases)))
+        print(json.dumps(phases_study(args.phases, args.per_beat)))
     elif args.step is not None:
         for row in step_study(args.step):
             print(json.dumps(row))
