@@ -7,11 +7,15 @@ then the RMS after two wingbeats per component, split into the turn's steady par
 the rest.
 
     PYTHONPATH=$PWD python scripts/turn_error_study.py circle --bird models/pigeon.toml
+    PYTHONPATH=$PWD python scripts/turn_error_study.py s-turn --mirror --bird models/pigeon.toml
+
+``--mirror`` (s-turn only): the s-turn to the right first, then to the left.
 """
 
 from __future__ import annotations
 
 import argparse
+import math
 
 import numpy as np
 
@@ -19,9 +23,14 @@ from birdsim.commands.fly import load_table_for
 from birdsim.export.bvh import quat_to_matrix
 from birdsim.flight.flightlog import log_arrays
 from birdsim.flight.freeflight import fly
-from birdsim.flight.presets import DEMO_MODEL, demo_bird
+from birdsim.flight.presets import CRUISE_SPEED, DEMO_MODEL, demo_bird
 from birdsim.flight.simulate import SimConfig
-from birdsim.flight.turn_presets import TURN_PRESETS
+from birdsim.flight.turn_presets import (
+    CIRCLE_RADIUS,
+    CRUISE_RAMP_BEATS,
+    TURN_PRESETS,
+    level_turns,
+)
 from birdsim.flight.turn_summary import turn_series
 from birdsim.physics.bird import Bird
 
@@ -31,10 +40,17 @@ def main() -> None:
     ap.add_argument("preset", choices=sorted(TURN_PRESETS))
     ap.add_argument("--bird", default=None)
     ap.add_argument("--model", default=DEMO_MODEL)
+    ap.add_argument("--mirror", action="store_true", help="s-turn only: right first")
     args = ap.parse_args()
+    if args.mirror and args.preset != "s-turn":
+        ap.error(f"--mirror: preset {args.preset!r}; allowed: s-turn")
+    path = TURN_PRESETS[args.preset]
+    if args.mirror:  # the s-turn's shape (turn_presets) with the turns' signs swapped
+        q = 0.25 * math.pi
+        path = level_turns("s-turn", [-q, q], CRUISE_SPEED, CIRCLE_RADIUS, CRUISE_RAMP_BEATS, "")
     bird = Bird.from_toml(args.bird) if args.bird else demo_bird()
     table = load_table_for(bird, args.model, None)
-    r = fly(TURN_PRESETS[args.preset], table, bird, args.model, config=SimConfig(attitude="free"))
+    r = fly(path, table, bird, args.model, config=SimConfig(attitude="free"))
     a = {k: np.asarray(v) for k, v in r.arrays.items()}
     unit = bird.semispan  # the log is in semispans
     beats = a["t"] / (2.0 * np.pi)
@@ -50,7 +66,10 @@ def main() -> None:
     aoa = np.degrees(np.arctan2(-v_body[:, 2], v_body[:, 0]))
     slip = np.degrees(np.arctan2(v_body[:, 1], v_body[:, 0]))
     deg = np.degrees
-    print(" wb   along    left  height | bank  cmd  coord | aoa  slip  pitch  cmd | q     sp")
+    flap = a["flap_amp"] - 0.5 * a["u_flap_amp"] if "u_flap_amp" in a else a["flap_amp"]
+    print(
+        " wb   along    left  height | bank  cmd  coord | aoa  slip  pitch  cmd | q     sp  |  Fx    flap"
+    )
     for b in range(n):
         s = idx == b
         print(
@@ -58,7 +77,8 @@ def main() -> None:
             f" {deg(series['bank'][b]):5.1f} {deg(a['bank_command'][s].mean()):5.1f}"
             f" {deg(series['coordinated'][b]):5.1f} | {aoa[s].mean():5.1f} {slip[s].mean():5.1f}"
             f" {deg(a['pitch'][s].mean()):5.1f} {deg(a['pitch_command'][s].mean()):5.1f} |"
-            f" {a['omega_body'][s, 1].mean():6.3f} {deg(a['stroke_plane'][s].mean()):5.1f}"
+            f" {a['omega_body'][s, 1].mean():6.3f} {deg(a['stroke_plane'][s].mean()):5.1f} |"
+            f" {a['Fx_demand'][s].mean():6.3f} {flap[s].mean():5.2f}"
         )
     after = beats >= 2.0
     steady = np.zeros(len(beats), dtype=bool)
