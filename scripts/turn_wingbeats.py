@@ -10,6 +10,9 @@ wingbeat (the log's units: SI for a bird file, m and degrees here for SI logs):
   ``saturated``: what ``rms``'s "no saturated sample" counts), ``asat``: samples where
   the attitude loop's inputs met their bounds (``attitude_saturated``, not counted there);
 * ``Fz``: the wingbeat's most negative (largest upward) force demand (table units);
+* ``pmax``: the wingbeat's largest body pitch measured from the reference's heading
+  (:func:`pitch_from_heading`, degrees: past 90 the body is pitched over the vertical,
+  which the log's Z-Y-X ``pitch`` (an arcsine) reads as 180 minus it);
 * ``bank``, ``cmd``: the wingbeat-mean bank about the horizontal heading
   (:func:`birdsim.flight.bank.bank_of`, right wing down > 0) and its command (degrees);
 * ``plan`` (with ``--preset``): the path's planned bank at the wingbeat's middle
@@ -34,10 +37,9 @@ from birdsim.flight.flightlog import LogError, load_log
 TWO_PI = 2.0 * math.pi
 
 
-def path_errors(log: Any) -> dict[str, np.ndarray]:
-    """Per sample: the path error (bird minus reference, the log's length unit) ``along``
-    the reference's horizontal heading, ``lateral`` (to its left) and ``up``; the heading
-    is held where the reference is at rest (its speed below a thousandth of its top)."""
+def reference_heading(log: Any) -> np.ndarray:
+    """Per sample: the reference's horizontal heading (rad, counter-clockwise from world
+    x), held where the reference is at rest (its speed below a thousandth of its top)."""
     t = np.asarray(log["t"], dtype=float)
     ref = np.stack([log["x_ref"], log["y_ref"]], axis=1).astype(float)
     v = np.gradient(ref, t, axis=0)
@@ -45,7 +47,25 @@ def path_errors(log: Any) -> dict[str, np.ndarray]:
     psi = np.arctan2(v[:, 1], v[:, 0])
     moving = speed > 1e-3 * max(float(speed.max()), 1e-12)
     idx = np.maximum.accumulate(np.where(moving, np.arange(len(t)), 0))
-    psi = psi[idx]
+    return psi[idx]
+
+
+def pitch_from_heading(quat: np.ndarray, psi: np.ndarray) -> np.ndarray:
+    """The elevation (degrees) of the body's x axis (MuJoCo quaternions (n, 4), w x y z)
+    above the horizontal heading ``psi`` (n,), measured through the vertical: 90 with the
+    body upright, 120 when pitched 30 degrees past it (nose leaning back)."""
+    w, x, y, z = np.moveaxis(np.asarray(quat, dtype=float), -1, 0)
+    bx = np.stack([1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)])
+    forward = np.cos(psi) * bx[0] + np.sin(psi) * bx[1]
+    return np.degrees(np.arctan2(bx[2], forward))
+
+
+def path_errors(log: Any) -> dict[str, np.ndarray]:
+    """Per sample: the path error (bird minus reference, the log's length unit) ``along``
+    the reference's horizontal heading (:func:`reference_heading`), ``lateral`` (to its
+    left) and ``up``."""
+    ref = np.stack([log["x_ref"], log["y_ref"]], axis=1).astype(float)
+    psi = reference_heading(log)
     ex = np.asarray(log["x"], dtype=float) - ref[:, 0]
     ey = np.asarray(log["y"], dtype=float) - ref[:, 1]
     return {
@@ -62,6 +82,7 @@ def wingbeat_rows(log: Any) -> list[dict[str, float]]:
     t_beats = np.asarray(log["t"], dtype=float) * float(log["omega"]) / TWO_PI
     err = path_errors(log)
     bank = np.degrees(bank_of(np.asarray(log["quat"], dtype=float)))
+    pitch = pitch_from_heading(log["quat"], reference_heading(log))
     cmd = np.degrees(np.asarray(log["bank_command"], dtype=float))
     beat = np.floor(t_beats + 1e-9).astype(int)
     rows = []
@@ -80,6 +101,7 @@ def wingbeat_rows(log: Any) -> list[dict[str, float]]:
                 "psat": float(np.sum(log["saturated"][m])),
                 "asat": float(np.sum(log["attitude_saturated"][m])),
                 "fz_min": float(np.min(log["Fz_demand"][m])),
+                "pitch_max": float(pitch[m].max()),
                 "bank": float(bank[m].mean()),
                 "cmd": float(cmd[m].mean()),
             }
@@ -125,14 +147,14 @@ def main(argv: list[str] | None = None) -> int:
     if args.preset:
         plan = planned_bank(log, args.preset, np.array([r["wingbeat"] + 0.5 for r in rows]))
     print(
-        " wb  along    lat     up    err psat asat    Fz   bank    cmd"
+        " wb  along    lat     up    err psat asat    Fz   pmax   bank    cmd"
         + ("   plan   rate    acc" if plan is not None else "")
     )
     for i, r in enumerate(rows):
         line = (
             f"{r['wingbeat']:3.0f} {r['along']:+.3f} {r['lateral']:+.3f} {r['up']:+.3f}"
             f" {r['err']:.3f} {r['psat']:4.0f} {r['asat']:4.0f} {r['fz_min']:+.3f}"
-            f" {r['bank']:+6.1f} {r['cmd']:+6.1f}"
+            f" {r['pitch_max']:6.1f} {r['bank']:+6.1f} {r['cmd']:+6.1f}"
         )
         if plan is not None:
             line += f" {plan[i, 0]:+6.1f} {plan[i, 1]:+6.1f} {plan[i, 2]:+6.1f}"

@@ -85,3 +85,21 @@ def test_bank_and_saturation_counts(tw):
     assert [r["psat"] for r in rows] == [0.0, 5.0]
     assert [r["asat"] for r in rows] == [2.0, 0.0]
     assert rows[1]["fz_min"] < rows[0]["fz_min"] < -0.2
+
+
+@pytest.mark.parametrize("psi", [0.0, 2.0, -2.5])
+@pytest.mark.parametrize("pitch_deg", [30.0, 80.0, 120.0])
+def test_pitch_from_heading_reads_past_the_vertical(tw, psi, pitch_deg):
+    """A body pitched nose up by ``pitch_deg`` about its own y axis on heading ``psi``
+    reads ``pitch_deg``, 120 past the vertical too (the log's arcsine pitch reads 60)."""
+    log = _log(psi, 0.0, 0.0, 0.0)
+    # Rz(psi) then nose up: MuJoCo's y is the left wing, nose up is -pitch about it
+    a, b = psi / 2, -math.radians(pitch_deg) / 2
+    q = np.array(
+        [math.cos(a) * math.cos(b), -math.sin(a) * math.sin(b),
+         math.cos(a) * math.sin(b), math.sin(a) * math.cos(b)]
+    )  # fmt: skip
+    log["quat"] = np.tile(q, (len(log["t"]), 1))
+    rows = tw.wingbeat_rows(log)
+    for r in rows:
+        assert r["pitch_max"] == pytest.approx(pitch_deg, abs=1e-9)
