@@ -8,37 +8,16 @@ pair's damping ratio is below 1 / sqrt(2), the integral term's acceleration unch
 
 from __future__ import annotations
 
-import math
 from types import SimpleNamespace
 
 import numpy as np
 import pytest
+from pigeon_gust import gust_errors
 
 import birdsim.flight.disturbed_gains as dg
-from birdsim.commands.fly import load_table_for
-from birdsim.flight import freeflight
 from birdsim.flight.attitude import ATTITUDE_BEATS
 from birdsim.flight.controller import gains_for
-from birdsim.flight.gust import parse_gust
-from birdsim.flight.presets import DEMO_MODEL, PATH_PRESETS
-from birdsim.flight.simulate import SimConfig
 from birdsim.physics.bird import Bird
-
-
-def _gust_errors(wind: tuple[float, float, float]) -> np.ndarray:
-    """The pigeon's cruise with a one-wingbeat gust of ``wind`` (fractions of the cruise
-    speed 0.5 omega s; x forward, y left, z up) from wingbeat 3, as ``scripts/free_targets.py
-    --gusts``: the largest path error (semispans) per wingbeat, 16 wingbeats."""
-    bird = Bird.from_toml("models/pigeon.toml")
-    v = 0.5 * bird.semispan * 2.0 * math.pi / bird.period
-    table = load_table_for(bird, DEMO_MODEL, None)
-    g = parse_gust("3:1:" + ":".join(f"{w * v:g}" for w in wind))
-    r = freeflight.fly(PATH_PRESETS["cruise"], table, bird, DEMO_MODEL, beats=16.0,
-                       gusts=[g], config=SimConfig(attitude="free"))  # fmt: skip
-    a = r.arrays
-    n = int(round(len(a["t"]) / (a["t"][-1] / (2 * math.pi))))
-    err = np.sqrt((a["x_ref"] - a["x"]) ** 2 + a["y"] ** 2 + (a["z_ref"] - a["z"]) ** 2)
-    return np.array([err[b * n : (b + 1) * n].max() for b in range(len(a["t"]) // n)])
 
 
 @pytest.mark.parametrize("previous", [False, True])
@@ -48,7 +27,7 @@ def test_pigeon_down_and_tail_gusts_back_within_eight(monkeypatch, wind, previou
     # the previous loop: down never (0.235, 0.144 at the end), tail wind in 11
     if previous:
         monkeypatch.setattr(dg, "ENABLED", False)
-    err = _gust_errors(wind)
+    err = gust_errors(wind)
     back = bool(np.all(err[12:] <= 0.05))  # wingbeats 12-15: 8 after the gust and on
     assert back != previous, err[10:]
 
