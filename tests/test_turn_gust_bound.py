@@ -4,28 +4,15 @@ band, and the turn's lateral loop on a double integrator behind a dead time."""
 
 from __future__ import annotations
 
-import importlib.util
 import math
-import sys
-from pathlib import Path
 
 import pytest
-
-SCRIPTS = Path(__file__).resolve().parents[1] / "scripts"
+from script_module import load_script
 
 
 @pytest.fixture(scope="module")
 def bound():
-    sys.path.insert(0, str(SCRIPTS))
-    try:
-        spec = importlib.util.spec_from_file_location(
-            "turn_gust_bound", SCRIPTS / "turn_gust_bound.py"
-        )
-        mod = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(mod)
-        yield mod
-    finally:
-        sys.path.remove(str(SCRIPTS))
+    return load_script("turn_gust_bound")
 
 
 def test_min_rest_time_is_the_bang_bang_time(bound):

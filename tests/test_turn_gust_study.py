@@ -5,29 +5,16 @@ per-wingbeat offsets along, to the left and up."""
 
 from __future__ import annotations
 
-import importlib.util
-import sys
-from pathlib import Path
-
 import numpy as np
 import pytest
+from script_module import load_script
 
-SCRIPTS = Path(__file__).resolve().parents[1] / "scripts"
 TWO_PI = 2.0 * np.pi
 
 
 @pytest.fixture(scope="module")
 def study():
-    sys.path.insert(0, str(SCRIPTS))
-    try:
-        spec = importlib.util.spec_from_file_location(
-            "turn_gust_study", SCRIPTS / "turn_gust_study.py"
-        )
-        mod = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(mod)
-        yield mod
-    finally:
-        sys.path.remove(str(SCRIPTS))
+    return load_script("turn_gust_study")
 
 
 def _circle(radius: float, lag: float = 0.0, beats: float = 40.0, per_beat: int = 32) -> dict:

@@ -5,22 +5,16 @@ about the heading against its command."""
 
 from __future__ import annotations
 
-import importlib.util
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
-
-SCRIPT = Path(__file__).resolve().parents[1] / "scripts" / "turn_wingbeats.py"
+from script_module import load_script
 
 
 @pytest.fixture(scope="module")
 def tw():
-    spec = importlib.util.spec_from_file_location("turn_wingbeats", SCRIPT)
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
+    return load_script("turn_wingbeats")
 
 
 def _log(psi: float, offset_left: float, up: float, bank: float, n: int = 128) -> dict:
