@@ -98,8 +98,9 @@ def _fly(name: str):
 @pytest.mark.slow
 def test_turn_90_flies_its_slow_turn():
     """The seed bird's turn-90 (V = 0.2, R = 5, 5-wingbeat ramps; about 20 s): the
-    issue's targets, met: path RMS 0.0680 semispan after two wingbeats (<= 0.1; 0.0786
-    before the turns' fourth pass), no saturated sample, heading change 90.7 degrees
+    issue's targets, met: path RMS 0.0667 semispan after two wingbeats (<= 0.1; 0.0680
+    before the rocking's moment in the slow turn's loop, p23x; 0.0786 before the turns'
+    fourth pass), no saturated sample, heading change 90.7 degrees
     (90 +- 3); sideslip at most 2.4 degrees (bound 5, the circle's coordination target)."""
     _, info, turn = _fly("turn-90")
     assert info["saturated_samples"] == 0

@@ -33,6 +33,7 @@ from birdsim.flight.attitude_commands import command_filter
 from birdsim.flight.attitude_reserve import TURN_RESERVE
 from birdsim.flight.bank import TurnAttitude, lateral_acceleration, lateral_fit, turn_attitude
 from birdsim.flight.path_integral import INTEGRAL_BAND, TURN_INTEGRAL_BAND
+from birdsim.flight.rocking_share import RockingShare
 
 TWO_PI = 2.0 * math.pi
 #: Time constant (wingbeats) of the filter on the lateral loop's bank correction.
@@ -98,6 +99,15 @@ GYRO_FEEDFORWARD = True
 #: so a swing larger than that leaks into the one-wingbeat estimate and makes ``M_0``
 #: jump with it (docs/free-body.md, "The pigeon's attitude, fourth stage").
 ROCKING_LIMIT = 0.1
+#: A slow turn's (second-stage) attitude loop counts the body's rocking's rectified
+#: pitching moment in its ``M_0`` (:mod:`birdsim.flight.rocking_share`, as the fourth
+#: stage after the slow straight loop's hand-back).  The pigeon's is +0.002..+0.005 table
+#: units nose up at V = 0.2, beyond the loop's integral bound (0.0011): without it the body
+#: sat 20-25 degrees above its 21-degree posture, swinging by 30.  Measured (pigeon,
+#: ``turn-90`` / ``u-turn``, m, saturated samples): 0.1152 (40) / 0.0557 (72) -> 0.0292 (0)
+#: / 0.0554 (320); ``ROCK_LAG_BEATS`` 0.5 / 1.5 / 2: 0.0349 / 0.0270 / 0.0300 (0); the
+#: seed bird's 0.0680 / 0.0431 -> 0.0667 / 0.0434 semispan (docs/turning.md, p23x).
+SLOW_TURN_ROCKING = True
 
 
 def fourth_stage_pitch(track: Any, fb: Any) -> bool:
@@ -152,12 +162,15 @@ def attitude_loop_for(fb: Any, enabled: bool, track: Any, at_command: bool) -> A
     constants of :func:`axis_beats` and, where ``at_command`` (``freeflight.JAC_AT_COMMAND``)
     and :func:`fourth_stage_pitch` say so, the fourth-stage pitch loop
     (``AttitudeLoop.straight``); a turn's allocation has the reserve of
-    :mod:`birdsim.flight.attitude_reserve` (``AttitudeLoop.reserve``)."""
+    :mod:`birdsim.flight.attitude_reserve` (``AttitudeLoop.reserve``); a slow turn's
+    second-stage loop counts the rocking's moment in ``M_0`` (:data:`SLOW_TURN_ROCKING`)."""
     att = AttitudeLoop(fb, enabled=enabled, **axis_beats(track))
     att.straight = at_command and fourth_stage_pitch(track, fb)
     if track is not None:  # wider lateral bounds where the loop's own leave it short
         att.reserve = TURN_RESERVE
         att.per_inertia = not track.slow_turn  # roll and yaw weighed per unit inertia
+        if SLOW_TURN_ROCKING and track.slow_turn and not att.straight:
+            att.rocking = RockingShare(0.0, None)  # measured with the loop's Jacobians
     return att
 
 
@@ -361,6 +374,7 @@ __all__ = [
     "FOURTH_STAGE_TURN_BEATS",
     "GYRO_FEEDFORWARD",
     "ROCKING_LIMIT",
+    "SLOW_TURN_ROCKING",
     "TURN_AXIS_BEATS",
     "SLOW_TURN_AXIS_BEATS",
     "SLOW_TURN_PITCH",
