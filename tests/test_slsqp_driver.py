@@ -61,8 +61,8 @@ def test_a_routine_that_refuses_the_call_falls_back_to_scipys_wrapper(monkeypatc
 def test_the_fused_loop_gives_the_unfused_loops_answer(monkeypatch, model, demand, previous):
     # objective and constraints asked for together (one clip and one lookup per request,
     # the arrays written in place) against the loop that asks for each separately: the
-    # same iterates to the bit, the same wingbeats evaluated (m4's demand is unreachable:
-    # the stall rule or the iteration limit ends it; the m5 one with a distance cost)
+    # same iterates to the bit, the same wingbeats evaluated (the first run ends at the
+    # iteration limit, the second carries a distance cost, the others converge)
     if slsqp_driver._core is None:
         pytest.skip("scipy < 1.16: only scipy's wrapper exists")
     m = get_model(model)
