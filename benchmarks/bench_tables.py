@@ -1,6 +1,10 @@
 """Lookup-table build speed: the full 11^3 table per model on all cores, and the lean
 one-row path the optimiser relies on against the batched path, side by side.
 
+Each table is built with the settings ``make tables`` builds it with (m5: 8 rounds of the
+regularising pass with the neighbours' median, :data:`MAKE_SETTINGS`), so that the m5 line
+times the shipped table's build (issue 24's target).
+
 ``BIRDSIM_BENCH_TABLE_MODELS=base,m4`` limits the models (default: all six).
 """
 
@@ -11,11 +15,13 @@ import resource
 import time
 
 from birdsim.physics.kinematics import MODELS
-from birdsim.tables.build import BuildConfig, Grid, build_table, solve_slice
+from birdsim.tables.build import BuildConfig, BuildSettings, Grid, build_table, solve_slice
 from birdsim.tables.point import PointForces
 from birdsim.tables.smoothness import table_smoothness
 
 TARGETS = {"base": 10.0, "m4": 10.0, "m5": 60.0}  # s on 2 cores: issues 3 (base), 17 (m4), 24 (m5)
+#: The settings of the Makefile's ``tables`` target where they are not the defaults.
+MAKE_SETTINGS = {"m5": BuildSettings(smooth_rounds=8, smooth_median=True)}
 
 
 def _cpu_all() -> float:
@@ -57,7 +63,8 @@ def full_tables(models: list[str]) -> None:
     jobs = os.cpu_count() or 1
     for model in models:
         t0, c0 = time.perf_counter(), _cpu_all()
-        t = build_table(BuildConfig(model, Grid.default(11)), jobs=jobs)
+        settings = MAKE_SETTINGS.get(model, BuildSettings())
+        t = build_table(BuildConfig(model, Grid.default(11), settings=settings), jobs=jobs)
         dt, cpu = time.perf_counter() - t0, _cpu_all() - c0
         c = t.meta["counts"]
         rp = t.meta.get("regularising_pass", {})
@@ -68,7 +75,8 @@ def full_tables(models: list[str]) -> None:
             else ""
         )
         print(
-            f"{model}: 11^3 table in {dt:.1f} s on {jobs} processes = {1331 / dt:.0f} cells/s{target}; "
+            f"{model}{' (make tables settings)' if model in MAKE_SETTINGS else ''}: "
+            f"11^3 table in {dt:.1f} s on {jobs} processes = {1331 / dt:.0f} cells/s{target}; "
             f"{cpu:.1f} CPU s (= {cpu / jobs:.1f} s on {jobs} idle cores); "
             f"{c['ok']} ok, {c['unreachable']} unreachable, {c['failed']} failed; "
             f"{t.evaluations.sum() / 1331:.0f} wingbeats evaluated per cell; "

@@ -7,6 +7,7 @@ import pytest
 
 from birdsim import get_model
 from birdsim.tables import slsqp_driver
+from birdsim.tables.cost import CostWeights
 from birdsim.tables.optimize import ForceProblem, slsqp
 
 
@@ -47,3 +48,39 @@ def test_a_routine_that_refuses_the_call_falls_back_to_scipys_wrapper(monkeypatc
     sol = slsqp(ForceProblem("m2", 0.0, -0.2, 0.0), x0)
     assert not slsqp_driver._STATE["direct"]  # switched to the wrapper for good
     assert sol.converged and abs(sol.Fz + 0.2) < 1e-6
+
+
+@pytest.mark.parametrize(
+    "model, demand, previous",
+    [
+        ("m5", (0.1, -0.3, 0.5), None),
+        ("m5", (0.3, -0.5, 0.0), "hover"),
+        ("m4", (0.4, -0.5, 0.2), None),
+    ],
+)
+def test_the_fused_loop_gives_the_unfused_loops_answer(monkeypatch, model, demand, previous):
+    # objective and constraints asked for together (one clip and one lookup per request,
+    # the arrays written in place) against the loop that asks for each separately: the
+    # same iterates to the bit, the same wingbeats evaluated (the first run ends at the
+    # iteration limit, the second carries a distance cost, the others converge)
+    if slsqp_driver._core is None:
+        pytest.skip("scipy < 1.16: only scipy's wrapper exists")
+    m = get_model(model)
+    x0 = list(m.guess("cruise").values())
+    prev = None if previous is None else np.array(list(m.guess(previous).values()))
+    weights = CostWeights(distance=0.05) if prev is not None else None
+
+    def make():
+        return ForceProblem(model, *demand[:2], demand[2], previous=prev, weights=weights)
+
+    fused = slsqp(make(), x0, maxiter=60)
+    monkeypatch.setattr(slsqp_driver, "minimize_fused", lambda *a, **k: None)
+    separate = slsqp(make(), x0, maxiter=60)
+    assert slsqp_driver._STATE["direct"]  # both ran the compiled routine directly
+    np.testing.assert_array_equal(fused.x, separate.x)
+    assert (fused.iterations, fused.evaluations, fused.cost, fused.converged) == (
+        separate.iterations,
+        separate.evaluations,
+        separate.cost,
+        separate.converged,
+    )

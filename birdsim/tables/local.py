@@ -45,28 +45,30 @@ def slsqp(
     x0 = np.clip(np.asarray(x0, dtype=float), lo, hi)
     evals0 = problem.evaluations
     values: dict[bytes, tuple[np.ndarray, float]] = {}
-    grads: dict[bytes, tuple[np.ndarray, np.ndarray]] = {}
+    last_grad: list = [None, None]  # the one cached gradient: key, (dr/dx, dh/dx)
 
     def point(z: np.ndarray) -> tuple[np.ndarray, bytes]:
         x = np.minimum(np.maximum(z[:d], lo), hi)
         return x, x.tobytes()
 
-    def val(z: np.ndarray) -> tuple[np.ndarray, float]:
-        x, key = point(z)
-        if key not in values:
+    def cached(x: np.ndarray, key: bytes) -> tuple[np.ndarray, float]:
+        found = values.get(key)
+        if found is None:
             if len(values) > 256:
                 values.clear()
-            values[key] = problem.point_parts(x)
-        return values[key]
+            found = values[key] = problem.point_parts(x)
+        return found
+
+    def val(z: np.ndarray) -> tuple[np.ndarray, float]:
+        return cached(*point(z))
 
     def grad(z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         x, key = point(z)
-        if key not in grads:
+        if key != last_grad[0]:
             r, jr, h, gh = problem.parts_and_jacobian(x)
-            grads.clear()
-            grads[key] = (jr, gh)
+            last_grad[:] = key, (jr, gh)
             values.setdefault(key, (r, h))
-        return grads[key]
+        return last_grad[1]
 
     def fun(z: np.ndarray) -> float:
         return float(w @ z[d:] + val(z)[1])
@@ -92,37 +94,57 @@ def slsqp(
         cons_dz[:K, :d], cons_dz[K:, :d] = -jr, jr
         return cons_dz.copy()
 
-    best: dict[str, object] = {"cost": np.inf, "x": x0, "since": 0}
+    zlo, zhi = np.concatenate([lo, np.zeros(K)]), np.concatenate([hi, np.full(K, np.inf)])
+
+    # fun and cons (jac and cons_jac) in one call, for the driver's fused loop: the same
+    # numbers, with the point clipped and looked up once
+    last: list = [b"", None]  # the last evaluated z (bytes) and its (x, key, (r, h))
+
+    def evaluate(z: np.ndarray, out: np.ndarray) -> float:
+        inside = np.minimum(np.maximum(z, zlo), zhi)  # = the driver's inside(z)
+        x = inside[:d]  # = point(z) and point(inside) (bounds: lo < hi, ties -> the bound)
+        key = x.tobytes()
+        r, h = found = cached(x, key)
+        last[0], last[1] = z.tobytes(), (x, key, found)
+        s = z[d:]
+        out[:K] = s - r
+        out[K:] = s + r
+        return float(w @ inside[d:] + h)
+
+    def differentiate(z: np.ndarray, g: np.ndarray, C: np.ndarray) -> None:
+        jr, gh = grad(z)
+        grad_z[:d] = gh
+        g[:] = grad_z
+        cons_dz[:K, :d], cons_dz[K:, :d] = -jr, jr
+        C[:] = cons_dz
+
+    best_cost, best_x, since = np.inf, x0, 0
 
     def track(z: np.ndarray) -> None:
-        x, _ = point(z)
-        r, h = val(z)
-        c = float(np.abs(r) @ w + h)
-        if c < float(best["cost"]) - STALL_TOL:  # type: ignore[arg-type]
-            best.update(cost=c, x=x, since=0)
+        nonlocal best_cost, best_x, since
+        if z.tobytes() == last[0]:  # evaluated just now (the usual case)
+            x, key, (r, h) = last[1]
         else:
-            if c < float(best["cost"]):  # type: ignore[arg-type]
-                best.update(cost=c, x=x)
-            best["since"] = int(best["since"]) + 1  # type: ignore[call-overload]
-            if int(best["since"]) >= stall:  # type: ignore[call-overload]
+            x, key = point(z)
+            r, h = cached(x, key)
+        c = float(np.abs(r) @ w + h)
+        if c < best_cost - STALL_TOL:
+            best_cost, best_x, since = c, x, 0
+        else:
+            if c < best_cost:
+                best_cost, best_x = c, x
+            since += 1
+            if since >= stall:
                 raise StopIteration
 
     r0 = val(np.concatenate([x0, np.zeros(K)]))[0]
     z0 = np.concatenate([x0, np.abs(r0)])
     track(z0)
     if K:
-        res = slsqp_driver.minimize(
-            fun,
-            jac,
-            cons,
-            cons_jac,
-            z0,
-            np.concatenate([lo, np.zeros(K)]),
-            np.concatenate([hi, np.full(K, np.inf)]),
-            maxiter=maxiter,
-            ftol=ftol,
-            callback=track,
-        )
+        kw = dict(maxiter=maxiter, ftol=ftol, callback=track)
+        res = slsqp_driver.minimize_fused(evaluate, differentiate, 2 * K, z0, zlo, zhi, **kw)
+        if res is None:  # the compiled routine is missing or refused the call
+            res = slsqp_driver.minimize(fun, jac, cons, cons_jac, z0, zlo, zhi, **kw)
         stalled, success, nit, res_message, res_x = (
             res.stopped,
             res.success,
@@ -144,8 +166,8 @@ def slsqp(
         success, nit, res_message, res_x = sres.success, sres.nit, sres.message, sres.x
     x, _ = point(res_x)
     r, h = val(np.concatenate([x, np.zeros(K)]))
-    if float(np.abs(r) @ w + h) > float(best["cost"]):  # type: ignore[arg-type]
-        x = np.asarray(best["x"])
+    if float(np.abs(r) @ w + h) > best_cost:
+        x = np.asarray(best_x)
         r, h = val(np.concatenate([x, np.zeros(K)]))
     message = f"no progress in {stall} iterations" if stalled else res_message
     return finish(problem, x, "slsqp", success and not stalled, message, evals0, nit, (r, h))

@@ -30,6 +30,8 @@ from birdsim.physics.kernel_shaft import NO_MASS, NO_MATRIX, shaft_arrays
 from birdsim.physics.kinematics import KinematicModel
 
 _COMPILED = {"ok": False}  # both kernels ran once in this process
+#: The gradient kernel's output rows of Fx, Fz and P (row 1 is Fy).
+_ROWS = np.array([0, 2, 3])
 
 
 @functools.lru_cache(maxsize=64)
@@ -84,7 +86,9 @@ class PointForces:
             np.full(1, float(climb)),
         )
         J = const.size
-        self.amp, self.phase, self.bias = np.zeros((1, J)), np.zeros((1, J)), np.zeros((1, J))
+        # the joints' (amplitude, phase, bias) of the row: one buffer, one (1 x J) view each
+        self._coef = np.zeros((3, 1, J))
+        self.amp, self.phase, self.bias = self._coef
         K = len(st.length)
         self.F, self.P, self.JP = np.zeros((1, K, 3)), np.zeros((1, K)), np.zeros((1, 2))
         self.out = np.zeros((1, 4, d + 1))
@@ -188,8 +192,7 @@ class PointForces:
         return pf
 
     def _load(self, x: np.ndarray) -> None:
-        coef = self.c0 + self.D @ x  # 3 x J
-        self.amp[0], self.phase[0], self.bias[0] = coef
+        np.add(self.c0, self.D @ x, out=self._coef[:, 0])  # c0 + D x, 3 x J
         self.pitch[0] = x[self.ip]
 
     def _drag(self, pitch: float) -> tuple[float, float]:
@@ -206,8 +209,8 @@ class PointForces:
         dx, dz = self._drag(float(x[self.ip]))
         panels = self.F[0].tolist()  # panel sums in the batched path's order
         return (
-            sum(f[0] for f in panels) + dx,
-            sum(f[2] for f in panels) + dz,
+            sum([f[0] for f in panels]) + dx,
+            sum([f[2] for f in panels]) + dz,
             float(self.PP[0]) if self.positive else sum(self.P[0].tolist()),
         )
 
@@ -216,8 +219,8 @@ class PointForces:
         self._load(x)
         _grad_kernel(0, 1, *self._grad_args)
         o = self.out[0]
-        vals = o[(0, 2, 3), 0].copy()
-        jac = o[(0, 2, 3), 1:].copy()
+        vals = o[_ROWS, 0]  # fancy indexing: copies
+        jac = o[_ROWS, 1:]
         pitch = float(x[self.ip])
         dx, dz = self._drag(pitch)
         vals[0] += dx

@@ -240,12 +240,14 @@ class ForceProblem(Problem):
             gh = np.zeros(self.dim)
             gh[self._ip] = self._orientation
             if self.cost_weights.distance > 0 and self.previous is not None:
-                # other_cost_gradient of one row, bitwise
+                # other_cost_gradient of one row, bitwise; the norm is _other_point's
                 diff = x - self.previous
                 norm = math.sqrt(_sum_of_squares(diff))
                 if norm > 0:
                     gh += self.cost_weights.distance * (diff / norm)
-            return r, jr, self._other_point(x), gh
+                h = float(self._orientation * x[self._ip] + self.cost_weights.distance * norm)
+                return r, jr, h, gh
+            return r, jr, float(self._orientation * x[self._ip]), gh
         X = x[None]
         grad_fn = getattr(self.evaluator, "gradients", None) if self.evaluator is not None else None
         if self.evaluator is not None and grad_fn is None:

@@ -112,23 +112,45 @@ def local_score(
 ) -> tuple[int, float]:
     """(zig-zag triples that involve ``cell`` if it held ``x``, sum of squared parameter
     steps to its reachable neighbours); smaller is smoother."""
-    eff_x = effect_mask(param_names, x[None])[0]
-    count = 0
+    return local_scores(param_names, X, ok, cell, np.asarray(x, dtype=float)[None])[0]
+
+
+def local_scores(
+    param_names: tuple[str, ...],
+    X: np.ndarray,
+    ok: np.ndarray,
+    cell: tuple[int, ...],
+    cand: np.ndarray,
+) -> list[tuple[int, float]]:
+    """:func:`local_score` of every row of ``cand`` (m x d), the same numbers: the
+    zig-zags of all rows counted in one call per axis (elementwise tests), the steps
+    summed row by row as there (the neighbours' effect masks made once)."""
+    cand = np.asarray(cand, dtype=float)
+    rows = len(cand)
+    eff = effect_mask(param_names, cand)
+    counts = np.zeros(rows, dtype=np.int64)
     for k in range(ok.ndim):
         n = ok.shape[k]
         lo, hi = max(cell[k] - 2, 0), min(cell[k] + 3, n)
         if hi - lo < 3:
             continue
         index = cell[:k] + (slice(lo, hi),) + cell[k + 1 :]
-        line = X[index].copy()
-        line[cell[k] - lo] = x
-        _, zig, _ = zigzags(param_names, line, ok[index], 0)
-        count += int(zig.sum())
-    steps = 0.0
-    for _, c in _neighbours(cell, ok.shape, ok):
-        both = eff_x & effect_mask(param_names, X[c][None])[0]
-        steps += float(np.sum(np.where(both, x - X[c], 0.0) ** 2))
-    return count, steps
+        lines = np.repeat(X[index][None], rows, axis=0)  # rows x line x d
+        lines[:, cell[k] - lo] = cand
+        line_ok = np.broadcast_to(ok[index], (rows, hi - lo))
+        _, zig, _ = zigzags(param_names, lines, line_ok, 1)
+        counts += zig.sum(axis=1)
+    near = [
+        (X[c], effect_mask(param_names, X[c][None])[0]) for _, c in _neighbours(cell, ok.shape, ok)
+    ]
+    out = []
+    for i in range(rows):
+        x, steps = cand[i], 0.0
+        for xc, eff_c in near:
+            both = eff[i] & eff_c
+            steps += float(np.sum(np.where(both, x - xc, 0.0) ** 2))
+        out.append((int(counts[i]), steps))
+    return out
 
 
 def _targets(
@@ -338,7 +360,7 @@ def smooth_cells(
         cost, err = candidate_costs(prob, cand)
         evals[m] += len(cand)
         best[m] = min(best[m], float(cost.min()))
-        scores = [local_score(names, X, ok, cell, x) for x in cand]
+        scores = local_scores(names, X, ok, cell, cand)
         pick = choose(
             cost, err, best[m], scores, _same_minimum(names, cand), st.smooth_tol, st.reach_tol
         )
@@ -362,6 +384,7 @@ __all__ = [
     "candidate_costs",
     "choose",
     "local_score",
+    "local_scores",
     "smooth_cells",
     "zigzag_cells",
 ]

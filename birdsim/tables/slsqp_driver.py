@@ -107,12 +107,11 @@ class _Refused(Exception):
     """The compiled routine did not accept the call (scipy changed its interface)."""
 
 
-def _direct(fun, jac, cons, cons_jac, z0, lower, upper, maxiter, ftol, callback) -> Result:
-    """scipy 1.16-1.17's ``_minimize_slsqp`` loop without its wrappers."""
-    x = np.clip(np.asarray(z0, dtype=float), lower, upper)
-    n = x.size
-    d = np.atleast_1d(np.asarray(cons(x), dtype=float)).copy()
-    m = d.size
+def _workspace(
+    n: int, m: int, maxiter: int, ftol: float
+) -> tuple[dict, np.ndarray, np.ndarray, np.ndarray]:
+    """The routine's state and work arrays for n variables and m inequality constraints
+    (as scipy's ``_minimize_slsqp`` sizes them)."""
     state = {
         "acc": ftol,
         "alpha": 0.0,
@@ -139,6 +138,16 @@ def _direct(fun, jac, cons, cons_jac, z0, lower, upper, maxiter, ftol, callback)
     indices = np.zeros(max(m + 2 * n + 2, 1), dtype=np.int32)
     buffer = np.zeros(max(n * (n + 1) // 2 + 3 * m * n + 9 * m + 8 * n * n + 35 * n + 28, 1))
     mult = np.zeros(max(1, m + 2 * n + 2))
+    return state, indices, buffer, mult
+
+
+def _direct(fun, jac, cons, cons_jac, z0, lower, upper, maxiter, ftol, callback) -> Result:
+    """scipy 1.16-1.17's ``_minimize_slsqp`` loop without its wrappers."""
+    x = np.clip(np.asarray(z0, dtype=float), lower, upper)
+    n = x.size
+    d = np.atleast_1d(np.asarray(cons(x), dtype=float)).copy()
+    m = d.size
+    state, indices, buffer, mult = _workspace(n, m, maxiter, ftol)
     xl = np.where(np.isfinite(lower), lower, np.nan)
     xu = np.where(np.isfinite(upper), upper, np.nan)
     C = np.zeros((max(1, m), n), order="F")
@@ -164,6 +173,67 @@ def _direct(fun, jac, cons, cons_jac, z0, lower, upper, maxiter, ftol, callback)
         if state["iter"] > previous:
             try:
                 callback(np.copy(x))
+            except StopIteration:
+                return Result(x, False, True, int(state["iter"]), "stopped by the callback")
+        if abs(mode) != 1:
+            return Result(
+                x, mode == 0, False, int(state["iter"]), EXIT_MODES.get(mode, f"exit mode {mode}")
+            )
+        previous = state["iter"]
+
+
+#: ``evaluate(z, d) -> f``: the objective at z clipped to the bounds, the constraints at
+#: z written into d; ``differentiate(z, g, C)``: their gradients written into g and C.
+Evaluate = Callable[[np.ndarray, np.ndarray], float]
+Differentiate = Callable[[np.ndarray, np.ndarray, np.ndarray], None]
+
+
+def minimize_fused(
+    evaluate: Evaluate,
+    differentiate: Differentiate,
+    m: int,
+    z0: np.ndarray,
+    lower: np.ndarray,
+    upper: np.ndarray,
+    *,
+    maxiter: int,
+    ftol: float,
+    callback: Callable[[np.ndarray], None],
+) -> Result | None:
+    """:func:`minimize` with the objective and the ``m`` constraints asked for together
+    (``evaluate``, ``differentiate``: one call each where :func:`minimize` makes two, the
+    arrays written in place), for callers whose objective and constraints share their
+    work.  The same routine fed the same numbers: the same iterates as :func:`minimize`
+    (``tests/test_slsqp_driver.py``).  ``callback(z)`` gets the routine's own array (it
+    must not keep it).  None where the routine is missing or refuses the call: the caller
+    then uses :func:`minimize`."""
+    if not _STATE["direct"]:
+        return None
+    x = np.clip(np.asarray(z0, dtype=float), lower, upper)
+    n = x.size
+    d = np.zeros(m)
+    state, indices, buffer, mult = _workspace(n, m, maxiter, ftol)
+    xl = np.where(np.isfinite(lower), lower, np.nan)
+    xu = np.where(np.isfinite(upper), upper, np.nan)
+    C = np.zeros((max(1, m), n), order="F")
+    g = np.zeros(n)
+    fx = evaluate(x, d)
+    differentiate(x, g, C)
+    previous = 0
+    while True:
+        try:
+            _core(state, fx, g, C, d, x, mult, xl, xu, buffer, indices)
+        except (TypeError, KeyError, ValueError):
+            _STATE["direct"] = False
+            return None
+        mode = state["mode"]
+        if mode == 1:  # values wanted
+            fx = evaluate(x, d)
+        elif mode == -1:  # gradients wanted
+            differentiate(x, g, C)
+        if state["iter"] > previous:
+            try:
+                callback(x)
             except StopIteration:
                 return Result(x, False, True, int(state["iter"]), "stopped by the callback")
         if abs(mode) != 1:
