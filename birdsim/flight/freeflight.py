@@ -18,7 +18,7 @@ import numpy as np
 
 from birdsim.errors import BirdsimError, limits_text, magnitude_ok
 from birdsim.flight import flight_arrays as step_records
-from birdsim.flight import turn_share, turning
+from birdsim.flight import turning
 from birdsim.flight.air_angle import straight_air_angle
 from birdsim.flight.attitude import FIT_BEATS
 from birdsim.flight.attitude_commands import bank_command, command_filter, straight_commands
@@ -133,7 +133,7 @@ def fly(
             )
         track = TrackFrame(reference, beats * TWO_PI, red.gravity)
     path = reference if track is None else track
-    lateral_corr = [0.0, 0.0]  # turning: the lateral loop's sideways (left) and banked vertical
+    lateral_corr = [0.0]  # turning: the lateral loop's sideways acceleration (to the left)
 
     def command(t: float, est: Any, integral: np.ndarray, pitch: float) -> Any:
         w = wind_at(gusts, t / TWO_PI, speed)
@@ -142,11 +142,12 @@ def fly(
             return ctl.lookup_table_force(fx, fz, v - float(w[0]))
         if track is None:
             return ctl.command_at(path, t, est, integral, pitch, (float(w[0]), float(w[2])))
-        # turning: the banked force carries the weight, the path's and the loops' accelerations
+        # turning: the force in the banked plane carries the weight, the path's vertical
+        # acceleration and the commanded sideways one (the plan's and the lateral loop's)
         ts = track.state(t)
         ahead = track.state(t + MAG_LEAD * TWO_PI) if MAG_LEAD > 0 else ts
         a_left = ahead.a_lat + lateral_corr[0]
-        az, lateral_corr[1] = turn_share.banked_az(ahead.az_up, a_left, red.gravity, ctl, est)
+        az = math.hypot(ahead.az_up + red.gravity, a_left) - red.gravity
         w_along = track.wind_along(t, w)
         return ctl.command(replace(ts, az=az), est, integral, pitch, (w_along, float(w[2])))
 
@@ -284,7 +285,6 @@ def fly(
                         (pitch_ref, pitch_rate_ref, pitch_acc_ref),
                         lat_int,
                         att.inertia,
-                        lateral_corr[1],
                     )
                     roll_cmd, yaw_cmd = turn_cmd.roll, turn_cmd.yaw
                     lateral_corr[0] = lat_accel - track.state(t).a_lat

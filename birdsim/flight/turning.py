@@ -28,13 +28,11 @@ from typing import Any
 
 import numpy as np
 
-from birdsim.flight import turn_share
 from birdsim.flight.attitude import AXIS_BEATS, LATERAL_INTEGRAL_RAD, AttitudeLoop, attitude_gains
 from birdsim.flight.attitude_commands import command_filter
 from birdsim.flight.attitude_reserve import TURN_RESERVE
 from birdsim.flight.bank import TurnAttitude, lateral_acceleration, lateral_fit, turn_attitude
 from birdsim.flight.path_integral import INTEGRAL_BAND, TURN_INTEGRAL_BAND
-from birdsim.flight.turn_share import bank_target, lateral_integral_step
 
 TWO_PI = 2.0 * math.pi
 #: Time constant (wingbeats) of the filter on the lateral loop's bank correction.
@@ -292,28 +290,25 @@ def turn_command(
     pitch: tuple[float, float, float],
     lat_integral: list[float],
     inertia: np.ndarray | None = None,
-    s_dv: float = 0.0,
 ) -> tuple[TurnAttitude, float, tuple[float, float]]:
     """The turning attitude command at reduced time ``t``: ``lat_window`` the last
     wingbeat's (side offset, its rate) samples (to the left of the path), ``pitch`` the
     body's pitch command (value, rate, acceleration), ``filter_state`` the bank
     correction's filter (value, rate) and ``lat_integral`` (one number, updated here)
     the integral of the side offset; ``inertia`` the body's principal moments (seed body
-    axes) for the gyroscopic feed-forward (:data:`GYRO_FEEDFORWARD`) and ``s_dv`` the path
-    loop's vertical correction the bank carries (:mod:`birdsim.flight.turn_share`).
-    Returns the command, the commanded sideways acceleration (to the left; the force in
-    the banked plane carries it) and the filter's new state."""
+    axes) for the gyroscopic feed-forward (:data:`GYRO_FEEDFORWARD`).  Returns the command, the commanded sideways
+    acceleration (to the left; the force in the banked plane carries it) and the
+    filter's new state."""
     heading, bank_ff = track.bank_plan(t)
     st = track.state(t)
     y, vy = lateral_fit(lat_window, per_beat)
-    before = track.bank_plan(t - dt)[1][0] if turn_share.LATERAL_MODE == "fade" else 0.0
-    inc, i_term = lateral_integral_step(lat_integral, dt, y, bank_ff[0], before)
-    a_left = st.a_lat + lateral_acceleration(y, vy, i_term)
+    lat_integral[0] += dt * y
+    a_left = st.a_lat + lateral_acceleration(y, vy, lat_integral[0])
     up = gravity + st.az_up
-    target = bank_target(a_left, st.a_lat, up, s_dv)
+    target = math.atan2(-a_left, up) - math.atan2(-st.a_lat, up)
     if abs(target) > BANK_CORRECTION_MAX:  # a bank the roll loop can reach (anti-windup)
         target = math.copysign(BANK_CORRECTION_MAX, target)
-        lat_integral[0] -= inc
+        lat_integral[0] -= dt * y
     value, rate, _ = command_filter(*filter_state, target, BANK_BEATS * TWO_PI, dt)
     cmd = turn_attitude(heading, (bank_ff[0] + value, bank_ff[1] + rate, bank_ff[2]), pitch)
     if FF_LEAD > 0.0:
