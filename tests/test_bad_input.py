@@ -162,6 +162,8 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("build/relax-too-large", [*BUILD, "--relax", "2"], "--relax"),
     ("build/distance-negative", [*BUILD, "--distance", "-1"], "--distance"),
     ("build/power-weight-nan", [*BUILD, "--power-weight", "nan"], "--power-weight"),
+    ("build/incidence-weight-negative", [*BUILD, "--incidence-weight", "-1"], "--incidence-weight -1 is invalid"),
+    ("build/incidence-params-unknown", [*BUILD, "--incidence-weight", "1e-4", "--incidence-params", "pitch,fold_amp"], "--incidence-params 'pitch,fold_amp' is invalid; allowed: comma-separated parameters of base"),
     ("build/reach-tol-zero", [*BUILD, "--reach-tol", "0"], "--reach-tol"),
     ("build/smooth-rounds-zero", [*BUILD, "--smooth-rounds", "0"], "--smooth-rounds 0 is invalid; allowed: an integer >= 1"),
     ("build/out-exists", [*BUILD, "--out", "{w}/table.npz"], "--out '{w}/table.npz' exists"),

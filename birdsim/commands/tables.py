@@ -18,7 +18,7 @@ from birdsim.io import check_output
 from birdsim.physics.kinematics import get_model
 from birdsim.physics.units import reduced_bird
 from birdsim.tables.build import BuildConfig, BuildSettings, Grid, build_table
-from birdsim.tables.cost import CostWeights
+from birdsim.tables.cost import INCIDENCE_PARAMS, CostWeights
 from birdsim.tables.lookup import table_paths
 
 #: The flight grid (``make flight-tables``, docs/flight.md): Fx, Fz in table force units,
@@ -143,6 +143,19 @@ def register(sub: argparse._SubParsersAction) -> None:
         help="regularising pass: also start from the median of a cell's neighbours (the "
         "shipped m5 table's setting; docs/tables.md)",
     )
+    b.add_argument(
+        "--incidence-weight",
+        type=float,
+        default=0.0,
+        help="quadratic tie-break w_q * sum x_p^2 on the incidence-setting parameters "
+        "(--incidence-params; 0 = off, recorded only when on; docs/tables.md)",
+    )
+    b.add_argument(
+        "--incidence-params",
+        default=None,
+        help="comma-separated parameters of the incidence tie-break (default "
+        f"{','.join(INCIDENCE_PARAMS)}, those the model has)",
+    )
     b.add_argument("--quiet", action="store_true", help="no progress bar")
     add_bird_arguments(b)
     b.set_defaults(func=run_build)
@@ -182,7 +195,11 @@ def _check_build_options(args: argparse.Namespace) -> None:
     check_finite("--relax", args.relax)
     if not 0.0 < args.relax <= 1.0:
         raise BirdsimError(f"--relax {args.relax:g} is invalid; allowed: 0 < D <= 1 (1 = off)")
-    for flag, value in (("--distance", args.distance), ("--power-weight", args.power_weight)):
+    for flag, value in (
+        ("--distance", args.distance),
+        ("--power-weight", args.power_weight),
+        ("--incidence-weight", args.incidence_weight),
+    ):
         check_finite(flag, value)
         if value < 0:
             raise BirdsimError(f"{flag} {value:g} is invalid; allowed: a finite number >= 0")
@@ -247,7 +264,20 @@ def run_build(args: argparse.Namespace) -> int:
         if (why := fold_bird_error(bird)) is not None:
             raise BirdsimError(f"--bird: {why}")
     _check_build_options(args)
-    weights = CostWeights(power=args.power_weight, distance=args.distance)
+    names = INCIDENCE_PARAMS
+    if args.incidence_params is not None:
+        names = tuple(n.strip() for n in args.incidence_params.split(",") if n.strip())
+        if not names or any(n not in model.param_names for n in names):
+            raise BirdsimError(
+                f"--incidence-params {args.incidence_params!r} is invalid; allowed: "
+                f"comma-separated parameters of {model.name}: {', '.join(model.param_names)}"
+            )
+    weights = CostWeights(
+        power=args.power_weight,
+        distance=args.distance,
+        incidence=args.incidence_weight,
+        incidence_params=names,
+    )
     settings = BuildSettings(
         screen=args.screen,
         starts=args.starts,

@@ -6,6 +6,9 @@
                                         ranks stroke-plane inclination above body pitch
 ``     + nu * |x - x_prev|``            the optional distance cost of eq. 93 (Euclidean
                                         norm of the parameter change, radians)
+``     + w_q * sum_p x_p^2``            the optional quadratic tie-break on the
+                                        incidence-setting parameters (issue 24, off by
+                                        default): the minimum-norm point of a flat valley
 
 Fx, Fz and P are the dissertation's force (right wing + body drag, seed earth axes,
 Fz < 0 is up) and the cycle-mean mechanical power of that wing; for a bird with
@@ -23,6 +26,7 @@ are each term divided by the total (sec. 4.1.1, Fig. 36).
 from __future__ import annotations
 
 from dataclasses import asdict, dataclass
+from typing import Any
 
 import numpy as np
 
@@ -34,6 +38,11 @@ from birdsim.physics.cycle import DEFAULT_SAMPLES, evaluate_cycle, sample_phases
 from birdsim.physics.kinematics import KinematicModel
 from birdsim.physics.shaft_power import positive_power
 
+#: The parameters that set the wing's incidence in a near-glide (flap near 0), where
+#: they trade against one another at equal cost (docs/tables.md, issue 24): the default
+#: set of :attr:`CostWeights.incidence_params` (a name the model lacks is skipped).
+INCIDENCE_PARAMS = ("pitch", "stroke_plane", "twist_amp", "wrist_bias")
+
 #: Names of the cost fractions, in the order of the last axis of ``fractions``.
 FRACTION_NAMES = ("force_x", "force_z", "power", "other")
 
@@ -43,23 +52,49 @@ class CostWeights:
     """Weights of the cost terms.  Defaults: docs/design.md's ``1, 1, 0.5``; a token
     orientation weight of 0.01 per radian of body pitch (small against the force
     weights, so it only breaks the pitch / stroke-plane degeneracy at V = 0); no
-    distance cost (``distance`` is the nu of eq. 93; the dissertation tried 0.2)."""
+    distance cost (``distance`` is the nu of eq. 93; the dissertation tried 0.2); no
+    incidence tie-break (``incidence`` is w_q per rad^2 of ``sum_p x_p^2`` over
+    ``incidence_params``, centre 0: among wingbeats of nearly equal cost, the one of
+    least body pitch, stroke plane, twist and wrist bias)."""
 
     force_x: float = 1.0
     force_z: float = 1.0
     power: float = 0.5
     orientation: float = 0.01
     distance: float = 0.0
+    incidence: float = 0.0
+    incidence_params: tuple[str, ...] = INCIDENCE_PARAMS
 
     def __post_init__(self) -> None:
         for name, value in asdict(self).items():
+            if name == "incidence_params":
+                continue
             if not (isinstance(value, (int, float)) and np.isfinite(value) and value >= 0):
                 raise BirdsimError(
                     f"cost weight {name}={value!r} is invalid; allowed: a finite number >= 0"
                 )
+        names = self.incidence_params
+        if isinstance(names, str) or not all(isinstance(n, str) for n in names):
+            raise BirdsimError(
+                f"incidence_params={names!r} is invalid; allowed: a sequence of parameter names"
+            )
+        object.__setattr__(self, "incidence_params", tuple(names))
 
-    def to_dict(self) -> dict[str, float]:
-        return {k: float(v) for k, v in asdict(self).items()}
+    def to_dict(self) -> dict[str, Any]:
+        """The weights as recorded; the incidence tie-break only when on, so that every
+        table built before it existed keeps its configuration digest."""
+        out: dict[str, Any] = {
+            k: float(v) for k, v in asdict(self).items() if k != "incidence_params"
+        }
+        if self.incidence > 0:
+            out["incidence_params"] = list(self.incidence_params)
+        else:
+            del out["incidence"]
+        return out
+
+    def incidence_index(self, model: KinematicModel) -> list[int]:
+        """Columns of ``model.param_names`` the incidence tie-break acts on."""
+        return [model.param_names.index(n) for n in self.incidence_params if n in model.param_names]
 
 
 @dataclass(frozen=True)
@@ -99,7 +134,8 @@ def other_cost(
     previous: np.ndarray | None = None,
 ) -> np.ndarray:
     """Orientation cost (stroke-plane models at V == 0) plus the distance cost to
-    ``previous`` (eq. 93).  ``X`` is ``B x d``; returns shape ``B``."""
+    ``previous`` (eq. 93) plus the incidence tie-break.  ``X`` is ``B x d``; returns
+    shape ``B``."""
     X = np.asarray(X, dtype=float)
     out = np.zeros(X.shape[:-1])
     if weights.orientation > 0 and uses_orientation_cost(model):
@@ -109,6 +145,9 @@ def other_cost(
         out = out + weights.distance * np.linalg.norm(
             X - np.asarray(previous, dtype=float), axis=-1
         )
+    if weights.incidence > 0:
+        Q = X[..., weights.incidence_index(model)]
+        out = out + weights.incidence * np.add.reduce(Q * Q, axis=-1)
     return out
 
 
@@ -239,6 +278,9 @@ def other_cost_gradient(
         diff = X - np.asarray(previous, dtype=float)
         norm = np.linalg.norm(diff, axis=-1, keepdims=True)
         out += weights.distance * np.divide(diff, norm, out=np.zeros_like(diff), where=norm > 0)
+    if weights.incidence > 0:
+        idx = weights.incidence_index(model)
+        out[..., idx] += 2.0 * weights.incidence * X[..., idx]
     return out
 
 

@@ -183,6 +183,8 @@ class ForceProblem(Problem):
             and self.speed == 0.0
         )
         self._orientation = self.cost_weights.orientation if orient else 0.0
+        self._incidence = self.cost_weights.incidence
+        self._iq = self.cost_weights.incidence_index(self.model)
 
     def _point_forces(self) -> PointForces | None:
         if self._point is False:
@@ -198,11 +200,15 @@ class ForceProblem(Problem):
         """:func:`other_cost` of one row, bitwise (the orientation term is linear in the
         pitch; the distance term's norm is summed as ``np.linalg.norm`` sums it)."""
         if self.cost_weights.distance > 0 and self.previous is not None:
-            return float(
+            h = float(
                 self._orientation * x[self._ip]
                 + self.cost_weights.distance * math.sqrt(_sum_of_squares(x - self.previous))
             )
-        return float(self._orientation * x[self._ip])
+        else:
+            h = float(self._orientation * x[self._ip])
+        if self._incidence > 0:
+            h = float(h + self._incidence * _sum_of_squares(x[self._iq]))
+        return h
 
     def point_parts(self, x: np.ndarray) -> tuple[np.ndarray, float]:
         pf = self._point_forces()
@@ -246,8 +252,12 @@ class ForceProblem(Problem):
                 if norm > 0:
                     gh += self.cost_weights.distance * (diff / norm)
                 h = float(self._orientation * x[self._ip] + self.cost_weights.distance * norm)
-                return r, jr, h, gh
-            return r, jr, float(self._orientation * x[self._ip]), gh
+            else:
+                h = float(self._orientation * x[self._ip])
+            if self._incidence > 0:
+                gh[self._iq] += 2.0 * self._incidence * x[self._iq]
+                h = float(h + self._incidence * _sum_of_squares(x[self._iq]))
+            return r, jr, h, gh
         X = x[None]
         grad_fn = getattr(self.evaluator, "gradients", None) if self.evaluator is not None else None
         if self.evaluator is not None and grad_fn is None:
