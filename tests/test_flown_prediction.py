@@ -71,3 +71,39 @@ def test_nose_up_is_the_pitch_angle_past_the_vertical_too():
     assert np.allclose(nose_up(quat), angles, atol=1e-12)
     base = np.array([pitch_quat(0.2)] * len(angles))
     assert np.allclose(nose_up(quat, base), angles - 0.2, atol=1e-12)
+
+
+def test_a_prediction_steps_its_own_bird_not_a_flocks_lockstep(monkeypatch):
+    """A flock's lockstep puts its own ``step_many`` on each bird (every bird stepped
+    together, one interval each); a prediction is one bird's look-ahead and must step that
+    bird alone.  Before, it handed its wingbeat to the lockstep, and a steered flock whose
+    bird predicted stopped ("its wind or log interval differs from bird 0's"); the
+    lockstep's ``step_many`` is back on the bird after the prediction."""
+    step, seen, calls = freeflight_mod.interval, {}, [0]
+
+    def hooked(fb, right, times, t, dt, left, offset, wind, record, every):
+        if calls[0] == 17:
+            handed, original = [], fb.step_many
+
+            def lockstep(pres, *rest):
+                handed.append(len(pres.qpos))
+                return original(pres, *rest)
+
+            fb.step_many = lockstep
+            sh, tail = fb.schedule.shoulder_target.copy(), fb.cb.tail_controls
+            seen["pred"] = predict(fb, (right, left, offset, wind), sh, tail, 1.0)
+            seen["handed"], seen["back"] = list(handed), fb.__dict__.get("step_many") is lockstep
+            del fb.step_many
+        calls[0] += 1
+        return step(fb, right, times, t, dt, left, offset, wind, record, every)
+
+    monkeypatch.setattr(freeflight_mod, "interval", hooked)
+    bird = demo_bird()
+    table = load_table_for(bird, DEMO_MODEL, None)
+    freeflight_mod.fly(
+        PATH_PRESETS["landing"], table, bird, DEMO_MODEL, beats=4.0,
+        config=SimConfig(attitude="free"),
+    )  # fmt: skip
+    assert len(seen["pred"][0]) == 16
+    assert seen["handed"] == []
+    assert seen["back"]

@@ -68,6 +68,9 @@ def predict_root(
     n = int(round(beats * fb.config.steps_per_beat))
     rec: list = []
     with restored(fb):
+        # a flock's lockstep replaces this bird's step_many to step every bird together; a
+        # prediction is this bird's own look-ahead, stepped alone (put back on exit)
+        fb.__dict__.pop("step_many", None)
         fb.schedule.shoulder_target = np.asarray(shoulder, dtype=float)
         fb.cb.tail_controls = tail
         t = fb.time
