@@ -142,21 +142,43 @@ def _workspace(
 
 
 def _direct(fun, jac, cons, cons_jac, z0, lower, upper, maxiter, ftol, callback) -> Result:
-    """scipy 1.16-1.17's ``_minimize_slsqp`` loop without its wrappers."""
+    """scipy 1.16-1.17's ``_minimize_slsqp`` loop without its wrappers (:func:`_loop`
+    fed ``fun`` and ``cons`` in scipy's order: the constraints first at the start, for m)."""
     x = np.clip(np.asarray(z0, dtype=float), lower, upper)
-    n = x.size
     d = np.atleast_1d(np.asarray(cons(x), dtype=float)).copy()
-    m = d.size
-    state, indices, buffer, mult = _workspace(n, m, maxiter, ftol)
-    xl = np.where(np.isfinite(lower), lower, np.nan)
-    xu = np.where(np.isfinite(upper), upper, np.nan)
-    C = np.zeros((max(1, m), n), order="F")
+    started = [False]
 
     def inside(z: np.ndarray) -> np.ndarray:  # SLSQP may step 1-2 ulps outside a bound
         return np.minimum(np.maximum(z, lower), upper)
 
-    fx, g = float(fun(inside(x))), np.asarray(jac(inside(x)), dtype=float)
-    C[:] = cons_jac(x)
+    def evaluate(z: np.ndarray, d_out: np.ndarray) -> float:
+        f = float(fun(inside(z)))
+        if started[0]:
+            d_out[:] = cons(z)
+        started[0] = True  # at the start d holds cons(x) already
+        return f
+
+    def differentiate(z: np.ndarray, g: np.ndarray, C: np.ndarray) -> None:
+        g[:] = np.asarray(jac(inside(z)), dtype=float)
+        C[:] = cons_jac(z)
+
+    return _loop(evaluate, differentiate, x, d, lower, upper, maxiter, ftol,
+                 lambda z: callback(np.copy(z)))  # fmt: skip
+
+
+def _loop(evaluate, differentiate, x, d, lower, upper, maxiter, ftol, callback) -> Result:
+    """The routine's reverse-communication loop from ``x`` (inside the bounds; ``d`` the
+    constraints' array, m = its size): values (``evaluate``) and gradients
+    (``differentiate``) at the start and whenever the routine asks, ``callback`` after
+    every iteration.  Raises :class:`_Refused` where the routine does not accept the call."""
+    n, m = x.size, d.size
+    state, indices, buffer, mult = _workspace(n, m, maxiter, ftol)
+    xl = np.where(np.isfinite(lower), lower, np.nan)
+    xu = np.where(np.isfinite(upper), upper, np.nan)
+    C = np.zeros((max(1, m), n), order="F")
+    g = np.zeros(n)
+    fx = evaluate(x, d)
+    differentiate(x, g, C)
     previous = 0
     while True:
         try:
@@ -165,14 +187,12 @@ def _direct(fun, jac, cons, cons_jac, z0, lower, upper, maxiter, ftol, callback)
             raise _Refused(str(exc)) from None
         mode = state["mode"]
         if mode == 1:  # values wanted
-            fx = float(fun(inside(x)))
-            d[:] = cons(x)
+            fx = evaluate(x, d)
         elif mode == -1:  # gradients wanted
-            g = np.asarray(jac(inside(x)), dtype=float)
-            C[:] = cons_jac(x)
+            differentiate(x, g, C)
         if state["iter"] > previous:
             try:
-                callback(np.copy(x))
+                callback(x)
             except StopIteration:
                 return Result(x, False, True, int(state["iter"]), "stopped by the callback")
         if abs(mode) != 1:
@@ -210,34 +230,8 @@ def minimize_fused(
     if not _STATE["direct"]:
         return None
     x = np.clip(np.asarray(z0, dtype=float), lower, upper)
-    n = x.size
-    d = np.zeros(m)
-    state, indices, buffer, mult = _workspace(n, m, maxiter, ftol)
-    xl = np.where(np.isfinite(lower), lower, np.nan)
-    xu = np.where(np.isfinite(upper), upper, np.nan)
-    C = np.zeros((max(1, m), n), order="F")
-    g = np.zeros(n)
-    fx = evaluate(x, d)
-    differentiate(x, g, C)
-    previous = 0
-    while True:
-        try:
-            _core(state, fx, g, C, d, x, mult, xl, xu, buffer, indices)
-        except (TypeError, KeyError, ValueError):
-            _STATE["direct"] = False
-            return None
-        mode = state["mode"]
-        if mode == 1:  # values wanted
-            fx = evaluate(x, d)
-        elif mode == -1:  # gradients wanted
-            differentiate(x, g, C)
-        if state["iter"] > previous:
-            try:
-                callback(x)
-            except StopIteration:
-                return Result(x, False, True, int(state["iter"]), "stopped by the callback")
-        if abs(mode) != 1:
-            return Result(
-                x, mode == 0, False, int(state["iter"]), EXIT_MODES.get(mode, f"exit mode {mode}")
-            )
-        previous = state["iter"]
+    try:
+        return _loop(evaluate, differentiate, x, np.zeros(m), lower, upper, maxiter, ftol, callback)
+    except _Refused:
+        _STATE["direct"] = False
+        return None
