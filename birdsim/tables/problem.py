@@ -196,14 +196,14 @@ class ForceProblem(Problem):
             )
         return self._point  # type: ignore[return-value]
 
-    def _other_point(self, x: np.ndarray) -> float:
+    def _other_point(self, x: np.ndarray, norm: float | None = None) -> float:
         """:func:`other_cost` of one row, bitwise (the orientation term is linear in the
-        pitch; the distance term's norm is summed as ``np.linalg.norm`` sums it)."""
+        pitch; the distance term's norm is summed as ``np.linalg.norm`` sums it; ``norm``:
+        that norm where the caller has it already)."""
         if self.cost_weights.distance > 0 and self.previous is not None:
-            h = float(
-                self._orientation * x[self._ip]
-                + self.cost_weights.distance * math.sqrt(_sum_of_squares(x - self.previous))
-            )
+            if norm is None:
+                norm = math.sqrt(_sum_of_squares(x - self.previous))
+            h = float(self._orientation * x[self._ip] + self.cost_weights.distance * norm)
         else:
             h = float(self._orientation * x[self._ip])
         if self._incidence > 0:
@@ -245,19 +245,16 @@ class ForceProblem(Problem):
             r = np.array([vals[0] - self.Fx_demand, vals[1] - self.Fz_demand, vals[2]])
             gh = np.zeros(self.dim)
             gh[self._ip] = self._orientation
+            norm = None
             if self.cost_weights.distance > 0 and self.previous is not None:
                 # other_cost_gradient of one row, bitwise; the norm is _other_point's
                 diff = x - self.previous
                 norm = math.sqrt(_sum_of_squares(diff))
                 if norm > 0:
                     gh += self.cost_weights.distance * (diff / norm)
-                h = float(self._orientation * x[self._ip] + self.cost_weights.distance * norm)
-            else:
-                h = float(self._orientation * x[self._ip])
             if self._incidence > 0:
                 gh[self._iq] += 2.0 * self._incidence * x[self._iq]
-                h = float(h + self._incidence * _sum_of_squares(x[self._iq]))
-            return r, jr, h, gh
+            return r, jr, self._other_point(x, norm), gh
         X = x[None]
         grad_fn = getattr(self.evaluator, "gradients", None) if self.evaluator is not None else None
         if self.evaluator is not None and grad_fn is None:
