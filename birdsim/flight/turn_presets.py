@@ -15,9 +15,10 @@ bank ``atan(V^2 / (R g))``.
 
 * ``turn-90``: a level 90-degree turn to the left at slow speed, after the corridor turns
   of Ros et al. 2011 (PNAS 108:19990; pigeons at about 3-4 m/s, radius about 1 m):
-  :data:`SLOW_SPEED` 0.2 omega s (3.3 m/s for the pigeon), :data:`SLOW_RADIUS` 3 s
-  (0.99 m); centripetal acceleration 0.0133 omega^2 s = 1.11 g of the seed bird and the
-  pigeon (bank about 48 degrees).
+  :data:`SLOW_SPEED` 0.2 omega s (3.3 m/s for the pigeon), :data:`SLOW_RADIUS` 5 s
+  (1.65 m; the issue's 3 s, about 1 m, does not fly yet: docs/turning.md); centripetal
+  acceleration 0.008 omega^2 s = 0.67 g of the seed bird and the pigeon (bank about 34
+  degrees).
 * ``circle``: a level 360-degree circle to the left at cruise speed (0.5 omega s) and
   radius :data:`CIRCLE_RADIUS` 25 s (8.3 m for the pigeon; 0.83 g, bank about 40
   degrees); by the symmetry of the ramps the track leaves the loop on the line and
@@ -25,7 +26,7 @@ bank ``atan(V^2 / (R g))``.
 * ``s-turn``: at cruise speed, 45 degrees to the left then 45 to the right (radius 25 s),
   ending on the first heading, offset to the left.
 * ``u-turn``: from rest on the perch, out at slow speed, a keyhole turn (right by
-  :data:`U_TURN_THETA`, left by 180 + 2 theta degrees, right by theta; radius 3 s) and
+  :data:`U_TURN_THETA`, left by 180 + 2 theta degrees, right by theta; radius :data:`SLOW_RADIUS`) and
   back to rest on the perch it left, facing the other way. theta (about 60 degrees) and
   the outbound straight are solved so that the path ends on the perch to round-off.
 """
