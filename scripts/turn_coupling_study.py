@@ -9,9 +9,12 @@ turning ``command``), so a push up of ``dv`` comes out ``dv cos(bank)`` up and `
 sin(bank)`` into the turn (reduced accelerations, to the left).
 
     PYTHONPATH=$PWD python scripts/turn_coupling_study.py [--set MODULE.NAME=VALUE ...]
+    PYTHONPATH=$PWD python scripts/turn_coupling_study.py --bird models/pigeon.toml --preset s-turn
 
 Prints one line per wingbeat, then per window of wingbeats (2-33, 33-53, 53-end) the
-largest 3-D error, where, and the RMS; ``--set`` as ``turn_gust_study.py``'s.
+largest 3-D error, where, and the RMS; ``--set`` as ``turn_gust_study.py``'s. ``--bird``
+and ``--preset`` fly another bird (m3, free) or turning preset: lengths in the log's
+units (semispans), accelerations reduced, as for the seed bird.
 """
 
 from __future__ import annotations
@@ -43,11 +46,22 @@ def per_beat(steps: np.ndarray) -> np.ndarray:
     return np.array(rows)
 
 
-def fly_recorded() -> tuple[Any, np.ndarray]:
-    """The calm circle (``turn_gust_study.fly_circle``) with the lateral loop's and the path
-    loop's vertical correction recorded per control step (see :func:`per_beat`)."""
-    from turn_gust_study import fly_circle
+def fly_preset(bird_file: str | None = None, preset: str = "circle") -> Any:
+    """``preset`` (a turning preset) flown free with m3 by the bird of ``bird_file`` (None:
+    the seed bird; ``turn_gust_study.fly_circle`` for the seed's circle)."""
+    from birdsim.commands.common import load_bird, load_table_for
+    from birdsim.flight.freeflight import fly
+    from birdsim.flight.simulate import SimConfig
+    from birdsim.flight.turn_presets import TURN_PRESETS
 
+    bird = load_bird(bird_file)
+    table = load_table_for(bird, "m3", None)
+    return fly(TURN_PRESETS[preset], table, bird, "m3", config=SimConfig(attitude="free"))
+
+
+def fly_recorded(bird_file: str | None = None, preset: str = "circle") -> tuple[Any, np.ndarray]:
+    """The calm ``preset`` (:func:`fly_preset`) with the lateral loop's and the path loop's
+    vertical correction recorded per control step (see :func:`per_beat`)."""
     from birdsim.flight import bank, controller, freeflight
 
     steps: list[list[float]] = []
@@ -70,7 +84,7 @@ def fly_recorded() -> tuple[Any, np.ndarray]:
     freeflight.turn_command = recorded_turn  # type: ignore[assignment]
     controller.Controller.command = recorded_command  # type: ignore[method-assign]
     try:
-        result = fly_circle()
+        result = fly_preset(bird_file, preset)
     finally:
         freeflight.turn_command = turn_command  # type: ignore[assignment]
         controller.Controller.command = command  # type: ignore[method-assign]
@@ -82,8 +96,11 @@ def main() -> None:
 
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--set", action="append", default=[], help="MODULE.NAME=VALUE")
-    apply_settings(parser.parse_args().set)
-    result, steps = fly_recorded()
+    parser.add_argument("--bird", default=None, help="bird file (default: the seed bird)")
+    parser.add_argument("--preset", default="circle", help="turning preset (default: circle)")
+    args = parser.parse_args()
+    apply_settings(args.set)
+    result, steps = fly_recorded(args.bird, args.preset)
     a = {k: np.asarray(v) for k, v in result.arrays.items()}
     tb = a["t"] / TWO_PI
     e = np.stack([a["x"] - a["x_ref"], a["y"] - a["y_ref"], a["z"] - a["z_ref"]], 1)

@@ -30,3 +30,18 @@ def test_the_vertical_correction_turns_sideways_by_the_sine_of_the_bank(study):
     assert rows[0, 8] == 0.0
     assert rows[1, 8] == pytest.approx(1e-3 * math.sin(math.radians(40.0)), rel=1e-12)
     assert rows[2, 8] == pytest.approx(2e-3 * math.sin(math.radians(40.0)), rel=1e-12)
+
+
+def test_the_study_flies_the_bird_and_preset_it_is_given(study, monkeypatch):
+    flown = []
+
+    def fake_fly(bird_file, preset):
+        flown.append((bird_file, preset))
+        return "flight"
+
+    monkeypatch.setattr(study, "fly_preset", fake_fly)
+    result, steps = study.fly_recorded("models/pigeon.toml", "s-turn")
+    assert flown == [("models/pigeon.toml", "s-turn")]
+    assert result == "flight" and len(steps) == 0
+    study.fly_recorded()  # the seed bird's circle by default
+    assert flown[-1] == (None, "circle")
