@@ -25,7 +25,11 @@ from typing import Any
 
 import numpy as np
 
+from birdsim.errors import BirdsimError
+
 TWO_PI = 2.0 * math.pi
+#: The turning presets a study can fly (birdsim.flight.turn_presets.TURN_PRESETS).
+TURN_NAMES = ("circle", "s-turn", "turn-90", "u-turn")
 #: Windows of wingbeats the summary reports (the roll-in's swing, the steady turn after the
 #: gust study's 8 wingbeats, the roll-out).
 WINDOWS = ((2.0, 33.0), (33.0, 53.0), (53.0, math.inf))
@@ -97,10 +101,13 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--set", action="append", default=[], help="MODULE.NAME=VALUE")
     parser.add_argument("--bird", default=None, help="bird file (default: the seed bird)")
-    parser.add_argument("--preset", default="circle", help="turning preset (default: circle)")
+    parser.add_argument("--preset", default="circle", choices=TURN_NAMES, help="turning preset")
     args = parser.parse_args()
     apply_settings(args.set)
-    result, steps = fly_recorded(args.bird, args.preset)
+    try:
+        result, steps = fly_recorded(args.bird, args.preset)
+    except BirdsimError as exc:  # a user's mistake: one line, exit 2
+        parser.exit(2, f"{parser.prog}: error: {exc}\n")
     a = {k: np.asarray(v) for k, v in result.arrays.items()}
     tb = a["t"] / TWO_PI
     e = np.stack([a["x"] - a["x_ref"], a["y"] - a["y_ref"], a["z"] - a["z_ref"]], 1)

@@ -19,7 +19,9 @@ import importlib
 from typing import Any
 
 import numpy as np
-from turn_coupling_study import fly_preset
+from turn_coupling_study import TURN_NAMES, fly_preset
+
+from birdsim.errors import BirdsimError
 
 #: (module, constant, factor): each perturbed flight multiplies one constant (a scalar,
 #: or a tuple's middle entry) by the factor.
@@ -67,12 +69,15 @@ def main() -> None:
     from turn_gust_study import apply_settings
 
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("preset", help="turning preset (circle, s-turn, turn-90, u-turn)")
+    parser.add_argument("preset", choices=TURN_NAMES, help="turning preset")
     parser.add_argument("--bird", default=None, help="bird file (default: the seed bird)")
     parser.add_argument("--set", action="append", default=[], help="MODULE.NAME=VALUE")
     args = parser.parse_args()
     apply_settings(args.set)
-    rows = spread(args.preset, args.bird)
+    try:
+        rows = spread(args.preset, args.bird)
+    except BirdsimError as exc:  # a user's mistake: one line, exit 2
+        parser.exit(2, f"{parser.prog}: error: {exc}\n")
     for label, rms, sat in rows:
         print(f"{label:48s} {rms:.5f} ({sat})")
     print(f"median {float(np.median([r[1] for r in rows])):.5f}")
