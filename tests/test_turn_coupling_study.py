@@ -45,3 +45,9 @@ def test_the_study_flies_the_bird_and_preset_it_is_given(study, monkeypatch):
     assert result == "flight" and len(steps) == 0
     study.fly_recorded()  # the seed bird's circle by default
     assert flown[-1] == (None, "circle")
+
+
+def test_the_scripts_offer_every_turning_preset_and_no_other(study):
+    from birdsim.flight.turn_presets import TURN_PRESETS
+
+    assert sorted(study.TURN_NAMES) == sorted(TURN_PRESETS)
