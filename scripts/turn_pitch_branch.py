@@ -19,6 +19,8 @@ from typing import Any
 
 import numpy as np
 
+from birdsim.errors import BirdsimError
+
 #: Pitch offsets from the measured command (rad) the held body is measured at.
 OFFSETS = (-0.3, -0.2, -0.1, -0.05, 0.0, 0.05, 0.1, 0.2)
 
@@ -40,12 +42,12 @@ def branch_rows(fb: Any, params: np.ndarray, pitch: float, speed: float, inertia
 
 
 def main() -> None:
-    from turn_coupling_study import fly_preset
+    from turn_coupling_study import TURN_NAMES, fly_preset
 
     from birdsim.flight import attitude
 
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("preset", help="turning preset (circle, s-turn, turn-90, u-turn)")
+    parser.add_argument("preset", choices=TURN_NAMES, help="turning preset")
     parser.add_argument("--bird", default=None, help="bird file (default: the seed bird)")
     parser.add_argument("--at", type=float, default=38.0, help="wingbeat to measure from")
     args = parser.parse_args()
@@ -63,7 +65,12 @@ def main() -> None:
         return out
 
     attitude.AttitudeLoop._measure = measured
-    fly_preset(args.bird, args.preset)
+    try:
+        fly_preset(args.bird, args.preset)
+    except BirdsimError as exc:  # a user's mistake: one line, exit 2
+        parser.exit(2, f"{parser.prog}: error: {exc}\n")
+    finally:
+        attitude.AttitudeLoop._measure = measure
 
 
 if __name__ == "__main__":
