@@ -63,6 +63,15 @@ def fly_preset(bird_file: str | None = None, preset: str = "circle") -> Any:
     return fly(TURN_PRESETS[preset], table, bird, "m3", config=SimConfig(attitude="free"))
 
 
+def or_exit(parser: Any, call: Any) -> Any:
+    """``call()``, with a user's mistake (a :class:`BirdsimError`, e.g. a bad bird file)
+    reported in one line and exit 2, as the ``birdsim`` commands do."""
+    try:
+        return call()
+    except BirdsimError as exc:
+        parser.exit(2, f"{parser.prog}: error: {exc}\n")
+
+
 def fly_recorded(bird_file: str | None = None, preset: str = "circle") -> tuple[Any, np.ndarray]:
     """The calm ``preset`` (:func:`fly_preset`) with the lateral loop's and the path loop's
     vertical correction recorded per control step (see :func:`per_beat`)."""
@@ -104,10 +113,7 @@ def main() -> None:
     parser.add_argument("--preset", default="circle", choices=TURN_NAMES, help="turning preset")
     args = parser.parse_args()
     apply_settings(args.set)
-    try:
-        result, steps = fly_recorded(args.bird, args.preset)
-    except BirdsimError as exc:  # a user's mistake: one line, exit 2
-        parser.exit(2, f"{parser.prog}: error: {exc}\n")
+    result, steps = or_exit(parser, lambda: fly_recorded(args.bird, args.preset))
     a = {k: np.asarray(v) for k, v in result.arrays.items()}
     tb = a["t"] / TWO_PI
     e = np.stack([a["x"] - a["x_ref"], a["y"] - a["y_ref"], a["z"] - a["z_ref"]], 1)

@@ -19,8 +19,6 @@ from typing import Any
 
 import numpy as np
 
-from birdsim.errors import BirdsimError
-
 #: Pitch offsets from the measured command (rad) the held body is measured at.
 OFFSETS = (-0.3, -0.2, -0.1, -0.05, 0.0, 0.05, 0.1, 0.2)
 
@@ -42,7 +40,7 @@ def branch_rows(fb: Any, params: np.ndarray, pitch: float, speed: float, inertia
 
 
 def main() -> None:
-    from turn_coupling_study import TURN_NAMES, fly_preset
+    from turn_coupling_study import TURN_NAMES, fly_preset, or_exit
 
     from birdsim.flight import attitude
 
@@ -66,9 +64,7 @@ def main() -> None:
 
     attitude.AttitudeLoop._measure = measured
     try:
-        fly_preset(args.bird, args.preset)
-    except BirdsimError as exc:  # a user's mistake: one line, exit 2
-        parser.exit(2, f"{parser.prog}: error: {exc}\n")
+        or_exit(parser, lambda: fly_preset(args.bird, args.preset))
     finally:
         attitude.AttitudeLoop._measure = measure
 

@@ -19,9 +19,7 @@ import importlib
 from typing import Any
 
 import numpy as np
-from turn_coupling_study import TURN_NAMES, fly_preset
-
-from birdsim.errors import BirdsimError
+from turn_coupling_study import TURN_NAMES, fly_preset, or_exit
 
 #: (module, constant, factor): each perturbed flight multiplies one constant (a scalar,
 #: or a tuple's middle entry) by the factor.
@@ -74,10 +72,7 @@ def main() -> None:
     parser.add_argument("--set", action="append", default=[], help="MODULE.NAME=VALUE")
     args = parser.parse_args()
     apply_settings(args.set)
-    try:
-        rows = spread(args.preset, args.bird)
-    except BirdsimError as exc:  # a user's mistake: one line, exit 2
-        parser.exit(2, f"{parser.prog}: error: {exc}\n")
+    rows = or_exit(parser, lambda: spread(args.preset, args.bird))
     for label, rms, sat in rows:
         print(f"{label:48s} {rms:.5f} ({sat})")
     print(f"median {float(np.median([r[1] for r in rows])):.5f}")

@@ -26,9 +26,10 @@ bank ``atan(V^2 / (R g))``.
 * ``s-turn``: at cruise speed, 45 degrees to the left then 45 to the right (radius 25 s),
   ending on the first heading, offset to the left.
 * ``u-turn``: from rest on the perch, out at slow speed, a keyhole turn (right by
-  :data:`U_TURN_THETA`, left by 180 + 2 theta degrees, right by theta; radius :data:`SLOW_RADIUS`) and
-  back to rest on the perch it left, facing the other way. theta (about 60 degrees) and
-  the outbound straight are solved so that the path ends on the perch to round-off.
+  :data:`U_TURN_THETA`, left by 180 + 2 theta degrees, right by theta; radius
+  :data:`SLOW_RADIUS`) and back to rest on the perch it left, facing the other way.
+  theta (about 60 degrees) and the outbound straight are solved so that the path ends on
+  the perch to round-off.
 """
 
 from __future__ import annotations
