@@ -135,7 +135,8 @@ def register(sub: argparse._SubParsersAction) -> None:
         type=int,
         default=BuildSettings.smooth_rounds,
         help="regularising pass: at most this many red-black rounds (default 4; it stops "
-        "earlier after a round that removes no zig-zag)",
+        "earlier after a round that removes no zig-zag, with --smooth-fixed-point after one "
+        "that changes nothing)",
     )
     b.add_argument(
         "--smooth-median",

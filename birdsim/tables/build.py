@@ -33,8 +33,9 @@ a rerun with the same configuration skips the finished tasks.
 
 This module is the orchestration only; the parts live beside it: :mod:`.grid`
 (configuration), :mod:`.sweeps` (the continuation passes), :mod:`.checkpoints`,
-:mod:`.runner` (executors and the task loop) and :mod:`.finish` (final check, provenance,
-the final write).  Their public names are re-exported here.
+:mod:`.runner` (executors and the task loop), :mod:`.regularise` and :mod:`.plane_moves`
+(the smoothing after the sweeps) and :mod:`.finish` (final check, provenance, the final
+write).  Their public names are re-exported here.
 """
 
 from __future__ import annotations
