@@ -65,14 +65,17 @@ bench: setup
 	$(BIN)/python benchmarks/run.py
 
 # Rebuild the shipped lookup tables tables/<model>.npz + .json (11^3 grid; a few minutes in all).
-# m5's regularising pass also starts from the neighbours' median and runs up to 8 rounds
-# (it still gains in rounds 5-7; base..m4 stop by themselves after 3-4): docs/tables.md, issue 24.
+# m5 (issue 24, docs/tables.md): the incidence tie-break w_q 1e-4, a smoothing tolerance of
+# 0.03, the regularising pass also starting from the neighbours' median and run to its fixed
+# point (at most 32 rounds; 15 taken), then the plane moves. Its table was built under numpy's
+# X86_V3 dispatch: NPY_DISABLE_CPU_FEATURES="X86_V4 AVX512_ICL AVX512_SPR" on an AVX-512 CPU.
 TABLE_MODELS := base m1 m2 m3 m4
 tables: setup
 	@for m in $(TABLE_MODELS); do \
 	  $(BIN)/birdsim tables build --model $$m --out tables/$$m.npz --force || exit $$?; \
 	done
-	$(BIN)/birdsim tables build --model m5 --smooth-rounds 8 --smooth-median --out tables/m5.npz --force
+	$(BIN)/birdsim tables build --model m5 --incidence-weight 1e-4 --smooth-tol 0.03 --smooth-median \
+	  --smooth-fixed-point --smooth-rounds 32 --smooth-planes --out tables/m5.npz --force
 
 # Rebuild the demo model's flight tables (finer grid; docs/flight.md): the seed bird's and the
 # pigeon's (tables build reduces a bird to its reduced bird: forces in table units); ~2 min each

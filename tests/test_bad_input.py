@@ -166,6 +166,8 @@ CASES: list[tuple[str, Any, str] | Any] = [
     ("build/incidence-params-unknown", [*BUILD, "--incidence-weight", "1e-4", "--incidence-params", "pitch,fold_amp"], "--incidence-params 'pitch,fold_amp' is invalid; allowed: comma-separated parameters of base"),
     ("build/reach-tol-zero", [*BUILD, "--reach-tol", "0"], "--reach-tol"),
     ("build/smooth-rounds-zero", [*BUILD, "--smooth-rounds", "0"], "--smooth-rounds 0 is invalid; allowed: an integer >= 1"),
+    ("build/smooth-fixed-point-without-pass", [*BUILD, "--smooth-tol", "0", "--smooth-fixed-point"], "--smooth-fixed-point with --smooth-tol 0 is invalid; allowed: with a regularising pass"),
+    ("build/smooth-planes-without-pass", [*BUILD, "--smooth-tol", "0", "--smooth-planes"], "--smooth-planes with --smooth-tol 0 is invalid; allowed: with a regularising pass"),
     ("build/out-exists", [*BUILD, "--out", "{w}/table.npz"], "--out '{w}/table.npz' exists"),
     ("build/out-is-a-folder", [*BUILD, "--out", "{w}/folder.npz", "--force"], "--out '{w}/folder.npz' is a directory"),
     ("build/out-parent-is-a-file", [*BUILD, "--out", "{w}/malformed.toml/t.npz"], "cannot be created"),

@@ -4,6 +4,8 @@ processes."""
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 
@@ -103,6 +105,27 @@ def test_the_neighbours_median_is_a_target_where_three_or_more_are_reachable():
     on = BuildConfig("base", Grid.default(), settings=BuildSettings(smooth_median=True))
     assert "smooth_median" not in off.to_dict()["solver"]
     assert on.to_dict()["solver"]["smooth_median"] is True
+
+
+def test_the_pass_to_its_fixed_point_stops_by_itself_and_is_recorded_only_when_on(pair):
+    """Issue 24: ``smooth_fixed_point`` runs rounds until one changes no cell (not the
+    default's stop after a round that removes no zig-zag cell), well within its cap, and
+    leaves at most the default's zig-zags; the setting is recorded only when on (with
+    ``smooth_planes``), so that the other tables keep their configuration digest."""
+    _, smooth = pair
+    st = BuildSettings(smooth_fixed_point=True, smooth_rounds=32)
+    fixed = build_table(BuildConfig("base", GRID, settings=st), jobs=1)
+    rounds = fixed.meta["regularising_pass"]["rounds"]
+    assert smooth.meta["regularising_pass"]["rounds"] < rounds < 32  # here 2 and 3
+    assert table_smoothness(fixed).zigzag_triples <= table_smoothness(smooth).zigzag_triples
+    again = build_table(
+        BuildConfig("base", GRID, settings=replace(st, smooth_rounds=rounds - 1)), jobs=1
+    )
+    assert again.params.tobytes() == fixed.params.tobytes()  # the last round changed nothing
+    off = BuildConfig("base", GRID).to_dict()["solver"]
+    assert "smooth_fixed_point" not in off and "smooth_planes" not in off
+    on = BuildConfig("base", GRID, settings=replace(st, smooth_planes=True)).to_dict()["solver"]
+    assert on["smooth_fixed_point"] is True and on["smooth_planes"] is True
 
 
 # ---- a choice that round-off cannot flip (issue 21) ------------------------------------

@@ -135,13 +135,27 @@ def register(sub: argparse._SubParsersAction) -> None:
         type=int,
         default=BuildSettings.smooth_rounds,
         help="regularising pass: at most this many red-black rounds (default 4; it stops "
-        "earlier after a round that removes no zig-zag)",
+        "earlier after a round that removes no zig-zag, with --smooth-fixed-point after one "
+        "that changes nothing)",
     )
     b.add_argument(
         "--smooth-median",
         action="store_true",
         help="regularising pass: also start from the median of a cell's neighbours (the "
         "shipped m5 table's setting; docs/tables.md)",
+    )
+    b.add_argument(
+        "--smooth-fixed-point",
+        action="store_true",
+        help="regularising pass: run rounds until one changes no cell (at most "
+        "--smooth-rounds) instead of stopping after one that removes no zig-zag "
+        "(the shipped m5 table's setting; docs/tables.md)",
+    )
+    b.add_argument(
+        "--smooth-planes",
+        action="store_true",
+        help="after the regularising pass, move planes of zig-zag middles together "
+        "(birdsim/tables/plane_moves.py; the shipped m5 table's setting)",
     )
     b.add_argument(
         "--incidence-weight",
@@ -211,6 +225,15 @@ def _check_build_options(args: argparse.Namespace) -> None:
         raise BirdsimError(
             f"--smooth-tol {args.smooth_tol:g} is invalid; allowed: a number >= 0 (0 = no regularising pass)"
         )
+    for flag, on in (
+        ("--smooth-fixed-point", args.smooth_fixed_point),
+        ("--smooth-planes", args.smooth_planes),
+    ):
+        if on and not args.smooth_tol > 0:
+            raise BirdsimError(
+                f"{flag} with --smooth-tol {args.smooth_tol:g} is invalid; allowed: with a "
+                "regularising pass (--smooth-tol > 0)"
+            )
     if args.smooth_rounds < 1:
         raise BirdsimError(
             f"--smooth-rounds {args.smooth_rounds} is invalid; allowed: an integer >= 1"
@@ -287,6 +310,8 @@ def run_build(args: argparse.Namespace) -> int:
         smooth_tol=args.smooth_tol,
         smooth_rounds=args.smooth_rounds,
         smooth_median=args.smooth_median,
+        smooth_fixed_point=args.smooth_fixed_point,
+        smooth_planes=args.smooth_planes,
     )
     out = Path(args.out) if args.out else Path("tables") / f"{model.name}.npz"
     npz_path, json_path = table_paths(out)

@@ -33,8 +33,9 @@ a rerun with the same configuration skips the finished tasks.
 
 This module is the orchestration only; the parts live beside it: :mod:`.grid`
 (configuration), :mod:`.sweeps` (the continuation passes), :mod:`.checkpoints`,
-:mod:`.runner` (executors and the task loop) and :mod:`.finish` (final check, provenance,
-the final write).  Their public names are re-exported here.
+:mod:`.runner` (executors and the task loop), :mod:`.regularise` and :mod:`.plane_moves`
+(the smoothing after the sweeps) and :mod:`.finish` (final check, provenance, the final
+write).  Their public names are re-exported here.
 """
 
 from __future__ import annotations
@@ -63,6 +64,7 @@ from birdsim.tables.grid import (
     sub_grid,
 )
 from birdsim.tables.lookup import LookupTable
+from birdsim.tables.plane_moves import plane_moves
 from birdsim.tables.regularise import CandidateMemo, smooth_cells, zigzag_cells
 from birdsim.tables.runner import _ignore_sigint, _InlineExecutor, _run, _stop_workers
 from birdsim.tables.sweeps import (
@@ -165,7 +167,9 @@ def build_table(
     try:
         X, cost, evals, conv, X_slices = _sweep(cfg, executor, ckpt, tick)
         if cfg.settings.smooth_tol > 0:
-            X, evals, smoothing = _regularise(cfg, executor, ckpt, X, cost, evals)
+            X, evals, smoothing, best = _regularise(cfg, executor, ckpt, X, cost, evals)
+            if cfg.settings.smooth_planes:
+                X, evals, smoothing["plane_moves"] = plane_moves(cfg, X, best, evals)
     except BaseException:
         # Ctrl-C or a failed task: finished parts are saved; stop our workers now (a
         # second Ctrl-C inside shutdown(wait=True) used to leave them alive and the
@@ -327,10 +331,12 @@ def _regularise(
     X: np.ndarray,
     cost: np.ndarray,
     evals: np.ndarray,
-) -> tuple[np.ndarray, np.ndarray, dict[str, Any]]:
+) -> tuple[np.ndarray, np.ndarray, dict[str, Any], np.ndarray]:
     """The regularising pass (:mod:`birdsim.tables.regularise`): red-black rounds over
-    the middle cells of zig-zags, tasks of a few cells of one colour.  Returns the new
-    parameters, the evaluations and a summary for the provenance."""
+    the middle cells of zig-zags, tasks of a few cells of one colour, until a round
+    removes no zig-zag cell (``smooth_fixed_point``: until a round changes no cell and
+    no best cost).  Returns the new parameters, the evaluations, a summary for the
+    provenance and the best cost found per cell (at n_search)."""
     model = get_model(cfg.model)
     names, st = model.param_names, cfg.settings
     X, evals = X.copy(), evals.copy()
@@ -349,7 +355,7 @@ def _regularise(
     }
     memo = CandidateMemo()
     for r in range(st.smooth_rounds):
-        worked = False
+        worked, before = False, (X.copy(), best.copy())
         summary["zigzag_cells"].append(len(zigzag_cells(names, X, ok)))
         for colour in (0, 1):
             mids = zigzag_cells(names, X, ok)
@@ -378,8 +384,11 @@ def _regularise(
                 best[idx] = res["best"]
                 evals[idx] += res["evaluations"]
         summary["rounds"] = r + 1
-        if not worked or summary["zigzag_cells"][-1] <= len(zigzag_cells(names, X, ok)):
+        if st.smooth_fixed_point:
+            if np.array_equal(X, before[0]) and np.array_equal(best, before[1]):
+                break  # a round that changed nothing: the next would repeat it
+        elif not worked or summary["zigzag_cells"][-1] <= len(zigzag_cells(names, X, ok)):
             break  # no zig-zag left, or a round that removed none (the next would repeat it)
     summary["zigzag_cells"].append(len(zigzag_cells(names, X, ok)))
     summary["seconds"] = round(time.perf_counter() - t0, 3)
-    return X, evals, summary
+    return X, evals, summary, best

@@ -147,6 +147,12 @@ class BuildSettings:
     # ... also start from the parameter-wise median of a cell's neighbours (issue 24; the
     # m5 table's; off by default, so the other tables rebuild bit for bit: docs/tables.md)
     smooth_median: bool = False
+    # ... run the pass to its fixed point: rounds until one changes no cell (at most
+    # smooth_rounds) instead of stopping after a round that removes no zig-zag cell; then
+    # the plane moves (birdsim/tables/plane_moves.py).  Both issue 24's m5 table's, off by
+    # default and recorded only when on (docs/tables.md)
+    smooth_fixed_point: bool = False
+    smooth_planes: bool = False
 
     def __post_init__(self) -> None:
         if not (0.0 < self.relax <= 1.0):
@@ -156,7 +162,13 @@ class BuildSettings:
                 raise BirdsimError(
                     f"{name}={getattr(self, name)!r} is invalid; allowed: an integer >= 2"
                 )
-        for name in ("polish_rule", "v_passes", "smooth_median"):
+        for name in (
+            "polish_rule",
+            "v_passes",
+            "smooth_median",
+            "smooth_fixed_point",
+            "smooth_planes",
+        ):
             if not isinstance(getattr(self, name), bool):
                 raise BirdsimError(
                     f"{name}={getattr(self, name)!r} is invalid; allowed: True or False"
@@ -182,11 +194,13 @@ class BuildSettings:
 
 
 def _solver_dict(settings: BuildSettings) -> dict[str, Any]:
-    """The settings as recorded; ``smooth_median`` only when on, so that every table built
-    before it existed keeps its configuration digest (and its checkpoints)."""
+    """The settings as recorded; ``smooth_median``, ``smooth_fixed_point`` and
+    ``smooth_planes`` only when on, so that every table built before they existed keeps
+    its configuration digest (and its checkpoints)."""
     out = asdict(settings)
-    if not out["smooth_median"]:
-        del out["smooth_median"]
+    for name in ("smooth_median", "smooth_fixed_point", "smooth_planes"):
+        if not out[name]:
+            del out[name]
     return out
 
 
