@@ -1,4 +1,5 @@
-"""``make bench``: every ``benchmarks/bench_*.py`` in one run, with the machine noted.
+"""``make bench``: every ``benchmarks/bench_*.py`` in one run, with the machine noted
+(``python benchmarks/run.py tables core``: only those sections).
 
 Each bench module exposes ``main() -> None`` and prints its own lines: ratios measured
 side by side in this run, and absolute figures.
@@ -43,10 +44,21 @@ def load() -> str:
 
 def main(argv: list[str]) -> int:
     here = Path(__file__).parent
+    paths = sorted(here.glob("bench_*.py"))
+    names = [path.stem.removeprefix("bench_") for path in paths]
     wanted = set(argv)
+    if wanted & {"-h", "--help"}:
+        print(f"usage: python benchmarks/run.py [SECTION ...]; sections: {', '.join(names)}")
+        return 0
+    for bad in sorted(wanted - set(names)):
+        print(
+            f"benchmarks/run.py: section {bad!r} is unknown; allowed: none (all) or any of "
+            f"{', '.join(names)}",
+            file=sys.stderr,
+        )
+        return 2
     print(f"machine: {machine()}")
-    for path in sorted(here.glob("bench_*.py")):
-        name = path.stem.removeprefix("bench_")
+    for path, name in zip(paths, names):
         if wanted and name not in wanted:
             continue
         print(f"\n== {name} == ({load()})", flush=True)
