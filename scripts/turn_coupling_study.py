@@ -50,17 +50,17 @@ def per_beat(steps: np.ndarray) -> np.ndarray:
     return np.array(rows)
 
 
-def fly_preset(bird_file: str | None = None, preset: str = "circle") -> Any:
-    """``preset`` (a turning preset) flown free with m3 by the bird of ``bird_file`` (None:
-    the seed bird; ``turn_gust_study.fly_circle`` for the seed's circle)."""
+def fly_preset(bird_file: str | None = None, preset: str = "circle", model: str = "m3") -> Any:
+    """``preset`` (a turning preset) flown free with ``model`` (default m3) by the bird of
+    ``bird_file`` (None: the seed bird; ``turn_gust_study.fly_circle`` for the seed's circle)."""
     from birdsim.commands.common import load_bird, load_table_for
     from birdsim.flight.freeflight import fly
     from birdsim.flight.simulate import SimConfig
     from birdsim.flight.turn_presets import TURN_PRESETS
 
     bird = load_bird(bird_file)
-    table = load_table_for(bird, "m3", None)
-    return fly(TURN_PRESETS[preset], table, bird, "m3", config=SimConfig(attitude="free"))
+    table = load_table_for(bird, model, None)
+    return fly(TURN_PRESETS[preset], table, bird, model, config=SimConfig(attitude="free"))
 
 
 def or_exit(parser: Any, call: Any) -> Any:

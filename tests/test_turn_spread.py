@@ -23,7 +23,7 @@ def test_each_flight_sees_one_nudged_constant_and_all_are_restored(spread, monke
     lateral, axes = bank.LATERAL_BEATS, turning.FOURTH_STAGE_TURN_AXIS_BEATS
     seen = []
 
-    def fake(preset, bird_file):
+    def fake(preset, bird_file, model="m3"):
         seen.extend([bank.LATERAL_BEATS, turning.FOURTH_STAGE_TURN_AXIS_BEATS[1]])
         return 0.005 * len(seen), 0
 
@@ -34,3 +34,15 @@ def test_each_flight_sees_one_nudged_constant_and_all_are_restored(spread, monke
         [lateral, axes[1], 5.99, axes[1], 6.01, axes[1], lateral, 2.49, lateral, 2.51]
     )
     assert bank.LATERAL_BEATS == lateral and turning.FOURTH_STAGE_TURN_AXIS_BEATS == axes
+
+
+def test_every_flight_is_flown_with_the_model_asked_for(spread, monkeypatch):
+    models = []
+
+    def fake(preset, bird_file, model="m3"):
+        models.append(model)
+        return 0.01, 0
+
+    monkeypatch.setattr(spread, "fly_figures", fake)
+    spread.spread("circle", None, "m5")
+    assert models == ["m5"] * 5

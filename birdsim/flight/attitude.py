@@ -60,6 +60,7 @@ from birdsim.flight.attitude_stiffness import measured_pitch_stiffness
 from birdsim.flight.body_attitude import FIT_BEATS, euler_zyx, wingbeat_fit_matrix
 from birdsim.flight.bounded_lsq import bounded_lsq, vector_norm
 from birdsim.flight.rocking_share import RockingShare
+from birdsim.flight.wing_momentum import with_momentum_rate
 from birdsim.mujoco.tail import TailControls
 
 #: Wingbeats per time constant of the attitude loop.  Measured (seed bird): without the
@@ -297,6 +298,8 @@ class AttitudeLoop:
             self.u = np.zeros(len(INPUTS))
             self.saturated = False
             return split_inputs(names, params, self.u)
+        # the wings' mean angular momentum's change, supplied by the air (wing_momentum)
+        acc_cmd, pitch_demand = with_momentum_rate(self, params, dt, acc_cmd, pitch_demand)
         jp = pitch_cmd if jac_pitch is None else jac_pitch
         turn = np.zeros(3) if turn_rates is None else np.asarray(turn_rates, dtype=float)
         at = params if jac_params is None else jac_params
@@ -378,23 +381,8 @@ class AttitudeLoop:
 
 
 __all__ = [
-    "ATTITUDE_BEATS",
-    "AXIS_BEATS",
-    "LATERAL_INTEGRAL_RAD",
-    "ROLL_BEATS",
-    "INPUTS",
-    "AttitudeLoop",
-    "attitude_gains",
-    "euler_zyx",
-    "FIT_BEATS",
-    "wingbeat_fit_matrix",
-    "integral_bound",
-    "JAC_SAMPLES",
-    "JAC_STEP",
-    "SHOULDER_BOUND",
-    "damped_gains",
-    "measured_jacobian",
-    "measured_rate_derivatives",
-    "measured_with_rocking",
-    "split_inputs",
-]
+    "ATTITUDE_BEATS", "AXIS_BEATS", "LATERAL_INTEGRAL_RAD", "ROLL_BEATS", "INPUTS",
+    "AttitudeLoop", "attitude_gains", "euler_zyx", "FIT_BEATS", "wingbeat_fit_matrix",
+    "integral_bound", "JAC_SAMPLES", "JAC_STEP", "SHOULDER_BOUND", "damped_gains",
+    "measured_jacobian", "measured_rate_derivatives", "measured_with_rocking", "split_inputs",
+]  # fmt: skip
