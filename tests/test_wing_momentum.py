@@ -47,7 +47,6 @@ def test_the_rate_is_the_change_over_the_step_and_ignores_round_off(monkeypatch)
     assert rate.step(None, np.zeros(1), 0.5) == pytest.approx([0.0, 0.006, 0.0])
 
 
-@pytest.mark.slow
 def test_the_pigeon_s_free_m5_landing_stays_on_its_path():
     from birdsim.flight.flightlog import log_arrays, summary
     from birdsim.flight.freeflight import fly

@@ -60,7 +60,7 @@ from birdsim.flight.attitude_stiffness import measured_pitch_stiffness
 from birdsim.flight.body_attitude import FIT_BEATS, euler_zyx, wingbeat_fit_matrix
 from birdsim.flight.bounded_lsq import bounded_lsq, vector_norm
 from birdsim.flight.rocking_share import RockingShare
-from birdsim.flight.wing_momentum import with_momentum_rate
+from birdsim.flight.wing_momentum import WingMomentumRate, with_momentum_rate
 from birdsim.mujoco.tail import TailControls
 
 #: Wingbeats per time constant of the attitude loop.  Measured (seed bird): without the
@@ -168,6 +168,7 @@ class AttitudeLoop:
         lateral_integral_rad: float | None = LATERAL_INTEGRAL_RAD,
     ):
         self.fb = fb
+        self.wing_momentum = WingMomentumRate()  # the wings' mean angular momentum's rate
         self.lateral_integral_rad = lateral_integral_rad
         self.enabled = enabled
         self.gains = attitude_gains(fb.red.omega, beats)

@@ -72,10 +72,11 @@ def with_momentum_rate(
     loop, params: np.ndarray, dt: float, acc_cmd: object, pitch_demand: float | None
 ) -> tuple[object, float | None]:
     """``(acc_cmd, pitch_demand)`` of :meth:`birdsim.flight.attitude.AttitudeLoop.update`
-    with the wings' momentum rate added: ``h' / I`` to the commanded acceleration per
-    axis (the demand ``I (acc + ...)`` gains ``h'``) and ``h'_y`` to the pitch section's
+    with the wings' momentum rate (the loop's ``wing_momentum``, a
+    :class:`WingMomentumRate`) added: ``h' / I`` to the commanded acceleration per axis
+    (the demand ``I (acc + ...)`` gains ``h'``) and ``h'_y`` to the pitch section's
     moment demand; unchanged where the rate is zero (base to m3: bit for bit)."""
-    rate = loop.__dict__.setdefault("wing_momentum", WingMomentumRate()).step(loop.fb, params, dt)
+    rate = loop.wing_momentum.step(loop.fb, params, dt)
     if not rate.any():
         return acc_cmd, pitch_demand
     base = np.zeros(3) if acc_cmd is None else np.asarray(acc_cmd, dtype=float)
