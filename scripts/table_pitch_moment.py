@@ -20,6 +20,8 @@ from typing import Any
 
 import numpy as np
 
+from birdsim.physics.kinematics import MODELS
+
 #: The default grid (table units): Fx and Fz around the pigeon's cruise and turns.
 FX = (-0.1, 0.1, 0.025)
 FZ = (-0.35, -0.1, 0.05)
@@ -73,7 +75,9 @@ def main() -> None:
 
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--bird", default="models/pigeon.toml", help="bird file (gravity)")
-    parser.add_argument("--model", default="m5", help="kinematic model (default m5)")
+    parser.add_argument(
+        "--model", default="m5", choices=list(MODELS), help="kinematic model (default m5)"
+    )
     parser.add_argument("--speed", type=float, default=0.5, help="airspeed, semispan omega")
     args = parser.parse_args()
     or_exit(parser, lambda: report(args.bird, args.model, args.speed))

@@ -22,6 +22,8 @@ from typing import Any
 import numpy as np
 from turn_coupling_study import TURN_NAMES, fly_preset, or_exit
 
+from birdsim.physics.kinematics import MODELS
+
 #: (module, constant, factor): each perturbed flight multiplies one constant (a scalar,
 #: or a tuple's middle entry) by the factor.
 PERTURBATIONS = (
@@ -71,7 +73,9 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("preset", choices=TURN_NAMES, help="turning preset")
     parser.add_argument("--bird", default=None, help="bird file (default: the seed bird)")
-    parser.add_argument("--model", default="m3", help="kinematic model (default m3)")
+    parser.add_argument(
+        "--model", default="m3", choices=list(MODELS), help="kinematic model (default m3)"
+    )
     parser.add_argument("--set", action="append", default=[], help="MODULE.NAME=VALUE")
     args = parser.parse_args()
     apply_settings(args.set)
