@@ -25,7 +25,7 @@ from __future__ import annotations
 import mujoco
 import numpy as np
 
-from birdsim.flight.attitude_jacobians import JAC_SAMPLES, SEED_AXES, _hold, held_body
+from birdsim.flight.attitude_jacobians import JAC_SAMPLES, SEED_AXES, held_prescription
 from birdsim.mujoco.model import pitch_quat
 
 #: A change of the mean below this (table units of angular momentum) is round-off of a
@@ -33,34 +33,62 @@ from birdsim.mujoco.model import pitch_quat
 ROUNDOFF = 1e-12
 
 
-def mean_wing_momentum(fb, params: np.ndarray) -> np.ndarray:
+def mean_wing_momentum(fb, params: np.ndarray, data: mujoco.MjData | None = None) -> np.ndarray:
     """The wingbeat-mean angular momentum (3,) of the wings beating ``params`` relative
     to the torso held at rest (body level, no airspeed), about the whole bird's centre
     of mass, seed body axes, over :data:`birdsim.flight.attitude_jacobians.JAC_SAMPLES`
-    phases; ``fb`` a :class:`birdsim.flight.simulate.FreeBird`."""
+    phases; ``fb`` a :class:`birdsim.flight.simulate.FreeBird`, ``data`` a scratch
+    ``MjData`` of its model (None: a new one).  Only the kinematics are computed (no
+    forces): positions, centres of mass, velocities, then the subtree's momentum."""
+    m = fb.m
+    d = mujoco.MjData(m) if data is None else data
+    pres, _ = held_prescription(fb, params, None, JAC_SAMPLES)
+    quat = pitch_quat(0.0)
+    root = int(m.jnt_bodyid[0])  # the free joint's body: the whole bird's subtree
     h = np.zeros(3)
-    quat, still = pitch_quat(0.0), np.zeros(3)
-    with held_body(fb, params, None) as (m, d, pres):
-        root = int(m.jnt_bodyid[0])  # the free joint's body: the whole bird's subtree
-        for k in range(JAC_SAMPLES):
-            _hold(m, d, pres.qpos[k], pres.qvel[k], quat, 0.0, still)
-            mujoco.mj_subtreeVel(m, d)
-            h += d.subtree_angmom[root]
+    for k in range(JAC_SAMPLES):
+        d.qpos[:] = pres.qpos[k]
+        d.qvel[:] = pres.qvel[k]
+        d.qpos[:3] = (0.0, 0.0, 6.0)
+        d.qpos[3:7] = quat
+        d.qvel[:6] = 0.0  # the torso at rest
+        mujoco.mj_kinematics(m, d)
+        mujoco.mj_comPos(m, d)
+        mujoco.mj_comVel(m, d)
+        mujoco.mj_subtreeVel(m, d)
+        h += d.subtree_angmom[root]
     return h / JAC_SAMPLES * SEED_AXES
+
+
+def has_mean_momentum(names: tuple[str, ...]) -> bool:
+    """Whether a wingbeat of a model with parameters ``names`` can have a mean wing
+    angular momentum: only with joints beyond the shoulder (m4's wrist, m5's fold).
+    The shoulder's flap, twist, sweep and stroke plane are sinusoids whose rates are odd
+    about mid-stroke, so their mean is zero (base to m3: below 2e-17, the tests)."""
+    return "wrist_amp" in names or "fold_amp" in names
 
 
 class WingMomentumRate:
     """Per flight: the rate of change of the commanded wingbeat's mean wing angular
-    momentum between two control steps (:meth:`step`)."""
+    momentum between two control steps (:meth:`step`).  ``active`` None: decided at the
+    first step by :func:`has_mean_momentum` (False: every rate zero, nothing computed)."""
 
-    def __init__(self) -> None:
+    def __init__(self, active: bool | None = None) -> None:
+        self.active = active
         self.last: np.ndarray | None = None
+        self._data: mujoco.MjData | None = None
 
     def step(self, fb, params: np.ndarray, dt: float) -> np.ndarray:
         """``dh/dt`` (3,) from the last step's wingbeat to ``params`` over ``dt``
         (reduced time); zero on the first step and on axes whose change is round-off
         (:data:`ROUNDOFF`)."""
-        h = mean_wing_momentum(fb, params)
+        if self.active is None:
+            self.active = has_mean_momentum(fb.schedule.names)
+        if not self.active:
+            return np.zeros(3)
+        if self._data is None and fb is not None:
+            self._data = mujoco.MjData(fb.m)
+        h = mean_wing_momentum(fb, params, self._data)
         last, self.last = self.last, h
         if last is None or dt <= 0.0:
             return np.zeros(3)
@@ -84,4 +112,10 @@ def with_momentum_rate(
     return acc, (None if pitch_demand is None else pitch_demand + float(rate[1]))
 
 
-__all__ = ["ROUNDOFF", "WingMomentumRate", "mean_wing_momentum", "with_momentum_rate"]
+__all__ = [
+    "ROUNDOFF",
+    "WingMomentumRate",
+    "has_mean_momentum",
+    "mean_wing_momentum",
+    "with_momentum_rate",
+]
