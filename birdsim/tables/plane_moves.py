@@ -31,7 +31,6 @@ deterministic: components in C order, SLSQP answers memoised by (cell, target, f
 from __future__ import annotations
 
 import time
-from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -40,8 +39,13 @@ from birdsim.physics.kinematics import KinematicModel, get_model
 from birdsim.tables.cost import forces
 from birdsim.tables.finish import demand_grid
 from birdsim.tables.grid import BuildConfig
-from birdsim.tables.optimize import ForceProblem, slsqp
-from birdsim.tables.regularise import FORCE_TIE, TARGET_QUANTUM_RAD, candidate_costs
+from birdsim.tables.optimize import slsqp
+from birdsim.tables.regularise import (
+    FORCE_TIE,
+    TARGET_QUANTUM_RAD,
+    candidate_costs,
+    demand_problem,
+)
 from birdsim.tables.smoothness import ZIGZAG_RAD, zigzags
 
 #: Parameters free in every plane move besides the moved ones (those the model has): the
@@ -59,6 +63,12 @@ Cell = tuple[int, ...]
 def zigzag_triples(names: tuple[str, ...], X: np.ndarray, ok: np.ndarray) -> int:
     """Zig-zag triples of ``X`` (grid x d, rad) over every axis, among ``ok`` cells."""
     return sum(int(zigzags(names, X, ok, k)[1].sum()) for k in range(ok.ndim))
+
+
+def along(cell: Cell, axis: int) -> tuple[Cell, Cell]:
+    """The cell's two neighbours along ``axis`` (one step down, one up; maybe off the grid)."""
+    head, i, tail = cell[:axis], cell[axis], cell[axis + 1 :]
+    return head + (i - 1,) + tail, head + (i + 1,) + tail
 
 
 def components(middles: set[Cell], axis: int) -> list[list[Cell]]:
@@ -112,8 +122,7 @@ class _Mover:
     def moved_params(self, cell: Cell, axis: int) -> np.ndarray | None:
         """The parameters of ``cell`` that zig-zag along ``axis`` (bool, d), or None when
         the cell or one of its two neighbours along the axis is off the grid or not ok."""
-        a = cell[:axis] + (cell[axis] - 1,) + cell[axis + 1 :]
-        b = cell[:axis] + (cell[axis] + 1,) + cell[axis + 1 :]
+        a, b = along(cell, axis)
         if a[axis] < 0 or b[axis] >= self.ok.shape[axis]:
             return None
         if not (self.ok[a] and self.ok[b] and self.ok[cell]):
@@ -134,26 +143,14 @@ class _Mover:
         key = (cell, target.tobytes(), free.tobytes())
         if key in self._memo:
             return self._memo[key]
-        fx, fz, v, vc = (tuple(self.D[cell]) + (0.0,))[:4]
-        st, w = self.st, self.cfg.weights
-        prob = ForceProblem(
-            self.model,
-            fx,
-            fz,
-            v,
-            weights=replace(w, distance=w.distance + st.smooth_nu),
-            bird=self.cfg.bird,
-            previous=target,
-            n=st.n_search,
-            climb=vc,
-        )
+        prob = demand_problem(self.cfg, self.model, self.D[cell], previous=target)
         lo0, hi0 = self.model.bounds
         lo, hi = prob.lower.copy(), prob.upper.copy()
         pin = ~free
         lo[pin] = np.maximum(lo0[pin], target[pin] - PIN_HALF_WIDTH_RAD)
         hi[pin] = np.minimum(hi0[pin], target[pin] + PIN_HALF_WIDTH_RAD)
         prob.lower, prob.upper = lo, hi
-        x = slsqp(prob, np.clip(target, lo, hi), maxiter=st.maxiter).x.copy()
+        x = slsqp(prob, np.clip(target, lo, hi), maxiter=self.st.maxiter).x.copy()
         x[pin] = target[pin]
         self.evals[cell] += prob.evaluations
         self._memo[key] = x
@@ -162,25 +159,14 @@ class _Mover:
     def try_cell(self, cell: Cell, axis: int, sel: np.ndarray) -> tuple[np.ndarray, float] | None:
         """The cell's answer to its midpoint target along ``axis`` and its cost (n_search),
         or None when the answer is not admissible."""
-        a = cell[:axis] + (cell[axis] - 1,) + cell[axis + 1 :]
-        b = cell[:axis] + (cell[axis] + 1,) + cell[axis + 1 :]
+        a, b = along(cell, axis)
         target = self.X[cell].copy()  # the pinned parameters keep their exact values
         mid = 0.5 * (self.X[a] + self.X[b])
         target[sel] = np.round(mid[sel] / TARGET_QUANTUM_RAD) * TARGET_QUANTUM_RAD
         x = self._solve(cell, target, sel | self.trim)
-        fx, fz, v, vc = (tuple(self.D[cell]) + (0.0,))[:4]
-        st = self.st
-        prob = ForceProblem(
-            self.model,
-            fx,
-            fz,
-            v,
-            weights=self.cfg.weights,
-            bird=self.cfg.bird,
-            n=st.n_search,
-            climb=vc,
-        )
+        prob = demand_problem(self.cfg, self.model, self.D[cell])
         cost, err = candidate_costs(prob, np.vstack([self.X[cell], x]))
+        st = self.st
         self.evals[cell] += 2
         best = min(float(self.best[cell]), float(cost.min()))
         meets = err[1] <= 0.5 * st.reach_tol or err[1] <= err[0] + FORCE_TIE

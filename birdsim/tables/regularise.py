@@ -188,23 +188,38 @@ def _candidate(
     target: np.ndarray,
     point: PointForces | None = None,
 ) -> tuple[np.ndarray, int, bool]:
-    fx, fz, v, vc = (tuple(demand) + (0.0,))[:4]
     target = np.clip(target, *model.bounds)
-    weights = replace(cfg.weights, distance=cfg.weights.distance + cfg.settings.smooth_nu)
-    prob = ForceProblem(
+    prob = demand_problem(cfg, model, demand, previous=target, point=point)
+    sol = slsqp(prob, target, maxiter=cfg.settings.maxiter)
+    return sol.x, prob.evaluations, sol.converged
+
+
+def demand_problem(
+    cfg: BuildConfig,
+    model: KinematicModel,
+    demand: tuple[float, ...],
+    previous: np.ndarray | None = None,
+    point: PointForces | None = None,
+) -> ForceProblem:
+    """The problem at one cell's ``demand`` (Fx, Fz, V[, climb]; table units) at the
+    build's n_search: the build's cost, or with ``previous`` the pass's cost (its eq. 93
+    distance to ``previous`` weighted ``distance + smooth_nu``)."""
+    fx, fz, v, vc = (tuple(demand) + (0.0,))[:4]
+    weights = cfg.weights
+    if previous is not None:
+        weights = replace(weights, distance=weights.distance + cfg.settings.smooth_nu)
+    return ForceProblem(
         model,
         fx,
         fz,
         v,
         weights=weights,
         bird=cfg.bird,
-        previous=target,
+        previous=previous,
         n=cfg.settings.n_search,
         climb=vc,
         point=point,
     )
-    sol = slsqp(prob, target, maxiter=cfg.settings.maxiter)
-    return sol.x, prob.evaluations, sol.converged
 
 
 def candidate_costs(prob: ForceProblem, cand: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -353,11 +368,7 @@ def smooth_cells(
     best = np.asarray(best_cost, dtype=float).copy()
     for m, cell in enumerate(cells):
         cand = np.array(pool[m])
-        fx, fz, v, vc = (tuple(demands[cell]) + (0.0,))[:4]
-        prob = ForceProblem(
-            model, fx, fz, v, weights=cfg.weights, bird=cfg.bird, n=st.n_search, climb=vc
-        )
-        cost, err = candidate_costs(prob, cand)
+        cost, err = candidate_costs(demand_problem(cfg, model, demands[cell]), cand)
         evals[m] += len(cand)
         best[m] = min(best[m], float(cost.min()))
         scores = local_scores(names, X, ok, cell, cand)
@@ -383,6 +394,7 @@ __all__ = [
     "ZIGZAG_RAD",
     "candidate_costs",
     "choose",
+    "demand_problem",
     "local_score",
     "local_scores",
     "smooth_cells",
