@@ -201,13 +201,11 @@ def demand_problem(
     previous: np.ndarray | None = None,
     point: PointForces | None = None,
 ) -> ForceProblem:
-    """The problem at one cell's ``demand`` (Fx, Fz, V[, climb]; table units) at the
-    build's n_search: the build's cost, or with ``previous`` the pass's cost (its eq. 93
-    distance to ``previous`` weighted ``distance + smooth_nu``)."""
+    """The problem at a ``demand`` (Fx, Fz, V[, climb]) at n_search: the build's cost, or
+    with ``previous`` the pass's (eq. 93 distance to it, weight ``distance + smooth_nu``)."""
     fx, fz, v, vc = (tuple(demand) + (0.0,))[:4]
-    weights = cfg.weights
-    if previous is not None:
-        weights = replace(weights, distance=weights.distance + cfg.settings.smooth_nu)
+    w = cfg.weights
+    weights = w if previous is None else replace(w, distance=w.distance + cfg.settings.smooth_nu)
     return ForceProblem(
         model,
         fx,
